@@ -1,0 +1,53 @@
+#include "capi/guard.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "exact/unit_disk.hpp"
+
+namespace hdt::capi {
+
+namespace {
+// The detail of the last failure on this thread.
+thread_local std::string last_error;
+}  // namespace
+
+const char *last_error_message() noexcept { return last_error.c_str(); }
+
+hdt_status fail(hdt_status status, const std::string &message) noexcept {
+  try {
+    last_error = message;
+  } catch (...) {
+    last_error.clear();  // keep the status even when the text cannot be stored
+  }
+  return status;
+}
+
+hdt_status fail(hdt_status status, const char *function, const std::string &message) noexcept {
+  try {
+    return fail(status, std::string(function) + ": " + message);
+  } catch (...) {
+    return fail(status, message);
+  }
+}
+
+void check_genus(int genus) {
+  if (genus < 2) throw ApiError(HDT_EINVAL, "genus must be at least 2, got " + std::to_string(genus));
+  if (genus > HDT_GENUS_MAX)
+    throw ApiError(HDT_ENOTSUP,
+                   "genus " + std::to_string(genus) + " exceeds HDT_GENUS_MAX = " + std::to_string(HDT_GENUS_MAX));
+}
+
+void check_disk_point(double x, double y) {
+  char text[96];
+  if (!std::isfinite(x) || !std::isfinite(y)) {
+    std::snprintf(text, sizeof text, "the point (%.17g, %.17g) is not finite", x, y);
+    throw ApiError(HDT_EDOMAIN, text);
+  }
+  if (!exact::inside_unit_disk(x, y)) {
+    std::snprintf(text, sizeof text, "the point (%.17g, %.17g) is not inside the open unit disk", x, y);
+    throw ApiError(HDT_EDOMAIN, text);
+  }
+}
+
+}  // namespace hdt::capi

@@ -1,0 +1,58 @@
+// The one funnel between the C ABI and the C++ core.
+//
+// Every extern "C" body runs inside guarded(): an exception never crosses the
+// ABI (it would kill a ctypes caller); it becomes a status code, and its text
+// becomes the thread-local last error message. Plain argument checks use
+// fail() and never throw.
+#pragma once
+
+#include <new>
+#include <stdexcept>
+#include <string>
+
+#include "hdt.h"
+
+namespace hdt::capi {
+
+// The thread-local text behind hdt_last_error_message.
+const char *last_error_message() noexcept;
+
+// Records a failure for hdt_last_error_message and returns its status.
+hdt_status fail(hdt_status status, const std::string &message) noexcept;
+hdt_status fail(hdt_status status, const char *function, const std::string &message) noexcept;
+
+// An argument error found inside the core's call tree, with its status.
+struct ApiError : std::runtime_error {
+  ApiError(hdt_status s, const std::string &what) : std::runtime_error(what), status(s) {}
+  hdt_status status;
+};
+
+template <class Body>
+hdt_status guarded(const char *function, Body &&body) noexcept {
+  try {
+    return body();
+  } catch (const ApiError &e) {
+    return fail(e.status, function, e.what());
+  } catch (const std::bad_alloc &) {
+    return fail(HDT_ENOMEM, function, "out of memory");
+  } catch (const std::invalid_argument &e) {
+    return fail(HDT_EINVAL, function, e.what());
+  } catch (const std::domain_error &e) {
+    return fail(HDT_EDOMAIN, function, e.what());
+  } catch (const std::length_error &e) {
+    return fail(HDT_ENOTSUP, function, e.what());
+  } catch (const std::logic_error &e) {
+    return fail(HDT_EINTERNAL, function, std::string("internal error: ") + e.what());
+  } catch (const std::exception &e) {
+    return fail(HDT_ERROR, function, e.what());
+  } catch (...) {
+    return fail(HDT_ERROR, function, "unknown exception");
+  }
+}
+
+// Checks shared by the functions that take a genus; throws ApiError.
+void check_genus(int genus);
+// A finite point of the open unit disk (decided exactly); else HDT_EDOMAIN.
+void check_disk_point(double x, double y);
+
+}  // namespace hdt::capi

@@ -1,0 +1,42 @@
+// Surface facts: systole, the polygon's vertices and side midpoints.
+#include "capi/guard.hpp"
+#include "group/presentation.hpp"
+#include "hdt.h"
+#include "surface/polygon.hpp"
+#include "surface/systole.hpp"
+
+using hdt::capi::ApiError;
+using hdt::capi::guarded;
+
+namespace {
+
+template <class PointOf>
+hdt_status polygon_point(const char *function, int genus, int k, double *x, double *y, PointOf point_of) {
+  return guarded(function, [&] {
+    hdt::capi::check_genus(genus);
+    if (!x || !y) throw ApiError(HDT_EINVAL, "x and y must not be NULL");
+    const hdt::group::Presentation p(genus);
+    const auto z = point_of(p, k);
+    *x = z.re;
+    *y = z.im;
+    return HDT_OK;
+  });
+}
+
+}  // namespace
+
+extern "C" {
+
+HDT_API double hdt_systole(int genus) HDT_NOEXCEPT { return hdt::surface::systole_or_nan(genus); }
+
+HDT_API hdt_status hdt_polygon_vertex(int genus, int k, double *x, double *y) HDT_NOEXCEPT {
+  return polygon_point("hdt_polygon_vertex", genus, k, x, y,
+                       [](const hdt::group::Presentation &p, int i) { return hdt::surface::vertex(p, i); });
+}
+
+HDT_API hdt_status hdt_polygon_side_midpoint(int genus, int k, double *x, double *y) HDT_NOEXCEPT {
+  return polygon_point("hdt_polygon_side_midpoint", genus, k, x, y,
+                       [](const hdt::group::Presentation &p, int i) { return hdt::surface::side_midpoint(p, i); });
+}
+
+}  // extern "C"

@@ -1,0 +1,119 @@
+// Words in Gamma_g: canonical reduction, matrices, images, the set N.
+#include <cmath>
+
+#include "capi/guard.hpp"
+#include "group/canonical.hpp"
+#include "group/generators.hpp"
+#include "group/neighbours.hpp"
+#include "group/presentation.hpp"
+#include "hdt.h"
+
+using hdt::capi::ApiError;
+using hdt::capi::guarded;
+using hdt::group::Letter;
+using hdt::group::Presentation;
+using hdt::group::Word;
+
+namespace {
+
+// The presentation of a checked genus, and a checked word of it.
+Presentation checked_word(int genus, const int32_t *word, size_t length) {
+  hdt::capi::check_genus(genus);
+  if (length > 0 && !word) throw ApiError(HDT_EINVAL, "word is NULL but length is " + std::to_string(length));
+  if (length > HDT_WORD_MAX_LENGTH)
+    throw ApiError(HDT_EINVAL, "word length " + std::to_string(length) + " exceeds HDT_WORD_MAX_LENGTH");
+  Presentation p(genus);
+  p.check_word(word, length);
+  return p;
+}
+
+// The generators of the letters a word uses, computed once per call.
+hdt::group::Moebius<double> word_moebius(const Presentation &p, const int32_t *word, size_t length) {
+  hdt::group::Moebius<double> m;
+  for (size_t i = 0; i < length; ++i) m = m * hdt::group::generator<double>(p, word[i]);
+  return m;
+}
+
+// Two-call pattern: capacity 0 asks for the length; copy when it fits.
+hdt_status copy_word(const Word &w, int32_t *out, size_t capacity, size_t *out_length) {
+  *out_length = w.size();
+  if (capacity == 0) return HDT_OK;
+  if (capacity < w.size())
+    throw ApiError(HDT_EBUFS, "the word has " + std::to_string(w.size()) + " letters, capacity is " +
+                                  std::to_string(capacity));
+  if (!out) throw ApiError(HDT_EINVAL, "out is NULL but capacity is " + std::to_string(capacity));
+  std::copy(w.begin(), w.end(), out);
+  return HDT_OK;
+}
+
+}  // namespace
+
+extern "C" {
+
+HDT_API hdt_status hdt_word_reduce(int genus, const int32_t *word, size_t length, int32_t *out, size_t capacity,
+                                   size_t *out_length) HDT_NOEXCEPT {
+  return guarded("hdt_word_reduce", [&] {
+    const Presentation p = checked_word(genus, word, length);
+    if (!out_length) throw ApiError(HDT_EINVAL, "out_length must not be NULL");
+    return copy_word(hdt::group::canonical_word(p, word, length), out, capacity, out_length);
+  });
+}
+
+HDT_API hdt_status hdt_word_matrix(int genus, const int32_t *word, size_t length, double m[4]) HDT_NOEXCEPT {
+  return guarded("hdt_word_matrix", [&] {
+    const Presentation p = checked_word(genus, word, length);
+    if (!m) throw ApiError(HDT_EINVAL, "m must not be NULL");
+    const auto f = word_moebius(p, word, length);
+    m[0] = f.a.re;
+    m[1] = f.a.im;
+    m[2] = f.b.re;
+    m[3] = f.b.im;
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_word_lorentz(int genus, const int32_t *word, size_t length, double m[9]) HDT_NOEXCEPT {
+  return guarded("hdt_word_lorentz", [&] {
+    const Presentation p = checked_word(genus, word, length);
+    if (!m) throw ApiError(HDT_EINVAL, "m must not be NULL");
+    hdt::group::Lorentz<double> L;
+    for (size_t i = 0; i < length; ++i)
+      L = L * hdt::group::Lorentz<double>::from_moebius(hdt::group::generator<double>(p, word[i]));
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) m[3 * i + j] = L.m[i][j];
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_word_apply(int genus, const int32_t *word, size_t length, double x, double y, double *ox,
+                                  double *oy) HDT_NOEXCEPT {
+  return guarded("hdt_word_apply", [&] {
+    const Presentation p = checked_word(genus, word, length);
+    if (!ox || !oy) throw ApiError(HDT_EINVAL, "ox and oy must not be NULL");
+    hdt::capi::check_disk_point(x, y);
+    const auto z = word_moebius(p, word, length).apply({x, y});
+    *ox = z.re;
+    *oy = z.im;
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_neighbour_count(int genus, size_t *count) HDT_NOEXCEPT {
+  return guarded("hdt_neighbour_count", [&] {
+    hdt::capi::check_genus(genus);
+    if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
+    *count = hdt::group::neighbour_count(Presentation(genus));
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_neighbour_word(int genus, size_t id, int32_t *out, size_t capacity,
+                                      size_t *out_length) HDT_NOEXCEPT {
+  return guarded("hdt_neighbour_word", [&] {
+    hdt::capi::check_genus(genus);
+    if (!out_length) throw ApiError(HDT_EINVAL, "out_length must not be NULL");
+    return copy_word(hdt::group::neighbour_word(Presentation(genus), id), out, capacity, out_length);
+  });
+}
+
+}  // extern "C"

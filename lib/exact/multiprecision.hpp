@@ -1,0 +1,38 @@
+// Multiprecision reals for certified and high-precision work.
+//
+// Precision is a compile-time parameter of the type (decimal digits), so no
+// code path depends on a global or thread-local default precision: an MPFR
+// value of mp_real<D> always carries D digits, whatever else runs in the
+// process.
+#pragma once
+
+#include <boost/math/constants/constants.hpp>
+#include <boost/multiprecision/mpfr.hpp>
+
+namespace hdt::exact {
+
+template <unsigned Digits10>
+using mp_real = boost::multiprecision::number<
+    boost::multiprecision::mpfr_float_backend<Digits10>,
+    boost::multiprecision::et_off>;
+
+// The precision ladder used where the needed precision is only known at run
+// time (it grows with the length of a word): each rung is 4x the previous.
+using mp_real_1 = mp_real<40>;
+using mp_real_2 = mp_real<160>;
+using mp_real_3 = mp_real<640>;
+using mp_real_4 = mp_real<2560>;
+
+// Bits of precision of the rung Digits10.
+constexpr unsigned bits_of_digits10(unsigned digits10) {
+  // log2(10) < 3.3220, rounded down: a safe lower bound on the bit count.
+  return digits10 * 33219u / 10000u;
+}
+
+// pi in the type T (double or mp_real<D>).
+template <class T>
+T pi() {
+  return boost::math::constants::pi<T>();
+}
+
+}  // namespace hdt::exact

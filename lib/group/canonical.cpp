@@ -1,0 +1,100 @@
+#include "group/canonical.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "exact/multiprecision.hpp"
+#include "group/dehn.hpp"
+#include "group/generators.hpp"
+
+namespace hdt::group {
+
+namespace {
+
+// Bits lost per letter when a word's hyperboloid point is computed: each
+// Lorentz generator has entries at most 2A^2 - 1, so a product of m of them
+// at most (3(2A^2))^m in any entry, and rounding errors grow alike.
+double bits_per_letter(const Presentation &p) {
+  const double A = 1.0 / std::tan(M_PI / (4.0 * p.genus()));
+  return std::log2(3.0 * 2.0 * A * A) + 1.0;
+}
+
+// Bits needed to decide every separation test on a word of m letters: the
+// amplified rounding error must stay far below the margin 2(A^2 - 1) >= 2.
+double bits_needed(const Presentation &p, std::size_t m) {
+  return 64.0 + bits_per_letter(p) * double(m) + 2.0 * std::log2(double(m) + 2.0);
+}
+
+constexpr unsigned kLadder[] = {40, 160, 640, 2560};
+
+// The least letter k such that the line of side s_k separates O from h(O),
+// h the element of the Dehn-reduced, non-empty word w.
+template <class T>
+Letter least_first_letter(const Presentation &p, const Word &w) {
+  const GeneratorSet<T> &gens = shared_generators<T>(p);
+  const HyperboloidPoint<T> origin{};
+  const HyperboloidPoint<T> P = gens.apply(w, origin);
+  const T A = gens.moebius(0).a.re;
+  const T margin = A * A - T(1);  // half the proven bound 2(A^2 - 1)
+  for (Letter k = 0; k < p.letter_count(); ++k) {
+    const HyperboloidPoint<T> Q = gens.lorentz(k).apply(origin);  // g_k(O)
+    const T side = P.t * (T(1) - Q.t) + P.u * Q.u + P.v * Q.v;  // <P, O - Q>
+    using std::abs;
+    if (abs(side) < margin)
+      throw std::logic_error("canonical_word: separation test below its certified margin for " + word_to_string(w));
+    if (side > 0) return k;
+  }
+  // No line separates: h(O) = O, so h is the identity, impossible for a
+  // non-empty Dehn-reduced word.
+  throw std::logic_error("canonical_word: no separating side for the Dehn-reduced word " + word_to_string(w));
+}
+
+Letter least_first_letter_at(const Presentation &p, const Word &w) {
+  const double bits = bits_needed(p, w.size());
+  if (bits <= exact::bits_of_digits10(kLadder[0])) return least_first_letter<exact::mp_real<kLadder[0]>>(p, w);
+  if (bits <= exact::bits_of_digits10(kLadder[1])) return least_first_letter<exact::mp_real<kLadder[1]>>(p, w);
+  if (bits <= exact::bits_of_digits10(kLadder[2])) return least_first_letter<exact::mp_real<kLadder[2]>>(p, w);
+  return least_first_letter<exact::mp_real<kLadder[3]>>(p, w);
+}
+
+}  // namespace
+
+std::size_t canonical_max_length(const Presentation &p) {
+  const double top = exact::bits_of_digits10(kLadder[3]);
+  std::size_t m = 0;
+  while (bits_needed(p, m + 2) <= top) ++m;  // +1 letter of slack for the peeled word
+  return m;
+}
+
+bool shortlex_less(const Word &a, const Word &b) {
+  if (a.size() != b.size()) return a.size() < b.size();
+  return a < b;
+}
+
+Word canonical_word(const Presentation &p, const Letter *input, std::size_t length) {
+  p.check_word(input, length);
+  Word w = dehn_reduce(p, input, length);
+  const std::size_t limit = canonical_max_length(p);
+  if (w.size() > limit)
+    throw std::length_error("the Dehn-reduced word has " + std::to_string(w.size()) +
+                            " letters; canonical words are computed up to " + std::to_string(limit) +
+                            " letters for genus " + std::to_string(p.genus()));
+  // Peel the least possible first letter off h until nothing is left. Each
+  // step lowers the geodesic length by one, so there are at most |w| steps.
+  Word out;
+  const std::size_t bound = w.size();
+  while (!w.empty()) {
+    if (out.size() >= bound) throw std::logic_error("canonical_word: peeling did not shorten the word");
+    const Letter k = least_first_letter_at(p, w);
+    out.push_back(k);
+    Word rest;
+    rest.reserve(w.size() + 1);
+    rest.push_back(p.inverse(k));
+    rest.insert(rest.end(), w.begin(), w.end());
+    w = dehn_reduce(p, rest);
+    if (w.size() > limit + 1) throw std::logic_error("canonical_word: a peeled word outgrew the precision");
+  }
+  return out;
+}
+
+}  // namespace hdt::group

@@ -1,0 +1,32 @@
+// The canonical word of an element of Gamma_g: its shortlex-least geodesic
+// word (fewest letters, then lexicographically least letter values).
+//
+// Why geometry: the tiles h(F_g) of the plane are the chambers of the
+// reflection group of F_g (its angles pi/2g are submultiples of pi), so the
+// length of h is the number of tessellation lines separating F_g from
+// h(F_g), and a geodesic word of h may start with k exactly when the line of
+// side s_k separates them. The greedy choice of the least such k, repeated,
+// yields the shortlex-least geodesic word. Each separation test is the sign of
+// <P, O - g_k(O)> for the hyperboloid point P = h(O), whose magnitude is at
+// least 2 (A^2 - 1) because tile centres keep the inradius from every line;
+// multiprecision arithmetic with a precision chosen from the word length
+// makes the computed sign certain (and it is checked against that margin).
+#pragma once
+
+#include "group/presentation.hpp"
+
+namespace hdt::group {
+
+// Longest Dehn-reduced word the built-in precision ladder can canonicalise
+// for genus g (depends on g through the generators' size).
+std::size_t canonical_max_length(const Presentation &p);
+
+// Throws std::invalid_argument for invalid letters, std::length_error when
+// the Dehn-reduced word exceeds canonical_max_length.
+Word canonical_word(const Presentation &p, const Letter *w, std::size_t length);
+inline Word canonical_word(const Presentation &p, const Word &w) { return canonical_word(p, w.data(), w.size()); }
+
+// Shortlex order: shorter first, then lexicographic.
+bool shortlex_less(const Word &a, const Word &b);
+
+}  // namespace hdt::group

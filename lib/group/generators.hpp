@@ -1,0 +1,88 @@
+// The generators g_k of Gamma_g in a number type T (double or mp_real<D>):
+// g_k = [[A, B_k], [conj B_k, A]], A = cot(pi/4g), B_k = sqrt(A^2 - 1) e^{i k pi/2g}.
+// g_k maps side s_{k+2g} of F_g onto side s_k; g_{k+2g} = g_k^{-1}.
+#pragma once
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "exact/multiprecision.hpp"
+#include "group/lorentz.hpp"
+#include "group/moebius.hpp"
+#include "group/presentation.hpp"
+
+namespace hdt::group {
+
+template <class T>
+Moebius<T> generator(const Presentation &p, Letter k) {
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  using std::tan;
+  const T pi = exact::pi<T>();
+  const T A = T(1) / tan(pi / T(4 * p.genus()));
+  const T modulus = sqrt(A * A - T(1));
+  const T angle = pi * T(k) / T(2 * p.genus());
+  return Moebius<T>{{A, T(0)}, {modulus * cos(angle), modulus * sin(angle)}};
+}
+
+// The 4g generators of one genus, as Moebius and Lorentz matrices, computed
+// once so that word products cost only multiplications.
+template <class T>
+class GeneratorSet {
+ public:
+  explicit GeneratorSet(const Presentation &p) : presentation_(p) {
+    for (Letter k = 0; k < p.letter_count(); ++k) {
+      moebius_.push_back(generator<T>(p, k));
+      lorentz_.push_back(Lorentz<T>::from_moebius(moebius_.back()));
+    }
+  }
+
+  const Presentation &presentation() const { return presentation_; }
+  const Moebius<T> &moebius(Letter k) const { return moebius_[k]; }
+  const Lorentz<T> &lorentz(Letter k) const { return lorentz_[k]; }
+
+  // The product g_w0 g_w1 ... as written (letters must be valid).
+  Moebius<T> moebius(const Letter *w, std::size_t length) const {
+    Moebius<T> m = Moebius<T>::identity();
+    for (std::size_t i = 0; i < length; ++i) m = m * moebius_[w[i]];
+    return m;
+  }
+  Moebius<T> moebius(const Word &w) const { return moebius(w.data(), w.size()); }
+
+  Lorentz<T> lorentz(const Letter *w, std::size_t length) const {
+    Lorentz<T> m = Lorentz<T>::identity();
+    for (std::size_t i = 0; i < length; ++i) m = m * lorentz_[w[i]];
+    return m;
+  }
+  Lorentz<T> lorentz(const Word &w) const { return lorentz(w.data(), w.size()); }
+
+  // The image of a hyperboloid point under the word: the last letter acts first.
+  HyperboloidPoint<T> apply(const Word &w, HyperboloidPoint<T> x) const {
+    for (std::size_t i = w.size(); i-- > 0;) x = lorentz_[w[i]].apply(x);
+    return x;
+  }
+
+ private:
+  Presentation presentation_;
+  std::vector<Moebius<T>> moebius_;
+  std::vector<Lorentz<T>> lorentz_;
+};
+
+// The generators of one genus at one precision, built once per process and
+// never freed (building them costs trigonometry at full precision). Safe to
+// call from several threads; the result is read-only.
+template <class T>
+const GeneratorSet<T> &shared_generators(const Presentation &p) {
+  static std::mutex mutex;
+  static std::map<int, std::unique_ptr<const GeneratorSet<T>>> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto &slot = cache[p.genus()];
+  if (!slot) slot = std::make_unique<const GeneratorSet<T>>(p);
+  return *slot;
+}
+
+}  // namespace hdt::group

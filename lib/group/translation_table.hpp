@@ -1,0 +1,57 @@
+// Compact ids for the group elements a triangulation uses.
+//
+// Faces store, per corner, a translation id (int32). Ids 0..|N|-1 are the
+// neighbour set N in the fixed order of neighbour_words (id 0 = identity),
+// the same for every table of a genus; elements outside N get the next ids as
+// they are first met. Each id caches its canonical word and its double
+// matrices, and products of ids are cached, so the hot path never touches
+// words or multiprecision.
+#pragma once
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "group/generators.hpp"
+#include "group/presentation.hpp"
+
+namespace hdt::group {
+
+using TranslationId = int32_t;
+
+class TranslationTable {
+ public:
+  explicit TranslationTable(const Presentation &p);
+
+  const Presentation &presentation() const { return presentation_; }
+  std::size_t size() const { return words_.size(); }
+  std::size_t neighbour_count() const { return neighbour_count_; }
+  bool is_neighbour(TranslationId id) const { return id >= 0 && std::size_t(id) < neighbour_count_; }
+
+  // The id of the element of any word (canonicalised first), added if new.
+  TranslationId intern(const Word &w);
+  // The id of a * b (apply b first), cached.
+  TranslationId compose(TranslationId a, TranslationId b);
+  TranslationId inverse(TranslationId a);
+
+  const Word &word(TranslationId id) const { return words_.at(id); }
+  const Moebius<double> &moebius(TranslationId id) const { return moebius_.at(id); }
+  const Lorentz<double> &lorentz(TranslationId id) const { return lorentz_.at(id); }
+
+ private:
+  struct WordHash {
+    std::size_t operator()(const Word &w) const noexcept;
+  };
+  TranslationId add_canonical(const Word &canonical);
+
+  Presentation presentation_;
+  GeneratorSet<double> generators_;
+  std::size_t neighbour_count_ = 0;
+  std::vector<Word> words_;
+  std::vector<Moebius<double>> moebius_;
+  std::vector<Lorentz<double>> lorentz_;
+  std::unordered_map<Word, TranslationId, WordHash> ids_;
+  std::unordered_map<uint64_t, TranslationId> products_;
+};
+
+}  // namespace hdt::group
