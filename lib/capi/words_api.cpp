@@ -3,9 +3,9 @@
 
 #include "capi/guard.hpp"
 #include "group/canonical.hpp"
-#include "group/generators.hpp"
 #include "group/neighbours.hpp"
 #include "group/presentation.hpp"
+#include "group/word_matrix.hpp"
 #include "hdt.h"
 
 using hdt::capi::ApiError;
@@ -25,13 +25,6 @@ Presentation checked_word(int genus, const int32_t *word, size_t length) {
   Presentation p(genus);
   p.check_word(word, length);
   return p;
-}
-
-// The generators of the letters a word uses, computed once per call.
-hdt::group::Moebius<double> word_moebius(const Presentation &p, const int32_t *word, size_t length) {
-  hdt::group::Moebius<double> m;
-  for (size_t i = 0; i < length; ++i) m = m * hdt::group::generator<double>(p, word[i]);
-  return m;
 }
 
 // Two-call pattern: capacity 0 asks for the length; copy when it fits.
@@ -63,7 +56,7 @@ HDT_API hdt_status hdt_word_matrix(int genus, const int32_t *word, size_t length
   return guarded("hdt_word_matrix", [&] {
     const Presentation p = checked_word(genus, word, length);
     if (!m) throw ApiError(HDT_EINVAL, "m must not be NULL");
-    const auto f = word_moebius(p, word, length);
+    const auto f = hdt::group::accurate_moebius(p, word, length);
     m[0] = f.a.re;
     m[1] = f.a.im;
     m[2] = f.b.re;
@@ -76,9 +69,7 @@ HDT_API hdt_status hdt_word_lorentz(int genus, const int32_t *word, size_t lengt
   return guarded("hdt_word_lorentz", [&] {
     const Presentation p = checked_word(genus, word, length);
     if (!m) throw ApiError(HDT_EINVAL, "m must not be NULL");
-    hdt::group::Lorentz<double> L;
-    for (size_t i = 0; i < length; ++i)
-      L = L * hdt::group::Lorentz<double>::from_moebius(hdt::group::generator<double>(p, word[i]));
+    const auto L = hdt::group::accurate_lorentz(p, word, length);
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) m[3 * i + j] = L.m[i][j];
     return HDT_OK;
@@ -91,7 +82,7 @@ HDT_API hdt_status hdt_word_apply(int genus, const int32_t *word, size_t length,
     const Presentation p = checked_word(genus, word, length);
     if (!ox || !oy) throw ApiError(HDT_EINVAL, "ox and oy must not be NULL");
     hdt::capi::check_disk_point(x, y);
-    const auto z = word_moebius(p, word, length).apply({x, y});
+    const auto z = hdt::group::accurate_moebius(p, word, length).apply({x, y});
     *ox = z.re;
     *oy = z.im;
     return HDT_OK;

@@ -16,13 +16,6 @@ using mp_real = boost::multiprecision::number<
     boost::multiprecision::mpfr_float_backend<Digits10>,
     boost::multiprecision::et_off>;
 
-// The precision ladder used where the needed precision is only known at run
-// time (it grows with the length of a word): each rung is 4x the previous.
-using mp_real_1 = mp_real<40>;
-using mp_real_2 = mp_real<160>;
-using mp_real_3 = mp_real<640>;
-using mp_real_4 = mp_real<2560>;
-
 // Bits of precision of the rung Digits10.
 constexpr unsigned bits_of_digits10(unsigned digits10) {
   // log2(10) < 3.3220, rounded down: a safe lower bound on the bit count.

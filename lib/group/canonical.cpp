@@ -3,29 +3,19 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "exact/multiprecision.hpp"
+#include "exact/precision_ladder.hpp"
 #include "group/dehn.hpp"
 #include "group/generators.hpp"
+#include "group/word_matrix.hpp"
 
 namespace hdt::group {
 
 namespace {
 
-// Bits lost per letter when a word's hyperboloid point is computed: each
-// Lorentz generator has entries at most 2A^2 - 1, so a product of m of them
-// at most (3(2A^2))^m in any entry, and rounding errors grow alike.
-double bits_per_letter(const Presentation &p) {
-  const double A = 1.0 / std::tan(M_PI / (4.0 * p.genus()));
-  return std::log2(3.0 * 2.0 * A * A) + 1.0;
-}
-
 // Bits needed to decide every separation test on a word of m letters: the
-// amplified rounding error must stay far below the margin 2(A^2 - 1) >= 2.
-double bits_needed(const Presentation &p, std::size_t m) {
-  return 64.0 + bits_per_letter(p) * double(m) + 2.0 * std::log2(double(m) + 2.0);
-}
-
-constexpr unsigned kLadder[] = {40, 160, 640, 2560};
+// amplified rounding error (word_precision_bits) must stay far below the
+// margin 2(A^2 - 1) >= 2.
+double bits_needed(const Presentation &p, std::size_t m) { return 64.0 + word_precision_bits(p, m); }
 
 // The least letter k such that the line of side s_k separates O from h(O),
 // h the element of the Dehn-reduced, non-empty word w.
@@ -50,17 +40,14 @@ Letter least_first_letter(const Presentation &p, const Word &w) {
 }
 
 Letter least_first_letter_at(const Presentation &p, const Word &w) {
-  const double bits = bits_needed(p, w.size());
-  if (bits <= exact::bits_of_digits10(kLadder[0])) return least_first_letter<exact::mp_real<kLadder[0]>>(p, w);
-  if (bits <= exact::bits_of_digits10(kLadder[1])) return least_first_letter<exact::mp_real<kLadder[1]>>(p, w);
-  if (bits <= exact::bits_of_digits10(kLadder[2])) return least_first_letter<exact::mp_real<kLadder[2]>>(p, w);
-  return least_first_letter<exact::mp_real<kLadder[3]>>(p, w);
+  return exact::with_precision(bits_needed(p, w.size()),
+                               [&](auto zero) { return least_first_letter<decltype(zero)>(p, w); });
 }
 
 }  // namespace
 
 std::size_t canonical_max_length(const Presentation &p) {
-  const double top = exact::bits_of_digits10(kLadder[3]);
+  const double top = exact::ladder_top_bits();
   std::size_t m = 0;
   while (bits_needed(p, m + 2) <= top) ++m;  // +1 letter of slack for the peeled word
   return m;

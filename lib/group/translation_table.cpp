@@ -4,6 +4,7 @@
 
 #include "group/canonical.hpp"
 #include "group/neighbours.hpp"
+#include "group/word_matrix.hpp"
 
 namespace hdt::group {
 
@@ -13,7 +14,7 @@ std::size_t TranslationTable::WordHash::operator()(const Word &w) const noexcept
   return std::size_t(h);
 }
 
-TranslationTable::TranslationTable(const Presentation &p) : presentation_(p), generators_(p) {
+TranslationTable::TranslationTable(const Presentation &p) : presentation_(p) {
   for (const Word &w : neighbour_words(p)) add_canonical(w);
   neighbour_count_ = words_.size();
 }
@@ -24,8 +25,8 @@ TranslationId TranslationTable::add_canonical(const Word &canonical) {
   if (words_.size() >= std::size_t(INT32_MAX)) throw std::length_error("translation table is full");
   const auto id = static_cast<TranslationId>(words_.size());
   words_.push_back(canonical);
-  moebius_.push_back(generators_.moebius(canonical));
-  lorentz_.push_back(generators_.lorentz(canonical));
+  moebius_.push_back(accurate_moebius(presentation_, canonical));
+  lorentz_.push_back(accurate_lorentz(presentation_, canonical));
   ids_.emplace(canonical, id);
   return id;
 }

@@ -12,7 +12,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "group/generators.hpp"
+#include "group/lorentz.hpp"
+#include "group/moebius.hpp"
 #include "group/presentation.hpp"
 
 namespace hdt::group {
@@ -45,7 +46,6 @@ class TranslationTable {
   TranslationId add_canonical(const Word &canonical);
 
   Presentation presentation_;
-  GeneratorSet<double> generators_;
   std::size_t neighbour_count_ = 0;
   std::vector<Word> words_;
   std::vector<Moebius<double>> moebius_;

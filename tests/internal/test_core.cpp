@@ -1,0 +1,216 @@
+// Internal tests of the C++ core (Check, compiled as C++).
+#include <cfloat>
+#include <cmath>
+#include <random>
+
+#include "exact/multiprecision.hpp"
+#include "exact/unit_disk.hpp"
+#include "group/canonical.hpp"
+#include "group/dehn.hpp"
+#include "group/generators.hpp"
+#include "group/neighbours.hpp"
+#include "group/translation_table.hpp"
+#include "group/word_matrix.hpp"
+#include "surface/systole.hpp"
+
+// Last: check.h defines a macro named fail that breaks <iostream>.
+#include <check.h>
+
+using namespace hdt;
+using group::Letter;
+using group::Presentation;
+using group::Word;
+
+namespace {
+
+template <class T>
+T distance_to_identity(const group::Moebius<T> &m) {
+  using std::abs;
+  // +I or -I: the SU(1,1) sign is free.
+  const T plus = abs(m.a.re - T(1)) + abs(m.a.im) + abs(m.b.re) + abs(m.b.im);
+  const T minus = abs(m.a.re + T(1)) + abs(m.a.im) + abs(m.b.re) + abs(m.b.im);
+  return plus < minus ? plus : minus;
+}
+
+double matrix_gap(const group::Moebius<double> &x, const group::Moebius<double> &y) {
+  const double plus = std::abs(x.a.re - y.a.re) + std::abs(x.a.im - y.a.im) + std::abs(x.b.re - y.b.re) +
+                      std::abs(x.b.im - y.b.im);
+  const double minus = std::abs(x.a.re + y.a.re) + std::abs(x.a.im + y.a.im) + std::abs(x.b.re + y.b.re) +
+                       std::abs(x.b.im + y.b.im);
+  return std::min(plus, minus) / (1.0 + std::abs(x.a.re));
+}
+
+Word random_word(std::mt19937 &rng, int letters, int max_length) {
+  std::uniform_int_distribution<int> len(0, max_length), letter(0, letters - 1);
+  Word w(len(rng));
+  for (Letter &k : w) k = letter(rng);
+  return w;
+}
+
+}  // namespace
+
+START_TEST(relation_is_identity_in_mpfr) {
+  using T = exact::mp_real<100>;
+  for (int g = 2; g <= 32; ++g) {
+    const Presentation p(g);
+    const group::GeneratorSet<T> gens(p);
+    const T gap = distance_to_identity(gens.moebius(p.relator()));
+    ck_assert_msg(gap < T("1e-60"), "genus %d: relator is %g from the identity", g, gap.convert_to<double>());
+    // The Lorentz product is exactly the identity matrix too.
+    const auto L = gens.lorentz(p.relator());
+    T worst = 0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) worst = std::max(worst, T(abs(L.m[i][j] - T(i == j ? 1 : 0))));
+    ck_assert_msg(worst < T("1e-55"), "genus %d: Lorentz relator off by %g", g, worst.convert_to<double>());
+  }
+}
+END_TEST
+
+START_TEST(relation_in_plain_double_within_its_error_bound) {
+  for (int g = 2; g <= 32; ++g) {
+    const Presentation p(g);
+    const group::GeneratorSet<double> gens(p);
+    const double gap = distance_to_identity(gens.moebius(p.relator()));
+    // The plain product loses about 2^word_precision_bits ulps at worst.
+    const double bound = std::ldexp(DBL_EPSILON, int(group::word_precision_bits(p, p.relator().size())));
+    ck_assert_msg(gap < bound, "genus %d: gap %g above bound %g", g, gap, bound);
+    // The accurate path rounds once: the identity to the last bit.
+    ck_assert_double_lt(distance_to_identity(group::accurate_moebius(p, p.relator())), 1e-15);
+  }
+}
+END_TEST
+
+START_TEST(lorentz_matches_moebius) {
+  std::mt19937 rng(7);
+  for (int g : {2, 3, 7}) {
+    const Presentation p(g);
+    const group::GeneratorSet<double> gens(p);
+    for (int trial = 0; trial < 200; ++trial) {
+      const Word w = random_word(rng, p.letter_count(), 4);
+      const auto m = gens.moebius(w);
+      const auto L = gens.lorentz(w);
+      const group::Complex<double> z{0.3 - 0.001 * trial, 0.2};
+      const auto image = group::to_disk(L.apply(group::to_hyperboloid(z)));
+      const auto direct = m.apply(z);
+      ck_assert_double_eq_tol(image.re, direct.re, 1e-9);
+      ck_assert_double_eq_tol(image.im, direct.im, 1e-9);
+      ck_assert_double_eq_tol(m.determinant(), 1.0, 1e-9 * (1 + m.a.re * m.a.re));
+      // The two translation lengths agree.
+      ck_assert_double_eq_tol(m.translation_length(), L.translation_length(), 1e-7);
+      // L^{-1} L = I, up to rounding that grows with the entries' size (on the
+      // accurately rounded matrix: the plain product drifts off the group).
+      const auto La = group::accurate_lorentz(p, w);
+      const auto I = La.inverse() * La;
+      const double tol = 1e-14 * La.m[0][0] * La.m[0][0];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) ck_assert_double_eq_tol(I.m[i][j], (i == j ? 1.0 : 0.0), tol);
+    }
+  }
+}
+END_TEST
+
+START_TEST(dehn_output_is_reduced_and_equal) {
+  std::mt19937 rng(11);
+  for (int g = 2; g <= 6; ++g) {
+    const Presentation p(g);
+    for (int trial = 0; trial < 500; ++trial) {
+      const Word w = random_word(rng, p.letter_count(), 30);
+      const Word r = group::dehn_reduce(p, w);
+      ck_assert(group::is_dehn_reduced(p, r));
+      ck_assert_uint_le(r.size(), w.size());
+      ck_assert_double_lt(matrix_gap(group::accurate_moebius(p, w), group::accurate_moebius(p, r)), 1e-9);
+    }
+    // Every rotation of the relator and of its inverse vanishes.
+    const Word rel = p.relator();
+    for (int k = 0; k < p.letter_count(); ++k) {
+      Word rot(rel.begin() + k, rel.end());
+      rot.insert(rot.end(), rel.begin(), rel.begin() + k);
+      ck_assert(group::dehn_reduce(p, rot).empty());
+      ck_assert(group::dehn_reduce(p, p.inverse(rot)).empty());
+    }
+  }
+}
+END_TEST
+
+START_TEST(dehn_is_not_geodesic_but_canonical_is) {
+  // A chain of two half relators: Dehn-reduced, yet two letters too long.
+  const Presentation p(2);
+  const Word chain{0, 5, 2, 7, 5, 2, 7, 4};
+  ck_assert(group::is_dehn_reduced(p, chain));
+  const Word c = group::canonical_word(p, chain);
+  ck_assert_uint_eq(c.size(), 6);
+  ck_assert_double_lt(matrix_gap(group::accurate_moebius(p, chain), group::accurate_moebius(p, c)), 1e-12);
+}
+END_TEST
+
+START_TEST(neighbour_ids_are_fixed_and_tables_agree) {
+  for (int g = 2; g <= 5; ++g) {
+    const Presentation p(g);
+    group::TranslationTable table(p), other(p);
+    ck_assert_uint_eq(table.neighbour_count(), group::neighbour_count(p));
+    ck_assert(table.word(0).empty());
+    for (std::size_t id = 0; id < table.neighbour_count(); ++id) {
+      ck_assert(table.word(id) == group::neighbour_word(p, id));
+      ck_assert(group::canonical_word(p, table.word(id)) == table.word(id));
+    }
+    // Composition agrees with matrices, is cached, and gives the same ids in
+    // two tables that meet the new elements in the same order.
+    std::mt19937 rng(g);
+    std::uniform_int_distribution<int> pick(0, int(table.neighbour_count()) - 1);
+    for (int trial = 0; trial < 300; ++trial) {
+      const int a = pick(rng), b = pick(rng);
+      const auto ab = table.compose(a, b);
+      ck_assert_int_eq(ab, table.compose(a, b));
+      ck_assert_int_eq(ab, other.compose(a, b));
+      ck_assert_double_lt(matrix_gap(table.moebius(ab), table.moebius(a) * table.moebius(b)), 1e-9);
+      ck_assert_int_eq(table.compose(ab, table.inverse(b)), a);
+    }
+  }
+}
+END_TEST
+
+START_TEST(systole_formula_in_mpfr) {
+  using T = exact::mp_real<50>;
+  // g = 2: 2 arccosh(1 + sqrt 2).
+  const T expected = T(2) * acosh(T(1) + sqrt(T(2)));
+  ck_assert(abs(surface::systole<T>(2) - expected) < T("1e-45"));
+  ck_assert(std::isnan(surface::systole_or_nan(1)));
+}
+END_TEST
+
+START_TEST(unit_disk_test_is_exact) {
+  ck_assert(exact::inside_unit_disk(0.0, 0.0));
+  ck_assert(exact::inside_unit_disk(std::nextafter(1.0, 0.0), 0.0));
+  ck_assert(!exact::inside_unit_disk(1.0, 0.0));
+  ck_assert(!exact::inside_unit_disk(0.0, -1.0));
+  // 0.6 and 0.8 are not exact in binary: as doubles, 0.6^2 + 0.8^2 exceeds 1
+  // by 4.4e-17, which the floating-point sum (exactly 1.0) cannot see.
+  ck_assert(!exact::inside_unit_disk(0.6, 0.8));
+  // Reference values from exact rational arithmetic (Python's fractions):
+  ck_assert(exact::inside_unit_disk(0.6, std::nextafter(0.8, 0.0)));
+  // d = sqrt(0.5) rounded up: 2 d^2 > 1 although d*d + d*d rounds to 1.
+  const double d = std::sqrt(0.5);
+  ck_assert(!exact::inside_unit_disk(d, d));
+  ck_assert(exact::inside_unit_disk(std::nextafter(d, 0.0), d));
+}
+END_TEST
+
+int main(void) {
+  Suite *s = suite_create("core");
+  TCase *tc = tcase_create("core");
+  tcase_set_timeout(tc, 300);
+  tcase_add_test(tc, relation_is_identity_in_mpfr);
+  tcase_add_test(tc, relation_in_plain_double_within_its_error_bound);
+  tcase_add_test(tc, lorentz_matches_moebius);
+  tcase_add_test(tc, dehn_output_is_reduced_and_equal);
+  tcase_add_test(tc, dehn_is_not_geodesic_but_canonical_is);
+  tcase_add_test(tc, neighbour_ids_are_fixed_and_tables_agree);
+  tcase_add_test(tc, systole_formula_in_mpfr);
+  tcase_add_test(tc, unit_disk_test_is_exact);
+  suite_add_tcase(s, tc);
+  SRunner *runner = srunner_create(s);
+  srunner_run_all(runner, CK_NORMAL);
+  const int failed = srunner_ntests_failed(runner);
+  srunner_free(runner);
+  return failed == 0 ? 0 : 1;
+}
