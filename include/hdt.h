@@ -100,8 +100,10 @@ HDT_API hdt_status hdt_polygon_side_midpoint(int genus, int k, double *x, double
    canonical choice among geodesic words is then made with certified
    multiprecision geometry. Two-call pattern: capacity 0 (out may be NULL)
    asks for *out_length; HDT_EBUFS (with *out_length set) when capacity is
-   too small. HDT_ENOTSUP when the reduced word is too long for the built-in
-   precision (hundreds of letters; see README). */
+   too small. The canonical word is never longer than the input, so
+   capacity >= length always suffices and saves the second call (each call
+   does the whole reduction). HDT_ENOTSUP when the reduced word is too long
+   for the built-in precision (hundreds of letters; see README). */
 HDT_API hdt_status hdt_word_reduce(int genus, const int32_t *word, size_t length,
                                    int32_t *out, size_t capacity, size_t *out_length) HDT_NOEXCEPT;
 

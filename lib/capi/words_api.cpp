@@ -29,12 +29,12 @@ Presentation checked_word(int genus, const int32_t *word, size_t length) {
 
 // Two-call pattern: capacity 0 asks for the length; copy when it fits.
 hdt_status copy_word(const Word &w, int32_t *out, size_t capacity, size_t *out_length) {
+  if (capacity > 0 && !out) throw ApiError(HDT_EINVAL, "out is NULL but capacity is " + std::to_string(capacity));
   *out_length = w.size();
   if (capacity == 0) return HDT_OK;
   if (capacity < w.size())
     throw ApiError(HDT_EBUFS, "the word has " + std::to_string(w.size()) + " letters, capacity is " +
                                   std::to_string(capacity));
-  if (!out) throw ApiError(HDT_EINVAL, "out is NULL but capacity is " + std::to_string(capacity));
   std::copy(w.begin(), w.end(), out);
   return HDT_OK;
 }

@@ -12,7 +12,7 @@ template <class T>
 T systole(int genus) {
   using std::acosh;
   using std::cos;
-  return T(2) * acosh(T(1) + T(2) * cos(exact::pi<T>() / T(2 * genus)));
+  return T(2) * acosh(T(1) + T(2) * cos(exact::pi<T>() / (T(2) * T(genus))));
 }
 
 // NaN when genus < 2.

@@ -1,0 +1,64 @@
+"""Python bindings of libhdt: Delaunay triangulations of the symmetric
+hyperbolic surfaces M_g.
+
+A pure-Python ctypes package over the C ABI of include/hdt.h. The library is
+found through the environment variable HDT_LIBRARY (a file path), else by its
+SONAME libhdt.so.0; importing fails with an ImportError saying what was tried
+when neither gives a libhdt of ABI version 0.
+
+Conventions follow the C library: indices are 0-based and taken mod 4g; a
+word is an iterable of letters 0..4g-1 (letter k is the generator g_k, letter
+k+2g its inverse) read as the product g_k1 g_k2 ... g_km. A failed call raises
+a subclass of :class:`hdt.Error` that carries the status code and the
+library's message.
+"""
+
+from ._errors import (
+    AlreadyExists,
+    BufferTooSmall,
+    Error,
+    InternalError,
+    InvalidArgument,
+    NotSupported,
+    OutOfDomain,
+    OutOfMemory,
+    Status,
+)
+from .group import (
+    neighbour_count,
+    neighbour_word,
+    neighbour_words,
+    reduce_word,
+    word_apply,
+    word_lorentz,
+    word_matrix,
+)
+from .library import abi_version, version
+from .surface import polygon_side_midpoint, polygon_vertex, systole
+
+#: The version of these bindings (the library's is version()).
+__version__ = "0.1.0"
+
+__all__ = [
+    "AlreadyExists",
+    "BufferTooSmall",
+    "Error",
+    "InternalError",
+    "InvalidArgument",
+    "NotSupported",
+    "OutOfDomain",
+    "OutOfMemory",
+    "Status",
+    "abi_version",
+    "neighbour_count",
+    "neighbour_word",
+    "neighbour_words",
+    "polygon_side_midpoint",
+    "polygon_vertex",
+    "reduce_word",
+    "systole",
+    "version",
+    "word_apply",
+    "word_lorentz",
+    "word_matrix",
+]

@@ -1,0 +1,107 @@
+"""Loading libhdt and declaring its C prototypes (private).
+
+The library is looked for, in order:
+
+1. the file named by the environment variable ``HDT_LIBRARY`` (when it is set
+   and not empty, nothing else is tried);
+2. the SONAME ``libhdt.so.0`` through the dynamic loader;
+3. whatever ``ctypes.util.find_library('hdt')`` names.
+
+A candidate is accepted when it loads, reports ``hdt_abi_version() == 0`` and
+exports every function of the table below. Otherwise importing ``hdt`` raises
+:class:`LibraryLoadError` (an :class:`ImportError`) that lists what was tried.
+"""
+
+import ctypes
+import ctypes.util
+import os
+
+#: The ABI these bindings speak: the number of the SONAME libhdt.so.N.
+EXPECTED_ABI_VERSION = 0
+SONAME = "libhdt.so.0"
+ENVIRONMENT_VARIABLE = "HDT_LIBRARY"
+
+
+class LibraryLoadError(ImportError):
+    """libhdt could not be loaded, or is not the ABI these bindings speak."""
+
+
+_int = ctypes.c_int
+_size = ctypes.c_size_t
+_status = ctypes.c_int  # hdt_status
+_text = ctypes.c_char_p
+_double = ctypes.c_double
+_double_p = ctypes.POINTER(ctypes.c_double)
+_size_p = ctypes.POINTER(ctypes.c_size_t)
+_word = ctypes.POINTER(ctypes.c_int32)
+
+#: Every function of include/hdt.h: name -> (restype, argtypes).
+PROTOTYPES = {
+    "hdt_status_string": (_text, (_int,)),
+    "hdt_last_error_message": (_text, ()),
+    "hdt_version_string": (_text, ()),
+    "hdt_version": (_int, ()),
+    "hdt_abi_version": (_int, ()),
+    "hdt_systole": (_double, (_int,)),
+    "hdt_polygon_vertex": (_status, (_int, _int, _double_p, _double_p)),
+    "hdt_polygon_side_midpoint": (_status, (_int, _int, _double_p, _double_p)),
+    "hdt_word_reduce": (_status, (_int, _word, _size, _word, _size, _size_p)),
+    "hdt_word_matrix": (_status, (_int, _word, _size, _double_p)),
+    "hdt_word_lorentz": (_status, (_int, _word, _size, _double_p)),
+    "hdt_word_apply": (_status, (_int, _word, _size, _double, _double, _double_p, _double_p)),
+    "hdt_neighbour_count": (_status, (_int, _size_p)),
+    "hdt_neighbour_word": (_status, (_int, _size, _word, _size, _size_p)),
+}
+
+
+def _candidates():
+    """(description, name given to the loader) pairs, in the order tried."""
+    path = os.environ.get(ENVIRONMENT_VARIABLE)
+    if path:
+        # A file path: made absolute so that the loader never searches for it.
+        return [(f"{ENVIRONMENT_VARIABLE}={path}", os.path.abspath(path))]
+    candidates = [(f"SONAME {SONAME}", SONAME)]
+    found = ctypes.util.find_library("hdt")
+    if found and found != SONAME:
+        candidates.append((f"ctypes.util.find_library('hdt') = {found}", found))
+    return candidates
+
+
+def _open(name):
+    """The library loaded from name, its prototypes declared; raises OSError or
+    LookupError with the reason when name is not a usable libhdt."""
+    library = ctypes.CDLL(name)
+    try:
+        abi_version = library.hdt_abi_version
+    except AttributeError:
+        raise LookupError("it does not export hdt_abi_version: not libhdt") from None
+    abi_version.restype, abi_version.argtypes = PROTOTYPES["hdt_abi_version"]
+    if abi_version() != EXPECTED_ABI_VERSION:
+        raise LookupError(f"its ABI version is {abi_version()}, these bindings need {EXPECTED_ABI_VERSION}")
+    for function_name, (restype, argtypes) in PROTOTYPES.items():
+        try:
+            function = getattr(library, function_name)
+        except AttributeError:
+            raise LookupError(f"it does not export {function_name}: too old for these bindings") from None
+        function.restype, function.argtypes = restype, argtypes
+    return library
+
+
+def load():
+    """The first usable candidate; LibraryLoadError naming all that were tried."""
+    failures = []
+    for description, name in _candidates():
+        try:
+            return _open(name)
+        except (OSError, LookupError) as error:
+            failures.append(f"  {description}: {error}")
+    raise LibraryLoadError(
+        f"cannot load libhdt (ABI version {EXPECTED_ABI_VERSION}); tried:\n"
+        + "\n".join(failures)
+        + f"\nSet {ENVIRONMENT_VARIABLE} to the path of {SONAME}, "
+        "or install libhdt where the dynamic loader finds it.",
+        name="hdt",
+    )
+
+
+lib = load()

@@ -1,0 +1,155 @@
+#include "exact/cyclotomic.hpp"
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace hdt::exact {
+
+namespace {
+
+using Poly = std::vector<Integer>;  // low coefficient first
+
+// Exact division of a by the monic b.
+Poly divide_exact(Poly a, const Poly &b) {
+  const std::size_t db = b.size() - 1;
+  Poly q(a.size() - db, Integer(0));
+  for (std::size_t k = a.size(); k-- > db;) {
+    const Integer c = a[k];
+    q[k - db] = c;
+    if (c != 0)
+      for (std::size_t i = 0; i <= db; ++i) a[k - db + i] -= c * b[i];
+  }
+  for (const Integer &r : a)
+    if (r != 0) throw std::logic_error("cyclotomic polynomial: inexact division");
+  return q;
+}
+
+// Phi_n = (x^n - 1) / prod_{d | n, d < n} Phi_d.
+Poly cyclotomic_polynomial(int n, std::map<int, Poly> &memo) {
+  auto it = memo.find(n);
+  if (it != memo.end()) return it->second;
+  Poly p(n + 1, Integer(0));
+  p[0] = -1;
+  p[n] = 1;
+  for (int d = 1; d < n; ++d)
+    if (n % d == 0) p = divide_exact(p, cyclotomic_polynomial(d, memo));
+  memo[n] = p;
+  return p;
+}
+
+}  // namespace
+
+bool Cyclotomic::is_zero() const { return coefficients_.empty(); }
+
+CyclotomicField::CyclotomicField(int n) : n_(n) {
+  if (n < 1) throw std::invalid_argument("cyclotomic field order must be positive");
+  std::map<int, Poly> memo;
+  modulus_ = cyclotomic_polynomial(n, memo);
+  degree_ = int(modulus_.size()) - 1;
+  negacyclic_ = (n & (n - 1)) == 0 && n >= 2;
+}
+
+Cyclotomic CyclotomicField::normalised(std::vector<Integer> c, int exponent) const {
+  // Drop trailing zeros; make the coefficients odd-content (divide out 2s)
+  // so that equal values have equal representations.
+  while (!c.empty() && c.back() == 0) c.pop_back();
+  Cyclotomic r;
+  if (c.empty()) return r;
+  unsigned shift = ~0u;
+  for (const Integer &x : c)
+    if (x != 0) shift = std::min<unsigned>(shift, unsigned(boost::multiprecision::lsb(abs(x))));
+  if (shift > 0 && shift != ~0u)
+    for (Integer &x : c) x >>= shift;  // exact: every coefficient has `shift` trailing zero bits
+  r.coefficients_ = std::move(c);
+  r.exponent_ = exponent + int(shift == ~0u ? 0 : shift);
+  return r;
+}
+
+void CyclotomicField::reduce(std::vector<Integer> &c) const {
+  const std::size_t d = degree_;
+  if (c.size() <= d) return;
+  if (negacyclic_) {
+    // x^d = -1
+    for (std::size_t k = c.size(); k-- > d;) {
+      if (c[k] != 0) c[k - d] -= c[k];
+      c[k] = 0;
+    }
+  } else {
+    for (std::size_t k = c.size(); k-- > d;) {
+      const Integer t = c[k];
+      if (t == 0) continue;
+      for (std::size_t i = 0; i <= d; ++i) c[k - d + i] -= t * modulus_[i];
+    }
+  }
+  c.resize(d);
+}
+
+Cyclotomic CyclotomicField::integer(long v) const { return normalised({Integer(v)}, 0); }
+
+Cyclotomic CyclotomicField::from_double(double v) const {
+  if (!std::isfinite(v)) throw std::domain_error("from_double: not finite");
+  if (v == 0) return zero();
+  int e = 0;
+  const double m = std::frexp(v, &e);  // v = m 2^e, 0.5 <= |m| < 1
+  const double scaled = std::ldexp(m, 53);  // an integer
+  return normalised({Integer(static_cast<long long>(scaled))}, e - 53);
+}
+
+Cyclotomic CyclotomicField::zeta_power(long k) const {
+  k %= n_;
+  if (k < 0) k += n_;
+  std::vector<Integer> c(std::size_t(k) + 1, Integer(0));
+  c[k] = 1;
+  reduce(c);
+  return normalised(std::move(c), 0);
+}
+
+Cyclotomic CyclotomicField::cos_2pi(long k) const {
+  return mul_2exp(add(zeta_power(k), zeta_power(-k)), -1);
+}
+
+Cyclotomic CyclotomicField::sin_2pi(long k) const {
+  // (zeta^k - zeta^-k) / 2i, and 1/i = -i = zeta^{3n/4}; needs 4 | n.
+  if (n_ % 4 != 0) throw std::invalid_argument("sin_2pi needs 4 | n");
+  return mul_2exp(mul(sub(zeta_power(k), zeta_power(-k)), zeta_power(3L * n_ / 4)), -1);
+}
+
+Cyclotomic CyclotomicField::add(const Cyclotomic &a, const Cyclotomic &b) const {
+  if (a.is_zero()) return b;
+  if (b.is_zero()) return a;
+  // Align to the smaller exponent.
+  const int e = std::min(a.exponent_, b.exponent_);
+  std::vector<Integer> c(std::max(a.coefficients_.size(), b.coefficients_.size()), Integer(0));
+  for (std::size_t i = 0; i < a.coefficients_.size(); ++i) c[i] = a.coefficients_[i] << (a.exponent_ - e);
+  for (std::size_t i = 0; i < b.coefficients_.size(); ++i) c[i] += b.coefficients_[i] << (b.exponent_ - e);
+  return normalised(std::move(c), e);
+}
+
+Cyclotomic CyclotomicField::neg(const Cyclotomic &a) const {
+  Cyclotomic r = a;
+  for (Integer &x : r.coefficients_) x = -x;
+  return r;
+}
+
+Cyclotomic CyclotomicField::sub(const Cyclotomic &a, const Cyclotomic &b) const { return add(a, neg(b)); }
+
+Cyclotomic CyclotomicField::mul(const Cyclotomic &a, const Cyclotomic &b) const {
+  if (a.is_zero() || b.is_zero()) return zero();
+  const auto &x = a.coefficients_, &y = b.coefficients_;
+  std::vector<Integer> c(x.size() + y.size() - 1, Integer(0));
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (x[i] == 0) continue;
+    for (std::size_t j = 0; j < y.size(); ++j) c[i + j] += x[i] * y[j];
+  }
+  reduce(c);
+  return normalised(std::move(c), a.exponent_ + b.exponent_);
+}
+
+Cyclotomic CyclotomicField::mul_2exp(const Cyclotomic &a, int e) const {
+  Cyclotomic r = a;
+  if (!r.is_zero()) r.exponent_ += e;
+  return r;
+}
+
+}  // namespace hdt::exact

@@ -1,0 +1,79 @@
+// The field K_g = Q(zeta_{8g})(sigma), sigma = sqrt(cos(pi/2g)), exactly.
+//
+// Every coordinate libhdt meets is in K_g: the generators' Lorentz matrices
+// (up to the positive factor sin(pi/4g)^-2 per letter, which no sign
+// depends on), the points of Q0, and every translated image of a point given
+// as doubles. An element is u + v sigma with u, v in Q(zeta_{8g}); it is zero
+// exactly when u = v = 0 unless sigma itself lies in Q(zeta), a case
+// sign() handles too. The sign of a real element is found by MPFR evaluation
+// at rising precision with a rigorous error bound; it always terminates
+// because a non-zero value eventually exceeds its bound.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "exact/cyclotomic.hpp"
+
+namespace hdt::exact {
+
+struct FieldElement {
+  Cyclotomic u, v;  // u + v sigma
+};
+
+class Field {
+ public:
+  explicit Field(int genus);
+  Field(const Field &) = delete;
+  Field &operator=(const Field &) = delete;
+
+  int genus() const { return genus_; }
+  const CyclotomicField &cyclotomic() const { return base_; }
+
+  FieldElement zero() const { return {}; }
+  FieldElement from_double(double x) const { return {base_.from_double(x), {}}; }
+  FieldElement from_cyclotomic(const Cyclotomic &u) const { return {u, {}}; }
+  FieldElement sigma() const { return {{}, base_.integer(1)}; }
+
+  FieldElement add(const FieldElement &a, const FieldElement &b) const;
+  FieldElement sub(const FieldElement &a, const FieldElement &b) const;
+  FieldElement neg(const FieldElement &a) const;
+  FieldElement mul(const FieldElement &a, const FieldElement &b) const;
+  FieldElement mul(const FieldElement &a, const Cyclotomic &b) const;
+
+  bool is_zero(const FieldElement &a) const;
+  // Sign of a real element: -1, 0 or +1, exactly.
+  int sign(const FieldElement &a) const;
+  // Sign of a real element of Q(zeta).
+  int sign(const Cyclotomic &a) const;
+  // A double approximation (for tests and heuristics only).
+  double approximate(const FieldElement &a) const;
+
+  // How many evaluations each precision rung decided: [0] double, then the
+  // MPFR rungs (for benchmarks and tests).
+  std::array<unsigned long, 5> rung_counts() const;
+
+ private:
+  template <class T>
+  struct Evaluator;
+  template <class T>
+  const Evaluator<T> &evaluator() const;
+  // Sign at one rung, or 2 when the rung cannot decide.
+  template <class T>
+  int sign_at(const FieldElement &a) const;
+
+  int genus_;
+  CyclotomicField base_;
+  Cyclotomic sigma_squared_;  // cos(pi/2g)
+  mutable std::mutex mutex_;
+  mutable std::vector<std::shared_ptr<void>> evaluators_;
+  mutable std::array<std::atomic<unsigned long>, 5> rung_counts_{};
+};
+
+// One shared Field per genus, built on first use, alive for the process.
+const Field &field_of_genus(int genus);
+
+}  // namespace hdt::exact
