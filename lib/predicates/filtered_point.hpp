@@ -1,0 +1,66 @@
+// A translated point on the hyperboloid in double precision, with a
+// certified bound on the error of each coordinate. Input to the filters.
+#pragma once
+
+#include <cfloat>
+#include <cmath>
+
+#include "group/lorentz.hpp"
+
+namespace hdt::predicates {
+
+struct FilteredPoint {
+  double n[3];   // the hyperboloid vector N = L p^ / w
+  double error;  // |computed - exact| <= error for each coordinate
+};
+
+constexpr double kUnit = DBL_EPSILON / 2;  // u = 2^-53
+
+// N = L p^ / w for the disk point (x, y), L the correctly rounded Lorentz
+// matrix of the translation. w = 1 - x^2 - y^2 is computed with error-free
+// products and sums, so it keeps full relative precision near the circle.
+inline FilteredPoint filtered_point(double x, double y, const group::Lorentz<double> &L) {
+  const double xx = x * x, exx = std::fma(x, x, -xx);
+  const double yy = y * y, eyy = std::fma(y, y, -yy);
+  const double s = xx + yy, b = s - xx, es = (xx - (s - b)) + (yy - b);  // s + es = xx + yy exactly
+  const double tail = es + exx + eyy;
+  // Relative errors: w <= 4u (1 - s is exact for s in [1/2, 2]), p0 <= 2u.
+  const double w = (1.0 - s) - tail;
+  const double p[3] = {(1.0 + s) + tail, 2 * x, 2 * y};
+  FilteredPoint r;
+  double worst = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double P = L.m[i][0] * p[0] + L.m[i][1] * p[1] + L.m[i][2] * p[2];
+    const double S = std::abs(L.m[i][0]) * p[0] + std::abs(L.m[i][1] * p[1]) + std::abs(L.m[i][2] * p[2]);
+    r.n[i] = P / w;
+    worst = std::fmax(worst, S);
+  }
+  // Each product sum: u (L rounded) + 2u (p0) + 3u (arithmetic) per unit of
+  // S; the division and w add 5u of |P| <= S; 16u covers all with room.
+  r.error = 16 * kUnit * worst / w;
+  return r;
+}
+
+// det[a; b; c] of 3-vectors with a certified error bound, given per-row
+// magnitude bounds m (max |entry|) and absolute entry errors e.
+struct Det3 {
+  double value, bound;
+};
+
+inline double det3_value(const double *a, const double *b, const double *c) {
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+inline double max_abs3(const double *a) { return std::fmax(std::abs(a[0]), std::fmax(std::abs(a[1]), std::abs(a[2]))); }
+
+inline Det3 det3_filtered(const double *a, double ea, const double *b, double eb, const double *c, double ec) {
+  const double ma = max_abs3(a) + ea, mb = max_abs3(b) + eb, mc = max_abs3(c) + ec;
+  // Input errors move the determinant by at most 6 (ea mb mc + ma eb mc +
+  // ma mb ec) (each cofactor is at most 2 products of magnitudes, 3 of them);
+  // evaluating it rounds each of its 6 terms by at most 5u relative.
+  const double input = 6 * (ea * mb * mc + ma * eb * mc + ma * mb * ec);
+  const double rounding = 6 * 6 * kUnit * ma * mb * mc;
+  return {det3_value(a, b, c), (input + rounding) * (1 + 8 * kUnit) * 1.01};
+}
+
+}  // namespace hdt::predicates

@@ -1,0 +1,172 @@
+#include "predicates/kernel.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <stdexcept>
+
+#include "group/word_matrix.hpp"
+#include "predicates/filtered_point.hpp"
+
+namespace hdt::predicates {
+
+using exact::Cyclotomic;
+using exact::FieldElement;
+
+namespace {
+
+int sign_of(double value, double bound) { return value > bound ? 1 : value < -bound ? -1 : 0; }
+
+// The difference a - b of filtered points and its error bound.
+struct Difference {
+  double d[3];
+  double error;
+};
+
+Difference difference(const FilteredPoint &a, const FilteredPoint &b) {
+  Difference r;
+  for (int i = 0; i < 3; ++i) r.d[i] = a.n[i] - b.n[i];
+  r.error = (a.error + b.error) * (1 + kUnit) + kUnit * max_abs3(r.d) * 1.01;
+  return r;
+}
+
+}  // namespace
+
+Kernel::Kernel(const group::Presentation &p) : table_(p), field_(exact::field_of_genus(p.genus())) {
+  for (group::Letter k = 0; k < p.letter_count(); ++k) {
+    const auto L = group::accurate_lorentz(p, group::Word{k});
+    side_normals_.push_back({1.0 - L.m[0][0], L.m[1][0], L.m[2][0]});  // O - g_k(O), as <N, .> coefficients
+    exact_generators_.push_back(std::make_unique<group::ExactLorentz>(group::exact_generator(field_, k)));
+  }
+  const exact::CyclotomicField &K = field_.cyclotomic();
+  const Cyclotomic s = K.sin_2pi(1);
+  sin2_ = K.mul(s, s);
+}
+
+const group::ExactLorentz &Kernel::exact_matrix(TranslationId id) {
+  if (std::size_t(id) >= exact_matrices_.size()) exact_matrices_.resize(table_.size());
+  auto &slot = exact_matrices_.at(id);
+  if (!slot) slot = std::make_unique<group::ExactLorentz>(group::exact_lorentz(field_, table_.word(id)));
+  return *slot;
+}
+
+Kernel::ExactRow Kernel::exact_row(const TranslatedPoint &p) {
+  const exact::CyclotomicField &K = field_.cyclotomic();
+  const Cyclotomic x = K.from_double(p.x), y = K.from_double(p.y);
+  const Cyclotomic r2 = K.add(K.mul(x, x), K.mul(y, y)), one = K.integer(1);
+  const Cyclotomic hat[3] = {K.add(one, r2), K.mul_2exp(x, 1), K.mul_2exp(y, 1)};
+  const group::ExactLorentz &M = exact_matrix(p.translation);
+  ExactRow row;
+  for (int i = 0; i < 3; ++i) {
+    FieldElement sum = field_.zero();
+    for (int j = 0; j < 3; ++j) sum = field_.add(sum, field_.mul(M.m[i][j], hat[j]));
+    row.v[i] = sum;
+  }
+  row.v[3] = field_.from_cyclotomic(K.mul(group::exact_scale(field_, M.letters), K.sub(one, r2)));
+  return row;
+}
+
+FieldElement Kernel::det3(const std::array<const std::array<FieldElement, 4> *, 3> &rows) const {
+  const auto &a = *rows[0], &b = *rows[1], &c = *rows[2];
+  auto minor = [&](int i, int j) { return field_.sub(field_.mul(b[i], c[j]), field_.mul(b[j], c[i])); };
+  FieldElement r = field_.mul(a[0], minor(1, 2));
+  r = field_.sub(r, field_.mul(a[1], minor(0, 2)));
+  return field_.add(r, field_.mul(a[2], minor(0, 1)));
+}
+
+FieldElement Kernel::det4(const std::array<ExactRow, 4> &rows) const {
+  // Expansion along the last column: sum_r (-1)^(r+3) v_r3 det3(others).
+  FieldElement r = field_.zero();
+  for (int skip = 0; skip < 4; ++skip) {
+    std::array<const std::array<FieldElement, 4> *, 3> others;
+    for (int i = 0, j = 0; i < 4; ++i)
+      if (i != skip) others[j++] = &rows[i].v;
+    const FieldElement term = field_.mul(rows[skip].v[3], det3(others));
+    r = (skip % 2 == 1) ? field_.add(r, term) : field_.sub(r, term);
+  }
+  return r;
+}
+
+int Kernel::orientation_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
+  const ExactRow a = exact_row(p), b = exact_row(q), c = exact_row(r);
+  return field_.sign(det3({&a.v, &b.v, &c.v}));
+}
+
+int Kernel::in_circle_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                            const TranslatedPoint &s) {
+  return field_.sign(det4({exact_row(p), exact_row(q), exact_row(r), exact_row(s)}));
+}
+
+int Kernel::beyond_side_exact(const TranslatedPoint &p, int side) {
+  // <M_h p^, s^2 e0 - M_k e0>, a positive multiple of <N, O - g_k(O)>.
+  const ExactRow row = exact_row(p);
+  const group::ExactLorentz &G = *exact_generators_.at(side);
+  const FieldElement n0 = field_.sub(field_.from_cyclotomic(sin2_), G.m[0][0]);
+  FieldElement value = field_.mul(row.v[0], n0);
+  value = field_.add(value, field_.mul(row.v[1], G.m[1][0]));
+  value = field_.add(value, field_.mul(row.v[2], G.m[2][0]));
+  return field_.sign(value);
+}
+
+int Kernel::orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
+  const FilteredPoint a = filtered_point(p.x, p.y, table_.lorentz(p.translation));
+  const FilteredPoint b = filtered_point(q.x, q.y, table_.lorentz(q.translation));
+  const FilteredPoint c = filtered_point(r.x, r.y, table_.lorentz(r.translation));
+  const Difference db = difference(b, a), dc = difference(c, a);
+  const Det3 d = det3_filtered(a.n, a.error, db.d, db.error, dc.d, dc.error);
+  if (const int s = sign_of(d.value, d.bound)) return ++statistics_.filtered, s;
+  ++statistics_.exact;
+  return orientation_exact(p, q, r);
+}
+
+int Kernel::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                      const TranslatedPoint &s) {
+  const FilteredPoint a = filtered_point(p.x, p.y, table_.lorentz(p.translation));
+  const FilteredPoint b = filtered_point(q.x, q.y, table_.lorentz(q.translation));
+  const FilteredPoint c = filtered_point(r.x, r.y, table_.lorentz(r.translation));
+  const FilteredPoint e = filtered_point(s.x, s.y, table_.lorentz(s.translation));
+  const Difference db = difference(b, a), dc = difference(c, a), de = difference(e, a);
+  // det[N 1] = -det[N_q - N_p; N_r - N_p; N_s - N_p].
+  const Det3 d = det3_filtered(db.d, db.error, dc.d, dc.error, de.d, de.error);
+  if (const int sg = sign_of(d.value, d.bound)) return ++statistics_.filtered, -sg;
+  ++statistics_.exact;
+  return in_circle_exact(p, q, r, s);
+}
+
+int Kernel::in_circle_perturbed(const std::array<TranslatedPoint, 4> &pt, const std::array<uint32_t, 4> &vertex) {
+  if (const int s = in_circle(pt[0], pt[1], pt[2], pt[3])) return s;
+  // Cocircular: the coefficient of eps_v is sum over v's rows r of
+  // v_r3 * cofactor(r, 3) of the exact matrix.
+  const std::array<ExactRow, 4> rows{exact_row(pt[0]), exact_row(pt[1]), exact_row(pt[2]), exact_row(pt[3])};
+  std::array<uint32_t, 4> order = vertex;
+  std::sort(order.begin(), order.end(), std::greater<uint32_t>());
+  for (int k = 0; k < 4; ++k) {
+    if (k > 0 && order[k] == order[k - 1]) continue;
+    FieldElement coefficient = field_.zero();
+    for (int r = 0; r < 4; ++r) {
+      if (vertex[r] != order[k]) continue;
+      std::array<const std::array<FieldElement, 4> *, 3> others;
+      for (int i = 0, j = 0; i < 4; ++i)
+        if (i != r) others[j++] = &rows[i].v;
+      const FieldElement term = field_.mul(rows[r].v[3], det3(others));
+      coefficient = (r % 2 == 1) ? field_.add(coefficient, term) : field_.sub(coefficient, term);
+    }
+    if (const int s = field_.sign(coefficient)) return s;
+  }
+  throw std::logic_error("in_circle_perturbed: every perturbation coefficient vanishes (repeated vertices)");
+}
+
+int Kernel::beyond_side(const TranslatedPoint &p, int side) {
+  const FilteredPoint a = filtered_point(p.x, p.y, table_.lorentz(p.translation));
+  const auto &n = side_normals_.at(side);
+  // <N, n> with the Minkowski signs folded into n (n = (1 - Q0, Q1, Q2)).
+  const double value = a.n[0] * n[0] + a.n[1] * n[1] + a.n[2] * n[2];
+  const double size = std::abs(a.n[0] * n[0]) + std::abs(a.n[1] * n[1]) + std::abs(a.n[2] * n[2]);
+  const double norm = std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]);
+  // n is rounded (u per entry, 1 - Q0 one more), the sum rounds 3u.
+  const double bound = (8 * kUnit * size + a.error * norm * (1 + 4 * kUnit)) * 1.01;
+  if (const int s = sign_of(value, bound)) return ++statistics_.filtered, s;
+  ++statistics_.exact;
+  return beyond_side_exact(p, side);
+}
+
+}  // namespace hdt::predicates

@@ -1,0 +1,98 @@
+// Exact geometric predicates on translated points of the Poincare disk.
+//
+// A point is given as a stored point (x, y) (doubles, hence exact rationals)
+// and a translation id h of the kernel's TranslationTable: it stands for
+// h(x + iy), an algebraic point. Every predicate returns the mathematically
+// correct sign for every input: a double-precision evaluation with a
+// certified (dynamic) error bound decides when it can; otherwise the value is
+// computed exactly in the field K_g (exact/field.hpp).
+//
+// Formulas, on the hyperboloid (N = the point's hyperboloid vector):
+//   orientation(p, q, r) = sign det[N_p; N_q; N_r]        (+1: counterclockwise)
+//   in_circle(p, q, r, s) = sign det[N_p 1; N_q 1; N_r 1; N_s 1]
+//        for p, q, r counterclockwise: +1 when s is inside their circle;
+//   beyond_side(p, k)     = sign(<N, O> - <N, g_k O>)     (+1: beyond the line of
+//        side s_k, on the side of g_k(F_g); 0: on it; -1: on the side of F_g).
+// The filter uses differences N_i - N_0, which keeps it sharp for small
+// triangles; the exact path uses the unnormalised rows (M_h p^, s^2m w), a
+// positive multiple of (N, 1) row by row (see group/exact_lorentz.hpp).
+//
+// Ties of in_circle (cocircular points) are broken by symbolic perturbation:
+// vertex v's rows get the last coordinate 1 + eps_v, with eps of a larger
+// vertex id infinitely larger. The first vertex (largest id first) whose
+// coefficient is non-zero decides; a newer point cocircular with a face is
+// thus inside its circle. This is one global perturbation of the point set on
+// the surface (all copies of a vertex move alike), so every decision made
+// with it is consistent with every other.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "exact/field.hpp"
+#include "group/exact_lorentz.hpp"
+#include "group/translation_table.hpp"
+
+namespace hdt::predicates {
+
+using group::TranslationId;
+
+struct TranslatedPoint {
+  double x, y;           // the stored point, |x + iy| < 1
+  TranslationId translation;
+};
+
+// Counts of the filter's successes and failures, for tests and benchmarks.
+struct FilterStatistics {
+  unsigned long filtered = 0;
+  unsigned long exact = 0;
+};
+
+class Kernel {
+ public:
+  explicit Kernel(const group::Presentation &p);
+
+  const group::Presentation &presentation() const { return table_.presentation(); }
+  group::TranslationTable &table() { return table_; }
+  const exact::Field &field() const { return field_; }
+
+  int orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+  int in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                const TranslatedPoint &s);
+  // in_circle with ties broken by the symbolic perturbation; never 0 for four
+  // points of which one vertex occurs once (always so in a simplicial
+  // triangulation). vertex[i] is the vertex id of point i.
+  int in_circle_perturbed(const std::array<TranslatedPoint, 4> &points, const std::array<uint32_t, 4> &vertex);
+  int beyond_side(const TranslatedPoint &p, int side);
+
+  // The exact evaluations alone (for tests against the filter).
+  int orientation_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+  int in_circle_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                      const TranslatedPoint &s);
+  int beyond_side_exact(const TranslatedPoint &p, int side);
+
+  const FilterStatistics &statistics() const { return statistics_; }
+  void reset_statistics() { statistics_ = {}; }
+
+ private:
+  // The exact row (M_h p^, s^2m w) of a point.
+  struct ExactRow {
+    std::array<exact::FieldElement, 4> v;
+  };
+  ExactRow exact_row(const TranslatedPoint &p);
+  const group::ExactLorentz &exact_matrix(TranslationId id);
+  exact::FieldElement det3(const std::array<const std::array<exact::FieldElement, 4> *, 3> &rows) const;
+  exact::FieldElement det4(const std::array<ExactRow, 4> &rows) const;
+
+  group::TranslationTable table_;
+  const exact::Field &field_;
+  std::vector<std::unique_ptr<group::ExactLorentz>> exact_matrices_;  // by translation id, lazily
+  std::vector<std::array<double, 3>> side_normals_;  // O - g_k(O), rounded
+  std::vector<std::unique_ptr<group::ExactLorentz>> exact_generators_;
+  exact::Cyclotomic sin2_;  // sin(pi/4g)^2
+  FilterStatistics statistics_;
+};
+
+}  // namespace hdt::predicates

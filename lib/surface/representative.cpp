@@ -1,0 +1,61 @@
+#include "surface/representative.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "exact/unit_disk.hpp"
+
+namespace hdt::surface {
+
+using group::Letter;
+using group::TranslationId;
+using group::Word;
+
+namespace {
+
+// The id of g * h, where g is a single letter.
+TranslationId prepend(predicates::Kernel &kernel, Letter g, TranslationId h) {
+  Word w{g};
+  const Word &rest = kernel.table().word(h);
+  w.insert(w.end(), rest.begin(), rest.end());
+  return kernel.table().intern(w);
+}
+
+}  // namespace
+
+Representative representative(predicates::Kernel &kernel, double x, double y) {
+  if (!std::isfinite(x) || !std::isfinite(y) || !exact::inside_unit_disk(x, y))
+    throw std::domain_error("the point is not a finite point of the open unit disk");
+  const group::Presentation &p = kernel.presentation();
+  const int n = p.letter_count(), half = p.half_relator();
+  TranslationId h = 0;
+  std::vector<int> on;  // the sides whose line holds h(z)
+  for (;;) {
+    on.clear();
+    int beyond = -1;
+    for (int k = 0; k < n && beyond < 0; ++k) {
+      const int s = kernel.beyond_side({x, y, h}, k);
+      if (s > 0) beyond = k;
+      if (s == 0) on.push_back(k);
+    }
+    if (beyond < 0) break;
+    h = prepend(kernel, p.inverse(beyond), h);
+  }
+  if (on.empty()) return {h, Representative::interior, 0};
+  if (on.size() == 1) {
+    const int k = on[0];
+    if (k >= half) h = prepend(kernel, static_cast<Letter>(k - half), h);
+    return {h, Representative::side, k % half};
+  }
+  // Two sides: the vertex between s_k and s_{k+1} is v_k.
+  if (on.size() != 2) throw std::logic_error("representative: a point on more than two side lines of F_g");
+  int k = (on[0] == 0 && on[1] == n - 1) ? n - 1 : on[0];
+  while (k != 0) {
+    const Letter g = static_cast<Letter>(((k - half) % n + n) % n);
+    h = prepend(kernel, g, h);
+    k = ((k - half - 1) % n + n) % n;
+  }
+  return {h, Representative::vertex, 0};
+}
+
+}  // namespace hdt::surface
