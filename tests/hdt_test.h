@@ -1,0 +1,166 @@
+/* Shared helpers of the Check tests of libhdt (public header only). */
+#ifndef HDT_TEST_H
+#define HDT_TEST_H
+
+#include <check.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hdt.h"
+
+/* ck_assert_msg without Check's bookkeeping of passed assertions (a write
+   to the parent process for each one), which dominates hot loops. */
+#define expect(cond, ...)                   \
+  do {                                      \
+    if (!(cond)) ck_abort_msg(__VA_ARGS__); \
+  } while (0)
+
+/* Longest word the tests hold in a word_t. */
+#define TW_MAX 256
+
+typedef struct word_t {
+  size_t n;
+  int32_t a[TW_MAX];
+} word_t;
+
+/* ---- A small deterministic PRNG (xorshift64*) ---- */
+static inline uint64_t rng_next(uint64_t *s) {
+  *s ^= *s >> 12;
+  *s ^= *s << 25;
+  *s ^= *s >> 27;
+  return *s * UINT64_C(2685821657736338717);
+}
+/* Uniform in 0..n-1 (n > 0; the bias is irrelevant here). */
+static inline int rng_below(uint64_t *s, int n) { return (int)(rng_next(s) % (uint64_t)n); }
+
+/* ---- Words ---- */
+static inline int inv_letter(int g, int k) { return (k + 2 * g) % (4 * g); }
+
+static inline void word_push(word_t *w, int32_t k) {
+  expect(w->n < TW_MAX, "test word longer than %d letters", TW_MAX);
+  w->a[w->n++] = k;
+}
+
+static inline void word_append(word_t *w, const word_t *tail) {
+  for (size_t i = 0; i < tail->n; ++i) word_push(w, tail->a[i]);
+}
+
+/* A random word of 0..max_len letters. */
+static inline word_t random_word(uint64_t *rng, int g, size_t max_len) {
+  word_t w = {0};
+  const size_t len = (size_t)rng_below(rng, (int)max_len + 1);
+  for (size_t i = 0; i < len; ++i) word_push(&w, rng_below(rng, 4 * g));
+  return w;
+}
+
+/* The relator: letters j (2g+1) mod 4g, j = 0..4g-1. */
+static inline word_t relator(int g) {
+  word_t r = {0};
+  for (int j = 0; j < 4 * g; ++j) word_push(&r, (int32_t)((j * (2 * g + 1)) % (4 * g)));
+  return r;
+}
+
+static inline word_t word_inverse(int g, const word_t *w) {
+  word_t r = {0};
+  for (size_t i = w->n; i-- > 0;) word_push(&r, inv_letter(g, w->a[i]));
+  return r;
+}
+
+/* The cyclic rotation starting at position s. */
+static inline word_t word_rotate(const word_t *w, size_t s) {
+  word_t r = {0};
+  for (size_t i = 0; i < w->n; ++i) word_push(&r, w->a[(s + i) % w->n]);
+  return r;
+}
+
+static inline int word_eq(const word_t *x, const word_t *y) {
+  return x->n == y->n && (x->n == 0 || memcmp(x->a, y->a, x->n * sizeof x->a[0]) == 0);
+}
+
+/* Shortlex order: shorter first, then lexicographic by letter value. */
+static inline int shortlex_cmp(const word_t *x, const word_t *y) {
+  if (x->n != y->n) return x->n < y->n ? -1 : 1;
+  for (size_t i = 0; i < x->n; ++i)
+    if (x->a[i] != y->a[i]) return x->a[i] < y->a[i] ? -1 : 1;
+  return 0;
+}
+
+/* "[0 5 2]" into buf, for messages. */
+static inline const char *word_str(const word_t *w, char *buf, size_t size) {
+  size_t used = 0;
+  buf[0] = '\0';
+  for (size_t i = 0; i < w->n && used + 16 < size; ++i)
+    used += (size_t)snprintf(buf + used, size - used, i ? " %d" : "%d", (int)w->a[i]);
+  return buf;
+}
+
+/* Canonical word through hdt_word_reduce (asserts success). */
+static inline word_t reduce_word(int g, const word_t *w) {
+  word_t r = {0};
+  size_t len = 0;
+  hdt_status s = hdt_word_reduce(g, w->a, w->n, r.a, TW_MAX, &len);
+  expect(s == HDT_OK, "hdt_word_reduce(genus %d, %zu letters): %s (%s)", g, w->n, hdt_status_string(s),
+         hdt_last_error_message());
+  expect(len <= TW_MAX, "canonical word of %zu letters", len);
+  r.n = len;
+  return r;
+}
+
+static inline void word_matrix(int g, const word_t *w, double m[4]) {
+  hdt_status s = hdt_word_matrix(g, w->a, w->n, m);
+  expect(s == HDT_OK, "hdt_word_matrix(genus %d): %s (%s)", g, hdt_status_string(s), hdt_last_error_message());
+}
+
+/* Distance of two SU(1,1) matrices up to sign, relative to the larger entry
+   (at least 1). */
+static inline double matrix_gap(const double x[4], const double y[4]) {
+  double plus = 0, minus = 0, size = 1;
+  for (int i = 0; i < 4; ++i) {
+    plus = fmax(plus, fabs(x[i] - y[i]));
+    minus = fmax(minus, fabs(x[i] + y[i]));
+    size = fmax(size, fmax(fabs(x[i]), fabs(y[i])));
+  }
+  return fmin(plus, minus) / size;
+}
+
+/* Translation length 2 arccosh |Re a| of a matrix. */
+static inline double translation_length(const double m[4]) { return 2 * acosh(fabs(m[0])); }
+
+/* Image of the disk point (x, y) under the word (asserts success). */
+static inline void apply_word(int g, const word_t *w, double x, double y, double *ox, double *oy) {
+  hdt_status s = hdt_word_apply(g, w->a, w->n, x, y, ox, oy);
+  expect(s == HDT_OK, "hdt_word_apply(genus %d, (%.17g, %.17g)): %s (%s)", g, x, y, hdt_status_string(s),
+         hdt_last_error_message());
+}
+
+/* Asserts that a call failed with `expected` and that the thread's error
+   message names `function`. */
+static inline void expect_failure(hdt_status got, hdt_status expected, const char *function) {
+  const char *msg = hdt_last_error_message();
+  expect(got == expected, "%s returned %d (%s), expected %d (%s)", function, (int)got, hdt_status_string(got),
+         (int)expected, hdt_status_string(expected));
+  expect(msg != NULL && strstr(msg, function) != NULL, "error message \"%s\" does not name %s", msg, function);
+}
+
+/* Runs the tests as one suite, each in its own case with a generous timeout
+   (the heavier tests need more than Check's default of 4 s on a slow
+   machine); prints Check's summary line and gives the exit status. */
+static inline int run_tests(const char *suite_name, const TTest *const *tests, size_t count) {
+  Suite *suite = suite_create(suite_name);
+  for (size_t i = 0; i < count; ++i) {
+    TCase *tc = tcase_create(tests[i]->name);
+    tcase_set_timeout(tc, 240);
+    tcase_add_test(tc, tests[i]);
+    suite_add_tcase(suite, tc);
+  }
+  SRunner *runner = srunner_create(suite);
+  srunner_run_all(runner, CK_NORMAL);
+  const int failed = srunner_ntests_failed(runner);
+  srunner_free(runner);
+  return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+#endif /* HDT_TEST_H */
