@@ -25,10 +25,17 @@ TranslationId TranslationTable::add_canonical(const Word &canonical) {
   if (words_.size() >= std::size_t(INT32_MAX)) throw std::length_error("translation table is full");
   const auto id = static_cast<TranslationId>(words_.size());
   words_.push_back(canonical);
-  moebius_.push_back(accurate_moebius(presentation_, canonical));
-  lorentz_.push_back(accurate_lorentz(presentation_, canonical));
+  moebius_.emplace_back();
+  lorentz_.emplace_back();
+  has_matrices_.push_back(false);
   ids_.emplace(canonical, id);
   return id;
+}
+
+void TranslationTable::compute_matrices(TranslationId id) {
+  moebius_[id] = accurate_moebius(presentation_, words_[id]);
+  lorentz_[id] = accurate_lorentz(presentation_, words_[id]);
+  has_matrices_[id] = true;
 }
 
 TranslationId TranslationTable::intern(const Word &w) { return add_canonical(canonical_word(presentation_, w)); }

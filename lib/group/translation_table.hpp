@@ -36,20 +36,30 @@ class TranslationTable {
   TranslationId inverse(TranslationId a);
 
   const Word &word(TranslationId id) const { return words_.at(id); }
-  const Moebius<double> &moebius(TranslationId id) const { return moebius_.at(id); }
-  const Lorentz<double> &lorentz(TranslationId id) const { return lorentz_.at(id); }
+  // Correctly rounded matrices, computed on first use (building them for all
+  // of N up front would cost seconds at large genus).
+  const Moebius<double> &moebius(TranslationId id) {
+    if (!has_matrices_.at(id)) compute_matrices(id);
+    return moebius_[id];
+  }
+  const Lorentz<double> &lorentz(TranslationId id) {
+    if (!has_matrices_.at(id)) compute_matrices(id);
+    return lorentz_[id];
+  }
 
  private:
   struct WordHash {
     std::size_t operator()(const Word &w) const noexcept;
   };
   TranslationId add_canonical(const Word &canonical);
+  void compute_matrices(TranslationId id);
 
   Presentation presentation_;
   std::size_t neighbour_count_ = 0;
   std::vector<Word> words_;
   std::vector<Moebius<double>> moebius_;
   std::vector<Lorentz<double>> lorentz_;
+  std::vector<bool> has_matrices_;
   std::unordered_map<Word, TranslationId, WordHash> ids_;
   std::unordered_map<uint64_t, TranslationId> products_;
 };
