@@ -50,10 +50,16 @@ const group::ExactLorentz &Kernel::exact_matrix(TranslationId id) {
 }
 
 Kernel::ExactRow Kernel::exact_row(const TranslatedPoint &p) {
+  // z = (X + iY)/Z: p^ = (Z^2 + X^2 + Y^2, 2XZ, 2YZ) and w = Z^2 - X^2 - Y^2,
+  // both Z^2 times the values for z (a positive factor).
   const exact::CyclotomicField &K = field_.cyclotomic();
-  const Cyclotomic x = K.from_double(p.x), y = K.from_double(p.y);
-  const Cyclotomic r2 = K.add(K.mul(x, x), K.mul(y, y)), one = K.integer(1);
-  const Cyclotomic hat[3] = {K.add(one, r2), K.mul_2exp(x, 1), K.mul_2exp(y, 1)};
+  const ExactSite site = p.site >= 0 ? sites_.at(p.site).exact
+                                     : ExactSite{field_.from_double(p.x), field_.from_double(p.y),
+                                                 field_.from_cyclotomic(K.integer(1))};
+  const FieldElement xx = field_.mul(site.X, site.X), yy = field_.mul(site.Y, site.Y);
+  const FieldElement zz = field_.mul(site.Z, site.Z), r2 = field_.add(xx, yy);
+  const FieldElement two_z = field_.add(site.Z, site.Z);
+  const FieldElement hat[3] = {field_.add(zz, r2), field_.mul(site.X, two_z), field_.mul(site.Y, two_z)};
   const group::ExactLorentz &M = exact_matrix(p.translation);
   ExactRow row;
   for (int i = 0; i < 3; ++i) {
@@ -61,8 +67,41 @@ Kernel::ExactRow Kernel::exact_row(const TranslatedPoint &p) {
     for (int j = 0; j < 3; ++j) sum = field_.add(sum, field_.mul(M.m[i][j], hat[j]));
     row.v[i] = sum;
   }
-  row.v[3] = field_.from_cyclotomic(K.mul(group::exact_scale(field_, M.letters), K.sub(one, r2)));
+  row.v[3] = field_.mul(field_.sub(zz, r2), group::exact_scale(field_, M.letters));
   return row;
+}
+
+int32_t Kernel::add_site(const ExactSite &site, double *x, double *y) {
+  if (field_.sign(site.Z) <= 0) throw std::domain_error("add_site: Z must be positive");
+  const FieldElement zz = field_.mul(site.Z, site.Z);
+  const FieldElement w = field_.sub(zz, field_.add(field_.mul(site.X, site.X), field_.mul(site.Y, site.Y)));
+  if (field_.sign(w) <= 0) throw std::domain_error("add_site: the point is not inside the open unit disk");
+  // Quotients in 132-bit MPFR, then rounded: within u |.| + 2^-120 of exact.
+  const double z = field_.approximate(site.Z);
+  SiteData data{site, field_.approximate(site.X) / z, field_.approximate(site.Y) / z, 0};
+  data.rounding = 4 * kUnit * std::fmax(std::abs(data.x), std::abs(data.y)) + 0x1p-100;
+  sites_.push_back(data);
+  *x = data.x;
+  *y = data.y;
+  return int32_t(sites_.size() - 1);
+}
+
+TranslatedPoint Kernel::site_point(int32_t site, TranslationId translation) const {
+  const SiteData &d = sites_.at(site);
+  return {d.x, d.y, translation, site};
+}
+
+FilteredPoint Kernel::filtered(const TranslatedPoint &p) {
+  const group::Lorentz<double> &L = table_.lorentz(p.translation);
+  FilteredPoint r = filtered_point(p.x, p.y, L);
+  if (p.site >= 0) {
+    // Each coordinate of p^/w moves by at most 6/w^2 per unit of x or y
+    // (|z| < 1, w <= 1), and |L_ij| <= L_00 for a Lorentz matrix.
+    const double x = p.x, y = p.y, w = 1 - x * x - y * y - 4 * sites_[p.site].rounding;
+    if (!(w > 0)) r.error = INFINITY;
+    else r.error += 3 * L.m[0][0] * 12 * sites_[p.site].rounding / (w * w) * 1.01;
+  }
+  return r;
 }
 
 FieldElement Kernel::det3(const std::array<const std::array<FieldElement, 4> *, 3> &rows) const {
@@ -108,9 +147,9 @@ int Kernel::beyond_side_exact(const TranslatedPoint &p, int side) {
 }
 
 int Kernel::orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
-  const FilteredPoint a = filtered_point(p.x, p.y, table_.lorentz(p.translation));
-  const FilteredPoint b = filtered_point(q.x, q.y, table_.lorentz(q.translation));
-  const FilteredPoint c = filtered_point(r.x, r.y, table_.lorentz(r.translation));
+  const FilteredPoint a = filtered(p);
+  const FilteredPoint b = filtered(q);
+  const FilteredPoint c = filtered(r);
   const Difference db = difference(b, a), dc = difference(c, a);
   const Det3 d = det3_filtered(a.n, a.error, db.d, db.error, dc.d, dc.error);
   if (const int s = sign_of(d.value, d.bound)) return ++statistics_.filtered, s;
@@ -120,10 +159,10 @@ int Kernel::orientation(const TranslatedPoint &p, const TranslatedPoint &q, cons
 
 int Kernel::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                       const TranslatedPoint &s) {
-  const FilteredPoint a = filtered_point(p.x, p.y, table_.lorentz(p.translation));
-  const FilteredPoint b = filtered_point(q.x, q.y, table_.lorentz(q.translation));
-  const FilteredPoint c = filtered_point(r.x, r.y, table_.lorentz(r.translation));
-  const FilteredPoint e = filtered_point(s.x, s.y, table_.lorentz(s.translation));
+  const FilteredPoint a = filtered(p);
+  const FilteredPoint b = filtered(q);
+  const FilteredPoint c = filtered(r);
+  const FilteredPoint e = filtered(s);
   const Difference db = difference(b, a), dc = difference(c, a), de = difference(e, a);
   // det[N 1] = -det[N_q - N_p; N_r - N_p; N_s - N_p].
   const Det3 d = det3_filtered(db.d, db.error, dc.d, dc.error, de.d, de.error);
@@ -156,7 +195,7 @@ int Kernel::in_circle_perturbed(const std::array<TranslatedPoint, 4> &pt, const 
 }
 
 int Kernel::beyond_side(const TranslatedPoint &p, int side) {
-  const FilteredPoint a = filtered_point(p.x, p.y, table_.lorentz(p.translation));
+  const FilteredPoint a = filtered(p);
   const auto &n = side_normals_.at(side);
   // <N, n> with the Minkowski signs folded into n (n = (1 - Q0, Q1, Q2)).
   const double value = a.n[0] * n[0] + a.n[1] * n[1] + a.n[2] * n[2];

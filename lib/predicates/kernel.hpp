@@ -34,14 +34,23 @@
 #include "exact/field.hpp"
 #include "group/exact_lorentz.hpp"
 #include "group/translation_table.hpp"
+#include "predicates/filtered_point.hpp"
 
 namespace hdt::predicates {
 
 using group::TranslationId;
 
+// A point of the disk with exact algebraic coordinates: z = (X + iY) / Z
+// with X, Y, Z in K_g and Z > 0 (the points of Q0, rotated images of
+// rational points). Registered with Kernel::add_site.
+struct ExactSite {
+  exact::FieldElement X, Y, Z;
+};
+
 struct TranslatedPoint {
-  double x, y;           // the stored point, |x + iy| < 1
+  double x, y;  // the stored point, |x + iy| < 1: exact, or a site's rounding
   TranslationId translation;
+  int32_t site = -1;  // >= 0: the point is kernel site `site`, (x, y) its rounding
 };
 
 // Counts of the filter's successes and failures, for tests and benchmarks.
@@ -73,6 +82,12 @@ class Kernel {
                       const TranslatedPoint &s);
   int beyond_side_exact(const TranslatedPoint &p, int side);
 
+  // Registers an exact algebraic point; returns its site id and sets *x, *y
+  // to its coordinates rounded to double. Throws std::domain_error unless
+  // Z > 0 and the point lies in the open unit disk.
+  int32_t add_site(const ExactSite &site, double *x, double *y);
+  TranslatedPoint site_point(int32_t site, TranslationId translation) const;
+
   const FilterStatistics &statistics() const { return statistics_; }
   void reset_statistics() { statistics_ = {}; }
 
@@ -86,7 +101,16 @@ class Kernel {
   exact::FieldElement det3(const std::array<const std::array<exact::FieldElement, 4> *, 3> &rows) const;
   exact::FieldElement det4(const std::array<ExactRow, 4> &rows) const;
 
+  // The double point of p for the filter; a site's rounding error is
+  // folded into the error bound.
+  FilteredPoint filtered(const TranslatedPoint &p);
+
   group::TranslationTable table_;
+  struct SiteData {
+    ExactSite exact;
+    double x, y, rounding;  // |rounded - exact| <= rounding per coordinate
+  };
+  std::vector<SiteData> sites_;
   const exact::Field &field_;
   std::vector<std::unique_ptr<group::ExactLorentz>> exact_matrices_;  // by translation id, lazily
   std::vector<std::array<double, 3>> side_normals_;  // O - g_k(O), rounded

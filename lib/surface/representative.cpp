@@ -26,15 +26,20 @@ TranslationId prepend(predicates::Kernel &kernel, Letter g, TranslationId h) {
 Representative representative(predicates::Kernel &kernel, double x, double y) {
   if (!std::isfinite(x) || !std::isfinite(y) || !exact::inside_unit_disk(x, y))
     throw std::domain_error("the point is not a finite point of the open unit disk");
+  return representative(kernel, predicates::TranslatedPoint{x, y, 0});
+}
+
+Representative representative(predicates::Kernel &kernel, const predicates::TranslatedPoint &point) {
   const group::Presentation &p = kernel.presentation();
   const int n = p.letter_count(), half = p.half_relator();
-  TranslationId h = 0;
+  TranslationId h = point.translation;
+  auto at = [&](TranslationId t) { return predicates::TranslatedPoint{point.x, point.y, t, point.site}; };
   std::vector<int> on;  // the sides whose line holds h(z)
   for (;;) {
     on.clear();
     int beyond = -1;
     for (int k = 0; k < n && beyond < 0; ++k) {
-      const int s = kernel.beyond_side({x, y, h}, k);
+      const int s = kernel.beyond_side(at(h), k);
       if (s > 0) beyond = k;
       if (s == 0) on.push_back(k);
     }

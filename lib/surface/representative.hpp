@@ -24,7 +24,11 @@ struct Representative {
   int side_index;  // the side (0..2g-1) when where == side, 0 otherwise
 };
 
-// Throws std::domain_error when (x, y) is not a finite point of the open disk.
+// The representative of the point p stands for (its translation is the
+// starting element: the result's translation includes it).
+Representative representative(predicates::Kernel &kernel, const predicates::TranslatedPoint &p);
+// For a double point; throws std::domain_error when (x, y) is not a finite
+// point of the open disk.
 Representative representative(predicates::Kernel &kernel, double x, double y);
 
 }  // namespace hdt::surface

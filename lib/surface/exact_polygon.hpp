@@ -1,0 +1,16 @@
+// The vertices and side midpoints of F_g as exact points of K_g, in
+// homogeneous disk coordinates z = (X + iY)/Z (Z > 0). With c = cos(pi/4g),
+// s = sin(pi/4g), sigma = sqrt(cos(pi/2g)):
+//   v_k = sigma e^{i (2k+1) pi/4g}              (Z = 1)
+//   m_k = (c - s) e^{i k pi/2g} / sigma          (Z = sigma), radius tanh(d/2)
+// since tanh(d/2)^2 = (A-1)/(A+1) = (c-s)^2 / cos(pi/2g).
+#pragma once
+
+#include "predicates/kernel.hpp"
+
+namespace hdt::surface {
+
+predicates::ExactSite exact_vertex(const exact::Field &field, int k);
+predicates::ExactSite exact_side_midpoint(const exact::Field &field, int k);
+
+}  // namespace hdt::surface
