@@ -208,4 +208,23 @@ int Kernel::beyond_side(const TranslatedPoint &p, int side) {
   return beyond_side_exact(p, side);
 }
 
+bool Kernel::same_point_exact(const TranslatedPoint &p, const TranslatedPoint &q) {
+  // The rows are positive multiples of (N, 1): equal points have
+  // proportional rows, P_i Q_3 = Q_i P_3.
+  const ExactRow a = exact_row(p), b = exact_row(q);
+  for (int i = 0; i < 3; ++i)
+    if (field_.sign(field_.sub(field_.mul(a.v[i], b.v[3]), field_.mul(b.v[i], a.v[3]))) != 0) return false;
+  return true;
+}
+
+bool Kernel::same_point(const TranslatedPoint &p, const TranslatedPoint &q) {
+  if (p.site == q.site && p.translation == q.translation && p.x == q.x && p.y == q.y) return true;
+  const FilteredPoint a = filtered(p), b = filtered(q);
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(a.n[i] - b.n[i]) > (a.error + b.error) * (1 + 4 * kUnit) + kUnit * std::abs(a.n[i] - b.n[i]))
+      return ++statistics_.filtered, false;
+  ++statistics_.exact;
+  return same_point_exact(p, q);
+}
+
 }  // namespace hdt::predicates

@@ -12,7 +12,8 @@
 //   in_circle(p, q, r, s) = sign det[N_p 1; N_q 1; N_r 1; N_s 1]
 //        for p, q, r counterclockwise: +1 when s is inside their circle;
 //   beyond_side(p, k)     = sign(<N, O> - <N, g_k O>)     (+1: beyond the line of
-//        side s_k, on the side of g_k(F_g); 0: on it; -1: on the side of F_g).
+//        side s_k, on the side of g_k(F_g); 0: on it; -1: on the side of F_g);
+//   same_point(p, q)      = (N_p == N_q).
 // The filter uses differences N_i - N_0, which keeps it sharp for small
 // triangles; the exact path uses the unnormalised rows (M_h p^, s^2m w), a
 // positive multiple of (N, 1) row by row (see group/exact_lorentz.hpp).
@@ -75,12 +76,15 @@ class Kernel {
   // triangulation). vertex[i] is the vertex id of point i.
   int in_circle_perturbed(const std::array<TranslatedPoint, 4> &points, const std::array<uint32_t, 4> &vertex);
   int beyond_side(const TranslatedPoint &p, int side);
+  // Whether p and q are the same point of the disk, exactly.
+  bool same_point(const TranslatedPoint &p, const TranslatedPoint &q);
 
   // The exact evaluations alone (for tests against the filter).
   int orientation_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int in_circle_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                       const TranslatedPoint &s);
   int beyond_side_exact(const TranslatedPoint &p, int side);
+  bool same_point_exact(const TranslatedPoint &p, const TranslatedPoint &q);
 
   // Registers an exact algebraic point; returns its site id and sets *x, *y
   // to its coordinates rounded to double. Throws std::domain_error unless

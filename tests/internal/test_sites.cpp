@@ -1,0 +1,178 @@
+// Exact algebraic sites: the points of Q0 (vertices, side midpoints) and
+// rotated images of rational points, their exact degeneracies and their
+// canonical representatives.
+#include <cmath>
+#include <vector>
+
+#include "exact/multiprecision.hpp"
+#include "predicates/kernel.hpp"
+#include "surface/exact_polygon.hpp"
+#include "surface/polygon.hpp"
+#include "surface/representative.hpp"
+
+// Last: check.h defines a macro named fail that breaks <iostream>.
+#include <check.h>
+
+using namespace hdt;
+using predicates::Kernel;
+using predicates::TranslatedPoint;
+
+namespace {
+
+struct Q0 {
+  std::vector<TranslatedPoint> vertices, midpoints;
+};
+
+Q0 polygon_sites(Kernel &kernel) {
+  Q0 q;
+  const int n = kernel.presentation().letter_count();
+  for (int k = 0; k < n; ++k) {
+    double x, y;
+    q.vertices.push_back(kernel.site_point(kernel.add_site(surface::exact_vertex(kernel.field(), k), &x, &y), 0));
+    q.midpoints.push_back(
+        kernel.site_point(kernel.add_site(surface::exact_side_midpoint(kernel.field(), k), &x, &y), 0));
+  }
+  return q;
+}
+
+// |a - b| in units of 2^-53 |b|, b = (x, y) a point: one coordinate may be
+// (near) zero, so the point's modulus sets the scale.
+double error_in_units(double a, double b, double modulus) { return std::abs(a - b) / (std::ldexp(1.0, -53) * modulus); }
+
+}  // namespace
+
+START_TEST(site_coordinates_match_multiprecision_formulas) {
+  using T = exact::mp_real<60>;
+  for (int g = 2; g <= 8; ++g) {
+    Kernel kernel{group::Presentation(g)};
+    const Q0 q = polygon_sites(kernel);
+    for (int k = 0; k < 4 * g; ++k) {
+      const auto v = surface::polygon_vertex<T>(g, k), m = surface::polygon_side_midpoint<T>(g, k);
+      const double rv = std::hypot(q.vertices[k].x, q.vertices[k].y), rm = std::hypot(q.midpoints[k].x, q.midpoints[k].y);
+      ck_assert_double_le(error_in_units(q.vertices[k].x, v.re.convert_to<double>(), rv), 4);
+      ck_assert_double_le(error_in_units(q.vertices[k].y, v.im.convert_to<double>(), rv), 4);
+      ck_assert_double_le(error_in_units(q.midpoints[k].x, m.re.convert_to<double>(), rm), 4);
+      ck_assert_double_le(error_in_units(q.midpoints[k].y, m.im.convert_to<double>(), rm), 4);
+    }
+  }
+}
+END_TEST
+
+START_TEST(polygon_points_are_exactly_cocircular_and_on_sides) {
+  for (int g = 2; g <= 5; ++g) {
+    Kernel kernel{group::Presentation(g)};
+    const Q0 q = polygon_sites(kernel);
+    const int n = 4 * g;
+    const TranslatedPoint origin{0, 0, 0};
+    for (int k = 0; k < n; ++k) {
+      const int a = k, b = (k + 1) % n, c = (k + 2) % n, d = (k + 3) % n;
+      // Four midpoints (and four vertices) on the circle about 0.
+      ck_assert_int_eq(kernel.in_circle(q.midpoints[a], q.midpoints[b], q.midpoints[c], q.midpoints[d]), 0);
+      ck_assert_int_eq(kernel.in_circle(q.vertices[a], q.vertices[b], q.vertices[c], q.vertices[d]), 0);
+      ck_assert_int_eq(kernel.in_circle(q.midpoints[a], q.midpoints[b], q.midpoints[c], origin), 1);
+      ck_assert_int_eq(kernel.orientation(q.midpoints[a], q.midpoints[b], q.midpoints[c]), 1);
+      // m_k on side s_k; v_k on s_k and s_{k+1}; strictly inside the others.
+      for (int s = 0; s < n; ++s) {
+        ck_assert_int_eq(kernel.beyond_side(q.midpoints[k], s), s == k ? 0 : -1);
+        ck_assert_int_eq(kernel.beyond_side(q.vertices[k], s), (s == k || s == b) ? 0 : -1);
+      }
+      // A translated copy of the circle stays exactly a circle.
+      const group::TranslationId t = group::TranslationId(1 + k % (kernel.table().neighbour_count() - 1));
+      auto moved = [&](const TranslatedPoint &p) { return TranslatedPoint{p.x, p.y, t, p.site}; };
+      ck_assert_int_eq(
+          kernel.in_circle(moved(q.midpoints[a]), moved(q.midpoints[b]), moved(q.midpoints[c]), moved(q.midpoints[d])),
+          0);
+    }
+  }
+}
+END_TEST
+
+START_TEST(paired_points_have_one_representative) {
+  for (int g = 2; g <= 8; ++g) {
+    Kernel kernel{group::Presentation(g)};
+    const Q0 q = polygon_sites(kernel);
+    const int n = 4 * g, half = 2 * g;
+    const surface::Representative rv0 = surface::representative(kernel, q.vertices[0]);
+    ck_assert_int_eq(rv0.where, surface::Representative::vertex);
+    ck_assert_int_eq(rv0.translation, 0);
+    for (int k = 0; k < n; ++k) {
+      // Every vertex goes to v_0 itself.
+      const surface::Representative rv = surface::representative(kernel, q.vertices[k]);
+      ck_assert_int_eq(rv.where, surface::Representative::vertex);
+      ck_assert(kernel.same_point({q.vertices[k].x, q.vertices[k].y, rv.translation, q.vertices[k].site}, q.vertices[0]));
+      // m_k and m_{k+2g} share the representative m_{k mod 2g}.
+      const surface::Representative rm = surface::representative(kernel, q.midpoints[k]);
+      ck_assert_int_eq(rm.where, surface::Representative::side);
+      ck_assert_int_eq(rm.side_index, k % half);
+      ck_assert(kernel.same_point({q.midpoints[k].x, q.midpoints[k].y, rm.translation, q.midpoints[k].site},
+                                  q.midpoints[k % half]));
+      ck_assert(!kernel.same_point(q.midpoints[k], q.midpoints[(k + 1) % n]));
+    }
+  }
+}
+END_TEST
+
+START_TEST(rotated_rational_points_are_cocircular) {
+  // z = (5/16, 1/8) rotated by j pi/2g: 8g exact points on one circle about 0.
+  for (int g : {2, 3, 4}) {
+    Kernel kernel{group::Presentation(g)};
+    const exact::Field &F = kernel.field();
+    const exact::CyclotomicField &K = F.cyclotomic();
+    std::vector<TranslatedPoint> ring;
+    for (int j = 0; j < 8 * g; ++j) {
+      const exact::Cyclotomic c = K.cos_2pi(j), s = K.sin_2pi(j);  // angle j pi/4g
+      const exact::Cyclotomic x = K.from_double(0.3125), y = K.from_double(0.125);
+      const predicates::ExactSite site{F.from_cyclotomic(K.sub(K.mul(x, c), K.mul(y, s))),
+                                       F.from_cyclotomic(K.add(K.mul(x, s), K.mul(y, c))),
+                                       F.from_cyclotomic(K.integer(1))};
+      double px, py;
+      ring.push_back(kernel.site_point(kernel.add_site(site, &px, &py), 0));
+    }
+    const int n = int(ring.size());
+    for (int j = 0; j < n; ++j)
+      ck_assert_int_eq(kernel.in_circle(ring[j], ring[(j + 1) % n], ring[(j + 3) % n], ring[(j + 6) % n]), 0);
+    // The rational point itself is on the ring too (j = 0 is exact).
+    ck_assert(kernel.same_point(ring[0], TranslatedPoint{0.3125, 0.125, 0}));
+    // One ulp outward is outside, one ulp inward inside.
+    const TranslatedPoint out{std::nextafter(0.3125, 1.0), 0.125, 0}, in{std::nextafter(0.3125, 0.0), 0.125, 0};
+    ck_assert_int_eq(kernel.in_circle(ring[1], ring[3], ring[5], out), -1);
+    ck_assert_int_eq(kernel.in_circle(ring[1], ring[3], ring[5], in), 1);
+  }
+}
+END_TEST
+
+START_TEST(sites_reject_points_outside_the_disk) {
+  Kernel kernel{group::Presentation(2)};
+  const exact::Field &F = kernel.field();
+  const exact::CyclotomicField &K = F.cyclotomic();
+  double x, y;
+  // sigma e^{i pi/8} / (1/2): outside.
+  predicates::ExactSite outside = surface::exact_vertex(F, 0);
+  outside.Z = F.from_cyclotomic(K.from_double(0.5));
+  ck_assert_int_eq(int(kernel.statistics().exact), 0);
+  bool thrown = false;
+  try {
+    kernel.add_site(outside, &x, &y);
+  } catch (const std::domain_error &) {
+    thrown = true;
+  }
+  ck_assert(thrown);
+}
+END_TEST
+
+int main(void) {
+  Suite *s = suite_create("sites");
+  TCase *tc = tcase_create("sites");
+  tcase_set_timeout(tc, 300);
+  tcase_add_test(tc, site_coordinates_match_multiprecision_formulas);
+  tcase_add_test(tc, polygon_points_are_exactly_cocircular_and_on_sides);
+  tcase_add_test(tc, paired_points_have_one_representative);
+  tcase_add_test(tc, rotated_rational_points_are_cocircular);
+  tcase_add_test(tc, sites_reject_points_outside_the_disk);
+  suite_add_tcase(s, tc);
+  SRunner *runner = srunner_create(s);
+  srunner_run_all(runner, CK_NORMAL);
+  const int failed = srunner_ntests_failed(runner);
+  srunner_free(runner);
+  return failed == 0 ? 0 : 1;
+}
