@@ -47,10 +47,13 @@ Letter least_first_letter_at(const Presentation &p, const Word &w) {
 }  // namespace
 
 std::size_t canonical_max_length(const Presentation &p) {
+  // bits_needed(m) = 64 + b m + 2 log2(m + 2) with b = word_precision_bits(p, 1) - 2 log2(3);
+  // bound the logarithm by that of the top and keep 2 letters of slack for
+  // the peeled words.
   const double top = exact::ladder_top_bits();
-  std::size_t m = 0;
-  while (bits_needed(p, m + 2) <= top) ++m;  // +1 letter of slack for the peeled word
-  return m;
+  const double per_letter = (word_precision_bits(p, 1) - 2.0 * std::log2(3.0));
+  const double m = std::floor((top - 64.0 - 2.0 * std::log2(top + 2.0)) / per_letter) - 2.0;
+  return m > 0 ? std::size_t(m) : 0;
 }
 
 bool shortlex_less(const Word &a, const Word &b) {
