@@ -157,8 +157,8 @@ int Kernel::orientation(const TranslatedPoint &p, const TranslatedPoint &q, cons
   return orientation_exact(p, q, r);
 }
 
-int Kernel::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
-                      const TranslatedPoint &s) {
+int Kernel::in_circle_filter(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                             const TranslatedPoint &s) {
   const FilteredPoint a = filtered(p);
   const FilteredPoint b = filtered(q);
   const FilteredPoint c = filtered(r);
@@ -168,14 +168,21 @@ int Kernel::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const 
   const Det3 d = det3_filtered(db.d, db.error, dc.d, dc.error, de.d, de.error);
   if (const int sg = sign_of(d.value, d.bound)) return ++statistics_.filtered, -sg;
   ++statistics_.exact;
-  return in_circle_exact(p, q, r, s);
+  return 2;
+}
+
+int Kernel::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                      const TranslatedPoint &s) {
+  const int sg = in_circle_filter(p, q, r, s);
+  return sg != 2 ? sg : in_circle_exact(p, q, r, s);
 }
 
 int Kernel::in_circle_perturbed(const std::array<TranslatedPoint, 4> &pt, const std::array<uint32_t, 4> &vertex) {
-  if (const int s = in_circle(pt[0], pt[1], pt[2], pt[3])) return s;
+  if (const int s = in_circle_filter(pt[0], pt[1], pt[2], pt[3]); s != 2) return s;
+  const std::array<ExactRow, 4> rows{exact_row(pt[0]), exact_row(pt[1]), exact_row(pt[2]), exact_row(pt[3])};
+  if (const int s = field_.sign(det4(rows))) return s;
   // Cocircular: the coefficient of eps_v is sum over v's rows r of
   // v_r3 * cofactor(r, 3) of the exact matrix.
-  const std::array<ExactRow, 4> rows{exact_row(pt[0]), exact_row(pt[1]), exact_row(pt[2]), exact_row(pt[3])};
   std::array<uint32_t, 4> order = vertex;
   std::sort(order.begin(), order.end(), std::greater<uint32_t>());
   for (int k = 0; k < 4; ++k) {

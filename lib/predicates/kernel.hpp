@@ -101,6 +101,9 @@ class Kernel {
     std::array<exact::FieldElement, 4> v;
   };
   ExactRow exact_row(const TranslatedPoint &p);
+  // The filtered in-circle sign, or 2 when the filter cannot decide.
+  int in_circle_filter(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                       const TranslatedPoint &s);
   const group::ExactLorentz &exact_matrix(TranslationId id);
   exact::FieldElement det3(const std::array<const std::array<exact::FieldElement, 4> *, 3> &rows) const;
   exact::FieldElement det4(const std::array<ExactRow, 4> &rows) const;
