@@ -57,7 +57,9 @@ int main(int argc, char **argv) {
     auto report = [&](const char *name, double filtered, double exact) {
       std::printf("%-6d %-12s %14.0f %14.0f %10.0f\n", g, name, filtered, exact, exact / filtered);
     };
-    // Warm the caches (double and exact matrices of the ids in use).
+    // Warm the caches: the rounded matrices of every id in use (computed on
+    // first use, in multiprecision) and the exact ones of the first points.
+    for (std::size_t i = 0; i < calls; ++i) kernel.beyond_side(pts[i], 0);
     for (std::size_t i = 0; i < exact_calls; ++i) kernel.orientation_exact(pts[i], pts[i + 1], pts[i + 2]);
     kernel.reset_statistics();
     report("orientation",
