@@ -1,7 +1,6 @@
 #include "exact/cyclotomic.hpp"
 
 #include <cmath>
-#include <map>
 #include <stdexcept>
 
 namespace hdt::exact {
@@ -25,17 +24,32 @@ Poly divide_exact(Poly a, const Poly &b) {
   return q;
 }
 
-// Phi_n = (x^n - 1) / prod_{d | n, d < n} Phi_d.
-Poly cyclotomic_polynomial(int n, std::map<int, Poly> &memo) {
-  auto it = memo.find(n);
-  if (it != memo.end()) return it->second;
-  Poly p(n + 1, Integer(0));
-  p[0] = -1;
-  p[n] = 1;
-  for (int d = 1; d < n; ++d)
-    if (n % d == 0) p = divide_exact(p, cyclotomic_polynomial(d, memo));
-  memo[n] = p;
-  return p;
+// Phi_n from the squarefree part: Phi_1 = x - 1; Phi_{mp}(x) = Phi_m(x^p) /
+// Phi_m(x) for a prime p not dividing m; Phi_n(x) = Phi_rad(n)(x^{n/rad(n)}).
+// Only exact divisions of polynomials of degree phi(rad(n)) p.
+Poly cyclotomic_polynomial(int n) {
+  std::vector<int> primes;
+  int rest = n, radical = 1;
+  for (int p = 2; p * p <= rest; ++p)
+    if (rest % p == 0) {
+      primes.push_back(p);
+      radical *= p;
+      while (rest % p == 0) rest /= p;
+    }
+  if (rest > 1) {
+    primes.push_back(rest);
+    radical *= rest;
+  }
+  Poly phi{Integer(-1), Integer(1)};  // Phi_1
+  for (int p : primes) {
+    Poly spread((phi.size() - 1) * p + 1, Integer(0));  // Phi_m(x^p)
+    for (std::size_t i = 0; i < phi.size(); ++i) spread[i * p] = phi[i];
+    phi = divide_exact(spread, phi);
+  }
+  const int stretch = n / radical;
+  Poly result((phi.size() - 1) * stretch + 1, Integer(0));
+  for (std::size_t i = 0; i < phi.size(); ++i) result[i * stretch] = phi[i];
+  return result;
 }
 
 }  // namespace
@@ -44,8 +58,7 @@ bool Cyclotomic::is_zero() const { return coefficients_.empty(); }
 
 CyclotomicField::CyclotomicField(int n) : n_(n) {
   if (n < 1) throw std::invalid_argument("cyclotomic field order must be positive");
-  std::map<int, Poly> memo;
-  modulus_ = cyclotomic_polynomial(n, memo);
+  modulus_ = cyclotomic_polynomial(n);
   degree_ = int(modulus_.size()) - 1;
   negacyclic_ = (n & (n - 1)) == 0 && n >= 2;
 }

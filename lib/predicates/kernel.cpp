@@ -198,7 +198,9 @@ int Kernel::in_circle_perturbed(const std::array<TranslatedPoint, 4> &pt, const 
     }
     if (const int s = field_.sign(coefficient)) return s;
   }
-  throw std::logic_error("in_circle_perturbed: every perturbation coefficient vanishes (repeated vertices)");
+  throw std::logic_error(
+      "in_circle_perturbed: every perturbation coefficient vanishes (points on one geodesic, or each vertex "
+      "repeated)");
 }
 
 int Kernel::beyond_side(const TranslatedPoint &p, int side) {

@@ -71,9 +71,12 @@ class Kernel {
   int orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                 const TranslatedPoint &s);
-  // in_circle with ties broken by the symbolic perturbation; never 0 for four
-  // points of which one vertex occurs once (always so in a simplicial
-  // triangulation). vertex[i] is the vertex id of point i.
+  // in_circle with ties broken by the symbolic perturbation; never 0 when
+  // p, q, r are not on one geodesic (a triangle: always so for a face) and
+  // one vertex occurs once among the four (always so in a simplicial
+  // triangulation). Throws std::logic_error when no perturbation coefficient
+  // decides (four points on one geodesic). vertex[i] is the vertex id of
+  // point i.
   int in_circle_perturbed(const std::array<TranslatedPoint, 4> &points, const std::array<uint32_t, 4> &vertex);
   int beyond_side(const TranslatedPoint &p, int side);
   // Whether p and q are the same point of the disk, exactly.
