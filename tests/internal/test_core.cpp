@@ -16,6 +16,8 @@
 // Last: check.h defines a macro named fail that breaks <iostream>.
 #include <check.h>
 
+#include "run_suite.hpp"
+
 using namespace hdt;
 using group::Letter;
 using group::Presentation;
@@ -196,21 +198,14 @@ START_TEST(unit_disk_test_is_exact) {
 END_TEST
 
 int main(void) {
-  Suite *s = suite_create("core");
-  TCase *tc = tcase_create("core");
-  tcase_set_timeout(tc, 300);
-  tcase_add_test(tc, relation_is_identity_in_mpfr);
-  tcase_add_test(tc, relation_in_plain_double_within_its_error_bound);
-  tcase_add_test(tc, lorentz_matches_moebius);
-  tcase_add_test(tc, dehn_output_is_reduced_and_equal);
-  tcase_add_test(tc, dehn_is_not_geodesic_but_canonical_is);
-  tcase_add_test(tc, neighbour_ids_are_fixed_and_tables_agree);
-  tcase_add_test(tc, systole_formula_in_mpfr);
-  tcase_add_test(tc, unit_disk_test_is_exact);
-  suite_add_tcase(s, tc);
-  SRunner *runner = srunner_create(s);
-  srunner_run_all(runner, CK_NORMAL);
-  const int failed = srunner_ntests_failed(runner);
-  srunner_free(runner);
-  return failed == 0 ? 0 : 1;
+  return run_suite("core", 300, [](TCase *tc) {
+    tcase_add_test(tc, relation_is_identity_in_mpfr);
+    tcase_add_test(tc, relation_in_plain_double_within_its_error_bound);
+    tcase_add_test(tc, lorentz_matches_moebius);
+    tcase_add_test(tc, dehn_output_is_reduced_and_equal);
+    tcase_add_test(tc, dehn_is_not_geodesic_but_canonical_is);
+    tcase_add_test(tc, neighbour_ids_are_fixed_and_tables_agree);
+    tcase_add_test(tc, systole_formula_in_mpfr);
+    tcase_add_test(tc, unit_disk_test_is_exact);
+  });
 }

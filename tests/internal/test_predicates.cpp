@@ -44,6 +44,8 @@
 // Last: check.h defines a macro named fail that breaks <iostream>.
 #include <check.h>
 
+#include "run_suite.hpp"
+
 using namespace hdt;
 using group::Complex;
 using group::Letter;
@@ -884,20 +886,13 @@ START_TEST(filter_decides_random_inputs) {
 END_TEST
 
 int main(void) {
-  Suite *s = suite_create("predicates");
-  TCase *tc = tcase_create("predicates");
-  tcase_set_timeout(tc, 600);
-  tcase_add_test(tc, sign_conventions);
-  tcase_add_loop_test(tc, random_configurations_agree_with_reference, 0, 3);
-  tcase_add_loop_test(tc, near_degenerate_configurations_agree_with_reference, 0, 3);
-  tcase_add_loop_test(tc, exact_zeros, 0, 3);
-  tcase_add_loop_test(tc, in_circle_perturbed_policy, 0, 3);
-  tcase_add_test(tc, representative_is_canonical);
-  tcase_add_test(tc, filter_decides_random_inputs);
-  suite_add_tcase(s, tc);
-  SRunner *runner = srunner_create(s);
-  srunner_run_all(runner, CK_NORMAL);
-  const int failed = srunner_ntests_failed(runner);
-  srunner_free(runner);
-  return failed == 0 ? 0 : 1;
+  return run_suite("predicates", 600, [](TCase *tc) {
+    tcase_add_test(tc, sign_conventions);
+    tcase_add_loop_test(tc, random_configurations_agree_with_reference, 0, 3);
+    tcase_add_loop_test(tc, near_degenerate_configurations_agree_with_reference, 0, 3);
+    tcase_add_loop_test(tc, exact_zeros, 0, 3);
+    tcase_add_loop_test(tc, in_circle_perturbed_policy, 0, 3);
+    tcase_add_test(tc, representative_is_canonical);
+    tcase_add_test(tc, filter_decides_random_inputs);
+  });
 }

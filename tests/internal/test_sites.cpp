@@ -13,6 +13,8 @@
 // Last: check.h defines a macro named fail that breaks <iostream>.
 #include <check.h>
 
+#include "run_suite.hpp"
+
 using namespace hdt;
 using predicates::Kernel;
 using predicates::TranslatedPoint;
@@ -161,18 +163,11 @@ START_TEST(sites_reject_points_outside_the_disk) {
 END_TEST
 
 int main(void) {
-  Suite *s = suite_create("sites");
-  TCase *tc = tcase_create("sites");
-  tcase_set_timeout(tc, 300);
-  tcase_add_test(tc, site_coordinates_match_multiprecision_formulas);
-  tcase_add_test(tc, polygon_points_are_exactly_cocircular_and_on_sides);
-  tcase_add_test(tc, paired_points_have_one_representative);
-  tcase_add_test(tc, rotated_rational_points_are_cocircular);
-  tcase_add_test(tc, sites_reject_points_outside_the_disk);
-  suite_add_tcase(s, tc);
-  SRunner *runner = srunner_create(s);
-  srunner_run_all(runner, CK_NORMAL);
-  const int failed = srunner_ntests_failed(runner);
-  srunner_free(runner);
-  return failed == 0 ? 0 : 1;
+  return run_suite("sites", 300, [](TCase *tc) {
+    tcase_add_test(tc, site_coordinates_match_multiprecision_formulas);
+    tcase_add_test(tc, polygon_points_are_exactly_cocircular_and_on_sides);
+    tcase_add_test(tc, paired_points_have_one_representative);
+    tcase_add_test(tc, rotated_rational_points_are_cocircular);
+    tcase_add_test(tc, sites_reject_points_outside_the_disk);
+  });
 }
