@@ -86,6 +86,17 @@ HDT_API hdt_status hdt_polygon_vertex(int genus, int k, double *x, double *y) HD
    Side s_k joins v_{k-1} and v_k and is paired with s_{k+2g} by g_k. */
 HDT_API hdt_status hdt_polygon_side_midpoint(int genus, int k, double *x, double *y) HDT_NOEXCEPT;
 
+/* The canonical representative of the disk point (x, y): the element h of
+   Gamma_g with h(x + iy) in the half-open fundamental domain, which holds
+   the interior of F_g, the open sides s_0 .. s_{2g-1} and the one vertex
+   v_0 (decided with exact predicates; a point on s_{k+2g} goes to s_k, every
+   vertex to v_0). (*rx, *ry) receives h(x + iy) rounded to double (may be
+   NULL); the canonical word of h uses the two-call pattern of
+   hdt_word_reduce (word may be NULL when capacity is 0). HDT_EDOMAIN when
+   (x, y) is not a finite point of the open unit disk. */
+HDT_API hdt_status hdt_point_representative(int genus, double x, double y, double *rx, double *ry,
+                                            int32_t *word, size_t capacity, size_t *length) HDT_NOEXCEPT;
+
 /* ---- Words in the group Gamma_g (no handle) ----
    A word is an array of int32_t letters, each in 0..4g-1 (else HDT_EINVAL).
    length may be 0 (the identity; word may then be NULL). */

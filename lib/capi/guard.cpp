@@ -1,6 +1,7 @@
 #include "capi/guard.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 
 #include "exact/unit_disk.hpp"
@@ -36,6 +37,17 @@ void check_genus(int genus) {
   if (genus > HDT_GENUS_MAX)
     throw ApiError(HDT_ENOTSUP,
                    "genus " + std::to_string(genus) + " exceeds HDT_GENUS_MAX = " + std::to_string(HDT_GENUS_MAX));
+}
+
+hdt_status copy_word(const group::Word &w, int32_t *out, size_t capacity, size_t *out_length) {
+  if (capacity > 0 && !out) throw ApiError(HDT_EINVAL, "out is NULL but capacity is " + std::to_string(capacity));
+  *out_length = w.size();
+  if (capacity == 0) return HDT_OK;
+  if (capacity < w.size())
+    throw ApiError(HDT_EBUFS, "the word has " + std::to_string(w.size()) + " letters, capacity is " +
+                                  std::to_string(capacity));
+  std::copy(w.begin(), w.end(), out);
+  return HDT_OK;
 }
 
 void check_disk_point(double x, double y) {

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "group/presentation.hpp"
 #include "hdt.h"
 
 namespace hdt::capi {
@@ -52,6 +53,10 @@ hdt_status guarded(const char *function, Body &&body) noexcept {
 
 // Checks shared by the functions that take a genus; throws ApiError.
 void check_genus(int genus);
+// Two-call pattern for a word output: capacity 0 asks for the length
+// (out may then be NULL); HDT_EBUFS, with *out_length set, when it is too
+// small. Throws ApiError.
+hdt_status copy_word(const group::Word &w, int32_t *out, size_t capacity, size_t *out_length);
 // A finite point of the open unit disk (decided exactly); else HDT_EDOMAIN.
 void check_disk_point(double x, double y);
 

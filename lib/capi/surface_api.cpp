@@ -2,7 +2,10 @@
 #include "capi/guard.hpp"
 #include "group/presentation.hpp"
 #include "hdt.h"
+#include "group/word_matrix.hpp"
+#include "predicates/kernel.hpp"
 #include "surface/polygon.hpp"
+#include "surface/representative.hpp"
 #include "surface/systole.hpp"
 
 using hdt::capi::ApiError;
@@ -37,6 +40,27 @@ HDT_API hdt_status hdt_polygon_vertex(int genus, int k, double *x, double *y) HD
 HDT_API hdt_status hdt_polygon_side_midpoint(int genus, int k, double *x, double *y) HDT_NOEXCEPT {
   return polygon_point("hdt_polygon_side_midpoint", genus, k, x, y,
                        [](const hdt::group::Presentation &p, int i) { return hdt::surface::side_midpoint(p, i); });
+}
+
+HDT_API hdt_status hdt_point_representative(int genus, double x, double y, double *rx, double *ry, int32_t *word,
+                                            size_t capacity, size_t *length) HDT_NOEXCEPT {
+  return guarded("hdt_point_representative", [&] {
+    hdt::capi::check_genus(genus);
+    if (!length) throw ApiError(HDT_EINVAL, "length must not be NULL");
+    hdt::capi::check_disk_point(x, y);
+    const hdt::group::Presentation p(genus);
+    hdt::predicates::Kernel kernel(p);
+    const hdt::surface::Representative r = hdt::surface::representative(kernel, x, y);
+    const hdt::group::Word &w = kernel.table().word(r.translation);
+    const hdt_status status = hdt::capi::copy_word(w, word, capacity, length);
+    if (rx || ry) {
+      const auto image = r.translation == 0 ? hdt::group::Complex<double>{x, y}
+                                            : hdt::group::accurate_image(p, w, {x, y});
+      if (rx) *rx = image.re;
+      if (ry) *ry = image.im;
+    }
+    return status;
+  });
 }
 
 }  // extern "C"

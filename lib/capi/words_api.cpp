@@ -27,18 +27,6 @@ Presentation checked_word(int genus, const int32_t *word, size_t length) {
   return p;
 }
 
-// Two-call pattern: capacity 0 asks for the length; copy when it fits.
-hdt_status copy_word(const Word &w, int32_t *out, size_t capacity, size_t *out_length) {
-  if (capacity > 0 && !out) throw ApiError(HDT_EINVAL, "out is NULL but capacity is " + std::to_string(capacity));
-  *out_length = w.size();
-  if (capacity == 0) return HDT_OK;
-  if (capacity < w.size())
-    throw ApiError(HDT_EBUFS, "the word has " + std::to_string(w.size()) + " letters, capacity is " +
-                                  std::to_string(capacity));
-  std::copy(w.begin(), w.end(), out);
-  return HDT_OK;
-}
-
 }  // namespace
 
 extern "C" {
@@ -48,7 +36,7 @@ HDT_API hdt_status hdt_word_reduce(int genus, const int32_t *word, size_t length
   return guarded("hdt_word_reduce", [&] {
     const Presentation p = checked_word(genus, word, length);
     if (!out_length) throw ApiError(HDT_EINVAL, "out_length must not be NULL");
-    return copy_word(hdt::group::canonical_word(p, word, length), out, capacity, out_length);
+    return hdt::capi::copy_word(hdt::group::canonical_word(p, word, length), out, capacity, out_length);
   });
 }
 
@@ -103,7 +91,7 @@ HDT_API hdt_status hdt_neighbour_word(int genus, size_t id, int32_t *out, size_t
   return guarded("hdt_neighbour_word", [&] {
     hdt::capi::check_genus(genus);
     if (!out_length) throw ApiError(HDT_EINVAL, "out_length must not be NULL");
-    return copy_word(hdt::group::neighbour_word(Presentation(genus), id), out, capacity, out_length);
+    return hdt::capi::copy_word(hdt::group::neighbour_word(Presentation(genus), id), out, capacity, out_length);
   });
 }
 

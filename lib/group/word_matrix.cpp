@@ -43,4 +43,16 @@ Lorentz<double> accurate_lorentz(const Presentation &p, const Letter *w, std::si
   });
 }
 
+Complex<double> accurate_image(const Presentation &p, const Word &w, Complex<double> z) {
+  // Mapping a point near the circle inwards cancels about log2(1/(1 - |z|))
+  // bits in the denominator: add them, with a margin.
+  const double gap = 1.0 - std::hypot(z.re, z.im);
+  const double extra = 64.0 + (gap > 0 ? 2.0 * std::log2(1.0 / gap) : 2200.0);
+  return exact::with_precision(bits_for(p, w.size()) + extra, [&](auto zero) {
+    using T = decltype(zero);
+    const Complex<T> image = shared_generators<T>(p).moebius(w).apply(Complex<T>{T(z.re), T(z.im)});
+    return Complex<double>{to_double(image.re), to_double(image.im)};
+  });
+}
+
 }  // namespace hdt::group

@@ -27,4 +27,8 @@ inline Lorentz<double> accurate_lorentz(const Presentation &p, const Word &w) {
   return accurate_lorentz(p, w.data(), w.size());
 }
 
+// The image of the disk point z under the word, computed in multiprecision
+// (enough for the word and for z's distance to the unit circle) and rounded.
+Complex<double> accurate_image(const Presentation &p, const Word &w, Complex<double> z);
+
 }  // namespace hdt::group

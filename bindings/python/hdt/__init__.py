@@ -34,7 +34,7 @@ from .group import (
     word_matrix,
 )
 from .library import abi_version, version
-from .surface import polygon_side_midpoint, polygon_vertex, systole
+from .surface import point_representative, polygon_side_midpoint, polygon_vertex, systole
 
 #: The version of these bindings (the library's is version()).
 __version__ = "0.1.0"
@@ -53,6 +53,7 @@ __all__ = [
     "neighbour_count",
     "neighbour_word",
     "neighbour_words",
+    "point_representative",
     "polygon_side_midpoint",
     "polygon_vertex",
     "reduce_word",

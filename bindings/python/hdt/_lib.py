@@ -45,6 +45,7 @@ PROTOTYPES = {
     "hdt_systole": (_double, (_int,)),
     "hdt_polygon_vertex": (_status, (_int, _int, _double_p, _double_p)),
     "hdt_polygon_side_midpoint": (_status, (_int, _int, _double_p, _double_p)),
+    "hdt_point_representative": (_status, (_int, _double, _double, _double_p, _double_p, _word, _size, _size_p)),
     "hdt_word_reduce": (_status, (_int, _word, _size, _word, _size, _size_p)),
     "hdt_word_matrix": (_status, (_int, _word, _size, _double_p)),
     "hdt_word_lorentz": (_status, (_int, _word, _size, _double_p)),

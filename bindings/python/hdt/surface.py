@@ -4,9 +4,10 @@ F_g is the regular hyperbolic 4g-gon centred at 0 in the Poincare disk, with
 interior angles pi/(2g). Indices are taken mod 4g.
 """
 
+import ctypes
 import math
 
-from ._convert import c_genus, c_index, call_point
+from ._convert import c_coordinate, c_genus, c_index, call_point, call_word
 from ._errors import InvalidArgument
 from ._lib import lib
 
@@ -43,3 +44,19 @@ def polygon_side_midpoint(genus, k):
     """
     genus = c_genus(genus)
     return call_point(lib.hdt_polygon_side_midpoint, genus, c_index(k, genus))
+
+
+def point_representative(genus, x, y):
+    """The canonical representative of the disk point (x, y).
+
+    Returns ((rx, ry), word): the element h of Gamma_g, as its canonical word,
+    with h(x + iy) in the half-open fundamental domain (the interior of F_g,
+    the open sides s_0 .. s_{2g-1} and the vertex v_0), and h(x + iy) rounded
+    to floats. A point inside F_g gives ((x, y), ()). Raises
+    :class:`hdt.OutOfDomain` (a ValueError) when (x, y) is not a finite point
+    of the open unit disk.
+    """
+    rx, ry = ctypes.c_double(), ctypes.c_double()
+    word = call_word(lib.hdt_point_representative, c_genus(genus), c_coordinate(x, "x"), c_coordinate(y, "y"),
+                     ctypes.byref(rx), ctypes.byref(ry), capacity=32)
+    return (rx.value, ry.value), word

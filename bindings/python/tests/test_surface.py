@@ -70,3 +70,26 @@ def test_polygon_functions_report_the_library_errors(function):
         function(2.0, 0)
     with pytest.raises(TypeError, match="k must be an int, not str"):
         function(2, "0")
+
+
+def test_point_inside_f_is_its_own_representative():
+    assert hdt.point_representative(2, 0.25, -0.125) == ((0.25, -0.125), ())
+
+
+@pytest.mark.parametrize("genus", GENERA)
+def test_representative_is_the_image_under_its_word(genus):
+    x, y = 0.97, 0.1
+    (rx, ry), word = hdt.point_representative(genus, x, y)
+    assert word and hdt.reduce_word(genus, word) == word
+    ix, iy = hdt.word_apply(genus, word, x, y)
+    assert math.hypot(ix - rx, iy - ry) < 1e-9
+    # The image of the point under any element has the same representative.
+    jx, jy = hdt.word_apply(genus, [1, 2], x, y)
+    (sx, sy), _ = hdt.point_representative(genus, jx, jy)
+    assert math.hypot(sx - rx, sy - ry) < 1e-9
+
+
+def test_representative_rejects_points_outside_the_disk():
+    with pytest.raises(hdt.OutOfDomain, match="hdt_point_representative") as caught:
+        hdt.point_representative(2, 0.6, 0.8)
+    assert isinstance(caught.value, ValueError)
