@@ -114,7 +114,7 @@ int main(int argc, char **argv) {
   for (int j = 0; j < 4 * genus; ++j) relator[j] = (int32_t)((j * (2 * genus + 1)) % (4 * genus));
   size_t length = 0;
   if (!check(hdt_word_reduce(genus, relator, (size_t)(4 * genus), NULL, 0, &length), "hdt_word_reduce")) return 1;
-  printf("  relator (%d letters)     : reduces to %zu letters\n", 4 * genus, length);
+  printf("  relator (%d letters)    : reduces to %zu letters\n", 4 * genus, length);
 
   if (!write_picture(path, genus, neighbours)) {
     fprintf(stderr, "could not write %s\n", path);

@@ -49,12 +49,4 @@ ExactLorentz exact_lorentz(const exact::Field &field, const Word &w) {
   return r;
 }
 
-Cyclotomic exact_scale(const exact::Field &field, int letters) {
-  const exact::CyclotomicField &K = field.cyclotomic();
-  const Cyclotomic s = K.sin_2pi(1), s2 = K.mul(s, s);
-  Cyclotomic r = K.integer(1);
-  for (int i = 0; i < letters; ++i) r = K.mul(r, s2);
-  return r;
-}
-
 }  // namespace hdt::group

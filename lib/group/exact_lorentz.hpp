@@ -7,7 +7,7 @@
 //    [2 c sigma sin(theta), sigma^2 sin 2t,       c^2 - sigma^2 cos 2t    ]].
 // A word of m letters has the Lorentz matrix M_w / sin(pi/4g)^{2m}: the
 // positive scale changes no sign, so predicates work with M_w and carry the
-// scale only where rows of different words are compared (scale()).
+// scale only where rows of different words are compared (Kernel::scale).
 #pragma once
 
 #include <array>
@@ -26,8 +26,5 @@ ExactLorentz exact_identity(const exact::Field &field);
 ExactLorentz exact_generator(const exact::Field &field, Letter k);
 ExactLorentz exact_product(const exact::Field &field, const ExactLorentz &a, const ExactLorentz &b);
 ExactLorentz exact_lorentz(const exact::Field &field, const Word &w);
-
-// sin(pi/4g)^(2 letters), the positive factor removed from an ExactLorentz.
-exact::Cyclotomic exact_scale(const exact::Field &field, int letters);
 
 }  // namespace hdt::group

@@ -67,8 +67,16 @@ Kernel::ExactRow Kernel::exact_row(const TranslatedPoint &p) {
     for (int j = 0; j < 3; ++j) sum = field_.add(sum, field_.mul(M.m[i][j], hat[j]));
     row.v[i] = sum;
   }
-  row.v[3] = field_.mul(field_.sub(zz, r2), group::exact_scale(field_, M.letters));
+  row.v[3] = field_.mul(field_.sub(zz, r2), scale(M.letters));
   return row;
+}
+
+const Cyclotomic &Kernel::scale(int letters) {
+  // sin(pi/4g)^(2 letters), by repeated multiplication, kept for reuse.
+  const exact::CyclotomicField &K = field_.cyclotomic();
+  if (scale_powers_.empty()) scale_powers_.push_back(K.integer(1));
+  while (int(scale_powers_.size()) <= letters) scale_powers_.push_back(K.mul(scale_powers_.back(), sin2_));
+  return scale_powers_[letters];
 }
 
 int32_t Kernel::add_site(const ExactSite &site, double *x, double *y) {

@@ -125,7 +125,11 @@ class Kernel {
   std::vector<std::unique_ptr<group::ExactLorentz>> exact_matrices_;  // by translation id, lazily
   std::vector<std::array<double, 3>> side_normals_;  // O - g_k(O), rounded
   std::vector<std::unique_ptr<group::ExactLorentz>> exact_generators_;
+  // sin(pi/4g)^(2 letters): the positive factor of an exact matrix's rows.
+  const exact::Cyclotomic &scale(int letters);
+
   exact::Cyclotomic sin2_;  // sin(pi/4g)^2
+  std::vector<exact::Cyclotomic> scale_powers_;
   FilterStatistics statistics_;
 };
 

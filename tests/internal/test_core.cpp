@@ -3,10 +3,12 @@
 #include <cmath>
 #include <random>
 
+#include "exact/field.hpp"
 #include "exact/multiprecision.hpp"
 #include "exact/unit_disk.hpp"
 #include "group/canonical.hpp"
 #include "group/dehn.hpp"
+#include "group/exact_lorentz.hpp"
 #include "group/generators.hpp"
 #include "group/neighbours.hpp"
 #include "group/translation_table.hpp"
@@ -64,6 +66,39 @@ START_TEST(relation_is_identity_in_mpfr) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) worst = std::max(worst, T(abs(L.m[i][j] - T(i == j ? 1 : 0))));
     ck_assert_msg(worst < T("1e-55"), "genus %d: Lorentz relator off by %g", g, worst.convert_to<double>());
+  }
+}
+END_TEST
+
+START_TEST(relation_is_exact_in_the_field) {
+  // The exact Lorentz matrices M_k of the generators (each sin(pi/4g)^2 times
+  // the Lorentz matrix) multiply along the relator to sin(pi/4g)^(8g) I, with
+  // every entry compared exactly (zero test in K_g, no rounding).
+  for (int g = 2; g <= 8; ++g) {
+    const Presentation p(g);
+    const exact::Field &F = exact::field_of_genus(g);
+    const exact::CyclotomicField &K = F.cyclotomic();
+    const group::ExactLorentz L = group::exact_lorentz(F, p.relator());
+    ck_assert_int_eq(L.letters, 4 * g);
+    const exact::Cyclotomic s = K.sin_2pi(1), s2 = K.mul(s, s);
+    exact::Cyclotomic scale = K.integer(1);
+    for (int i = 0; i < L.letters; ++i) scale = K.mul(scale, s2);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const exact::FieldElement expected = i == j ? F.from_cyclotomic(scale) : F.zero();
+        ck_assert_msg(F.sign(F.sub(L.m[i][j], expected)) == 0, "genus %d: entry (%d, %d) is not exact", g, i, j);
+      }
+    // A proper prefix is not a multiple of the identity.
+    const Word relator = p.relator();
+    const group::ExactLorentz half = group::exact_lorentz(F, Word(relator.begin(), relator.begin() + 2 * g));
+    ck_assert(F.sign(half.m[0][1]) != 0 || F.sign(half.m[0][2]) != 0 || F.sign(half.m[1][2]) != 0);
+    // The exact generator agrees with the double one after the scale.
+    const group::ExactLorentz G = group::exact_generator(F, 3 % p.letter_count());
+    const auto D = group::Lorentz<double>::from_moebius(group::generator<double>(p, 3 % p.letter_count()));
+    const double s2d = F.approximate(F.from_cyclotomic(s2));
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        ck_assert_double_eq_tol(F.approximate(G.m[i][j]) / s2d, D.m[i][j], 1e-12 * D.m[0][0]);
   }
 }
 END_TEST
@@ -200,6 +235,7 @@ END_TEST
 int main(void) {
   return run_suite("core", 300, [](TCase *tc) {
     tcase_add_test(tc, relation_is_identity_in_mpfr);
+    tcase_add_test(tc, relation_is_exact_in_the_field);
     tcase_add_test(tc, relation_in_plain_double_within_its_error_bound);
     tcase_add_test(tc, lorentz_matches_moebius);
     tcase_add_test(tc, dehn_output_is_reduced_and_equal);
