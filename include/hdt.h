@@ -128,7 +128,8 @@ HDT_API hdt_status hdt_word_matrix(int genus, const int32_t *word, size_t length
    z = x + iy is the hyperboloid point ((1 + |z|^2), 2x, 2y) / (1 - |z|^2). */
 HDT_API hdt_status hdt_word_lorentz(int genus, const int32_t *word, size_t length, double m[9]) HDT_NOEXCEPT;
 
-/* The image (*ox, *oy) of the disk point (x, y) under the word's element.
+/* The image (*ox, *oy) of the disk point (x, y) under the word's element,
+   computed in multiprecision and rounded (accurate near the unit circle too).
    HDT_EDOMAIN when (x, y) is not a finite point of the open unit disk. */
 HDT_API hdt_status hdt_word_apply(int genus, const int32_t *word, size_t length,
                                   double x, double y, double *ox, double *oy) HDT_NOEXCEPT;

@@ -70,7 +70,7 @@ HDT_API hdt_status hdt_word_apply(int genus, const int32_t *word, size_t length,
     const Presentation p = checked_word(genus, word, length);
     if (!ox || !oy) throw ApiError(HDT_EINVAL, "ox and oy must not be NULL");
     hdt::capi::check_disk_point(x, y);
-    const auto z = hdt::group::accurate_moebius(p, word, length).apply({x, y});
+    const auto z = hdt::group::accurate_image(p, Word(word, word + length), {x, y});
     *ox = z.re;
     *oy = z.im;
     return HDT_OK;
