@@ -9,16 +9,13 @@ namespace hdt::surface {
 
 using group::Letter;
 using group::TranslationId;
-using group::Word;
 
 namespace {
 
-// The id of g * h, where g is a single letter.
+// The id of g * h, where g is a single letter (ids 1..4g of N are the
+// letters 0..4g-1, in shortlex order); products are cached by the table.
 TranslationId prepend(predicates::Kernel &kernel, Letter g, TranslationId h) {
-  Word w{g};
-  const Word &rest = kernel.table().word(h);
-  w.insert(w.end(), rest.begin(), rest.end());
-  return kernel.table().intern(w);
+  return kernel.table().compose(TranslationId(1 + g), h);
 }
 
 }  // namespace
