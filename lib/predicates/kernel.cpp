@@ -244,4 +244,53 @@ bool Kernel::same_point(const TranslatedPoint &p, const TranslatedPoint &q) {
   return same_point_exact(p, q);
 }
 
+int Kernel::large_circumdisk_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
+  // The plane c . (X, 1) = 0 through the three rows: c_j = (-1)^j times the
+  // minor without column j. Rows are positive multiples of (N, 1), so c is a
+  // positive multiple of the plane of the normalised points.
+  const std::array<ExactRow, 3> rows{exact_row(p), exact_row(q), exact_row(r)};
+  std::array<FieldElement, 4> c;
+  for (int skip = 0; skip < 4; ++skip) {
+    std::array<std::array<FieldElement, 4>, 3> minor;  // the 3 columns other than skip, padded
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0, k = 0; j < 4; ++j)
+        if (j != skip) minor[i][k++] = rows[i].v[j];
+    const FieldElement d = det3({&minor[0], &minor[1], &minor[2]});
+    c[skip] = skip % 2 == 0 ? d : field_.neg(d);
+  }
+  const FieldElement mm =
+      field_.sub(field_.mul(c[0], c[0]), field_.add(field_.mul(c[1], c[1]), field_.mul(c[2], c[2])));
+  if (field_.sign(mm) <= 0) return 1;  // not a circle: unbounded
+  const exact::CyclotomicField &K = field_.cyclotomic();
+  const FieldElement k = field_.from_cyclotomic(K.add(K.integer(1), K.cos_2pi(2)));  // 1 + cos(pi/2g)
+  return field_.sign(field_.sub(field_.mul(c[3], c[3]), field_.mul(k, mm))) >= 0 ? 1 : -1;
+}
+
+int Kernel::large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
+  const FilteredPoint a = filtered(p), b = filtered(q), e = filtered(r);
+  const Difference d2 = difference(b, a), d3 = difference(e, a);
+  const double m2 = max_abs3(d2.d) + d2.error, m3 = max_abs3(d3.d) + d3.error;
+  // c = d2 x d3 (Euclidean cross product): each entry is two products.
+  const double c[3] = {d2.d[1] * d3.d[2] - d2.d[2] * d3.d[1], d2.d[2] * d3.d[0] - d2.d[0] * d3.d[2],
+                       d2.d[0] * d3.d[1] - d2.d[1] * d3.d[0]};
+  const double ec = 2 * (d2.error * m3 + m2 * d3.error) + 4 * kUnit * m2 * m3;
+  const double cmax = max_abs3(c) + ec;
+  // c_3 = -c . N_a.
+  const double c3 = -(c[0] * a.n[0] + c[1] * a.n[1] + c[2] * a.n[2]);
+  const double amax = max_abs3(a.n) + a.error;
+  const double e3 = 3 * (ec * amax + cmax * a.error) + 4 * kUnit * 3 * cmax * amax;
+  const double c3max = std::abs(c3) + e3;
+  // <m, m> = c0^2 - c1^2 - c2^2 and Q = c3^2 - k <m, m>, k = 1 + cos(pi/2g) in [1, 2].
+  const double mm = c[0] * c[0] - c[1] * c[1] - c[2] * c[2];
+  const double emm = 3 * (2 * cmax * ec) + 6 * kUnit * 3 * cmax * cmax;
+  const double k = 1 + std::cos(M_PI / (2.0 * presentation().genus()));  // within 4u of the exact value
+  const double Q = c3 * c3 - k * mm;
+  const double eQ = 2 * c3max * e3 + 2 * emm + 8 * kUnit * k * 3 * cmax * cmax + 4 * kUnit * c3max * c3max;
+  const double bound_mm = emm * 1.01, bound_Q = eQ * 1.01;
+  if (mm < -bound_mm) return ++statistics_.filtered, 1;
+  if (mm > bound_mm && std::abs(Q) > bound_Q) return ++statistics_.filtered, Q > 0 ? 1 : -1;
+  ++statistics_.exact;
+  return large_circumdisk_exact(p, q, r);
+}
+
 }  // namespace hdt::predicates

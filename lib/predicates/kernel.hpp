@@ -81,6 +81,14 @@ class Kernel {
   int beyond_side(const TranslatedPoint &p, int side);
   // Whether p and q are the same point of the disk, exactly.
   bool same_point(const TranslatedPoint &p, const TranslatedPoint &q);
+  // +1 when the circle through p, q, r has hyperbolic diameter >= sys/2 (or
+  // is no circle: a horocycle or hypercycle), -1 when it is smaller. The
+  // dummy-point condition sys > 2 delta asks for -1 on every face. With
+  // (c, c_3) the plane through (N_p 1), (N_q 1), (N_r 1) and m = (c0, -c1, -c2),
+  // the radius rho has cosh rho = |c_3| / sqrt<m, m>, and
+  // cosh^2(sys/4) = 1 + cos(pi/2g): the test is c_3^2 >= (1 + cos(pi/2g)) <m, m>.
+  int large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+  int large_circumdisk_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
 
   // The exact evaluations alone (for tests against the filter).
   int orientation_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);

@@ -9,6 +9,7 @@
 #include "surface/exact_polygon.hpp"
 #include "surface/polygon.hpp"
 #include "surface/representative.hpp"
+#include "surface/systole.hpp"
 
 // Last: check.h defines a macro named fail that breaks <iostream>.
 #include <check.h>
@@ -162,6 +163,39 @@ START_TEST(sites_reject_points_outside_the_disk) {
 }
 END_TEST
 
+START_TEST(large_circumdisk_matches_the_systole_threshold) {
+  // (r, 0), (0, r), (-r, 0) lie on the circle about 0 of hyperbolic radius
+  // 2 artanh(r): its diameter reaches sys/2 exactly when r = tanh(sys/8).
+  for (int g = 2; g <= 6; ++g) {
+    Kernel kernel{group::Presentation(g)};
+    const double critical = std::tanh(surface::systole<double>(g) / 8);
+    for (double offset : {-1e-3, -1e-9, 1e-9, 1e-3}) {
+      const double r = std::ldexp(std::round(std::ldexp(critical + offset, 40)), -40);  // dyadic
+      const int expected = r > critical ? 1 : -1;
+      for (group::TranslationId t : {0, 1, 5, 17}) {
+        const TranslatedPoint a{r, 0, t}, b{0, r, t}, c{-r, 0, t};
+        ck_assert_int_eq(kernel.large_circumdisk(a, b, c), expected);
+        ck_assert_int_eq(kernel.large_circumdisk_exact(a, b, c), expected);
+        ck_assert_int_eq(kernel.large_circumdisk(b, c, a), expected);
+      }
+    }
+    // Three points far apart are on no circle at all (a hypercycle): large.
+    ck_assert_int_eq(kernel.large_circumdisk({0.9, 0, 0}, {-0.9, 0.001, 0}, {0, 0.0001, 0}), 1);
+    // Random triples: the filter agrees with the exact evaluation.
+    uint64_t seed = 99;
+    auto uniform = [&seed]() {
+      seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+      return double(seed >> 11) * 0x1p-53 * 1.2 - 0.6;
+    };
+    for (int i = 0; i < 300; ++i) {
+      const TranslatedPoint a{uniform(), uniform(), 0}, b{uniform(), uniform(), group::TranslationId(i % 9)},
+          c{uniform() * 0.5, uniform() * 0.5, 0};
+      ck_assert_int_eq(kernel.large_circumdisk(a, b, c), kernel.large_circumdisk_exact(a, b, c));
+    }
+  }
+}
+END_TEST
+
 int main(void) {
   return run_suite("sites", 300, [](TCase *tc) {
     tcase_add_test(tc, site_coordinates_match_multiprecision_formulas);
@@ -169,5 +203,6 @@ int main(void) {
     tcase_add_test(tc, paired_points_have_one_representative);
     tcase_add_test(tc, rotated_rational_points_are_cocircular);
     tcase_add_test(tc, sites_reject_points_outside_the_disk);
+    tcase_add_test(tc, large_circumdisk_matches_the_systole_threshold);
   });
 }
