@@ -80,7 +80,13 @@ FieldElement Field::mul(const FieldElement &a, const Cyclotomic &b) const {
   return {base_.mul(a.u, b), base_.mul(a.v, b)};
 }
 
-bool Field::is_zero(const FieldElement &a) const { return sign(a) == 0; }
+bool Field::is_zero(const FieldElement &a) const {
+  // Zero needs u = v = 0, unless sigma lies in Q(zeta) (then u^2 = v^2 sigma^2
+  // and the signs of u and v decide); no evaluation otherwise.
+  if (a.u.is_zero() || a.v.is_zero()) return a.u.is_zero() && a.v.is_zero();
+  const Cyclotomic norm = base_.sub(base_.mul(a.u, a.u), base_.mul(base_.mul(a.v, a.v), sigma_squared_));
+  return norm.is_zero() && sign(a.u) != sign(a.v);
+}
 
 template <class T>
 const Field::Evaluator<T> &Field::evaluator() const {

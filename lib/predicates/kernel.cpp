@@ -230,7 +230,7 @@ bool Kernel::same_point_exact(const TranslatedPoint &p, const TranslatedPoint &q
   // proportional rows, P_i Q_3 = Q_i P_3.
   const ExactRow a = exact_row(p), b = exact_row(q);
   for (int i = 0; i < 3; ++i)
-    if (field_.sign(field_.sub(field_.mul(a.v[i], b.v[3]), field_.mul(b.v[i], a.v[3]))) != 0) return false;
+    if (!field_.is_zero(field_.sub(field_.mul(a.v[i], b.v[3]), field_.mul(b.v[i], a.v[3])))) return false;
   return true;
 }
 
