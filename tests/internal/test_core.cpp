@@ -13,6 +13,7 @@
 #include "group/neighbours.hpp"
 #include "group/translation_table.hpp"
 #include "group/word_matrix.hpp"
+#include "surface/polygon.hpp"
 #include "surface/systole.hpp"
 
 // Last: check.h defines a macro named fail that breaks <iostream>.
@@ -206,6 +207,28 @@ START_TEST(neighbour_ids_are_fixed_and_tables_agree) {
 }
 END_TEST
 
+START_TEST(side_pairing_maps_paired_sides) {
+  // g_k maps side s_{paired_side(k)} onto s_k: midpoint to midpoint, and the
+  // endpoints v_{k+2g-1}, v_{k+2g} to v_k, v_{k-1}.
+  using T = exact::mp_real<50>;
+  for (int g = 2; g <= 6; ++g) {
+    const Presentation p(g);
+    const group::GeneratorSet<T> gens(p);
+    for (int k = 0; k < p.letter_count(); ++k) {
+      const int j = surface::paired_side(p, k);
+      ck_assert_int_eq(j, (k + 2 * g) % (4 * g));
+      auto gap = [&](group::Complex<T> from, group::Complex<T> to) {
+        const auto image = gens.moebius(k).apply(from);
+        return T(abs(image.re - to.re) + abs(image.im - to.im));
+      };
+      ck_assert(gap(surface::polygon_side_midpoint<T>(g, j), surface::polygon_side_midpoint<T>(g, k)) < T("1e-40"));
+      ck_assert(gap(surface::polygon_vertex<T>(g, j - 1), surface::polygon_vertex<T>(g, k)) < T("1e-40"));
+      ck_assert(gap(surface::polygon_vertex<T>(g, j), surface::polygon_vertex<T>(g, k - 1)) < T("1e-40"));
+    }
+  }
+}
+END_TEST
+
 START_TEST(systole_formula_in_mpfr) {
   using T = exact::mp_real<50>;
   // g = 2: 2 arccosh(1 + sqrt 2).
@@ -241,6 +264,7 @@ int main(void) {
     tcase_add_test(tc, dehn_output_is_reduced_and_equal);
     tcase_add_test(tc, dehn_is_not_geodesic_but_canonical_is);
     tcase_add_test(tc, neighbour_ids_are_fixed_and_tables_agree);
+    tcase_add_test(tc, side_pairing_maps_paired_sides);
     tcase_add_test(tc, systole_formula_in_mpfr);
     tcase_add_test(tc, unit_disk_test_is_exact);
   });
