@@ -128,14 +128,31 @@ Cyclotomic CyclotomicField::sin_2pi(long k) const {
   return mul_2exp(mul(sub(zeta_power(k), zeta_power(-k)), zeta_power(3L * n_ / 4)), -1);
 }
 
-Cyclotomic CyclotomicField::add(const Cyclotomic &a, const Cyclotomic &b) const {
-  if (a.is_zero()) return b;
+Cyclotomic CyclotomicField::add(const Cyclotomic &a, const Cyclotomic &b) const { return combine(a, b, false); }
+
+Cyclotomic CyclotomicField::sub(const Cyclotomic &a, const Cyclotomic &b) const { return combine(a, b, true); }
+
+Cyclotomic CyclotomicField::combine(const Cyclotomic &a, const Cyclotomic &b, bool subtract) const {
   if (b.is_zero()) return a;
-  // Align to the smaller exponent.
+  if (a.is_zero()) return subtract ? neg(b) : b;
+  // Align to the smaller exponent, shifting in place (no temporaries).
   const int e = std::min(a.exponent_, b.exponent_);
-  std::vector<Integer> c(std::max(a.coefficients_.size(), b.coefficients_.size()), Integer(0));
-  for (std::size_t i = 0; i < a.coefficients_.size(); ++i) c[i] = a.coefficients_[i] << (a.exponent_ - e);
-  for (std::size_t i = 0; i < b.coefficients_.size(); ++i) c[i] += b.coefficients_[i] << (b.exponent_ - e);
+  const unsigned shift_a = unsigned(a.exponent_ - e), shift_b = unsigned(b.exponent_ - e);
+  std::vector<Integer> c(std::max(a.coefficients_.size(), b.coefficients_.size()));  // zeros, unallocated
+  for (std::size_t i = 0; i < a.coefficients_.size(); ++i) {
+    c[i] = a.coefficients_[i];
+    if (shift_a) c[i] <<= shift_a;
+  }
+  Integer shifted;
+  for (std::size_t i = 0; i < b.coefficients_.size(); ++i) {
+    const Integer *term = &b.coefficients_[i];
+    if (shift_b) {
+      shifted = *term << shift_b;
+      term = &shifted;
+    }
+    if (subtract) c[i] -= *term;
+    else c[i] += *term;
+  }
   return normalised(std::move(c), e);
 }
 
@@ -145,12 +162,10 @@ Cyclotomic CyclotomicField::neg(const Cyclotomic &a) const {
   return r;
 }
 
-Cyclotomic CyclotomicField::sub(const Cyclotomic &a, const Cyclotomic &b) const { return add(a, neg(b)); }
-
 Cyclotomic CyclotomicField::mul(const Cyclotomic &a, const Cyclotomic &b) const {
   if (a.is_zero() || b.is_zero()) return zero();
   const auto &x = a.coefficients_, &y = b.coefficients_;
-  std::vector<Integer> c(x.size() + y.size() - 1, Integer(0));
+  std::vector<Integer> c(x.size() + y.size() - 1);  // default-constructed: zero, no allocation
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (x[i] == 0) continue;
     for (std::size_t j = 0; j < y.size(); ++j) c[i + j] += x[i] * y[j];

@@ -58,6 +58,7 @@ class CyclotomicField {
 
  private:
   Cyclotomic normalised(std::vector<Integer> c, int exponent) const;
+  Cyclotomic combine(const Cyclotomic &a, const Cyclotomic &b, bool subtract) const;
   void reduce(std::vector<Integer> &c) const;
 
   int n_;
