@@ -84,8 +84,11 @@ bool Field::is_zero(const FieldElement &a) const {
   // Zero needs u = v = 0, unless sigma lies in Q(zeta) (then u^2 = v^2 sigma^2
   // and the signs of u and v decide); no evaluation otherwise.
   if (a.u.is_zero() || a.v.is_zero()) return a.u.is_zero() && a.v.is_zero();
-  const Cyclotomic norm = base_.sub(base_.mul(a.u, a.u), base_.mul(base_.mul(a.v, a.v), sigma_squared_));
-  return norm.is_zero() && sign(a.u) != sign(a.v);
+  return norm_vanishes(a) && sign(a.u) != sign(a.v);
+}
+
+bool Field::norm_vanishes(const FieldElement &a) const {
+  return base_.sub(base_.mul(a.u, a.u), base_.mul(base_.mul(a.v, a.v), sigma_squared_)).is_zero();
 }
 
 template <class T>
@@ -136,8 +139,7 @@ int Field::sign(const FieldElement &a) const {
   if (!a.u.is_zero() && !a.v.is_zero()) {
     // u + v sigma = 0 with v != 0 would put sigma in Q(zeta); then
     // u^2 = v^2 sigma^2 and the value is 0 or 2u.
-    const Cyclotomic norm = base_.sub(base_.mul(a.u, a.u), base_.mul(base_.mul(a.v, a.v), sigma_squared_));
-    if (norm.is_zero()) {
+    if (norm_vanishes(a)) {
       const int su = sign(a.u), sv = sign(a.v);
       return su == sv ? su : 0;
     }

@@ -61,6 +61,9 @@ class Field {
   struct Evaluator;
   template <class T>
   const Evaluator<T> &evaluator() const;
+  // u^2 - v^2 sigma^2 = 0: only possible with both parts non-zero when sigma
+  // lies in Q(zeta); then u + v sigma is 0 or 2u.
+  bool norm_vanishes(const FieldElement &a) const;
   // Sign at one rung, or 2 when the rung cannot decide.
   template <class T>
   int sign_at(const FieldElement &a) const;
