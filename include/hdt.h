@@ -145,6 +145,116 @@ HDT_API hdt_status hdt_neighbour_count(int genus, size_t *count) HDT_NOEXCEPT;
 HDT_API hdt_status hdt_neighbour_word(int genus, size_t id, int32_t *out,
                                       size_t capacity, size_t *out_length) HDT_NOEXCEPT;
 
+/* ---- Triangulations ----
+   A triangulation of genus g holds a finite point set on M_g and its
+   Delaunay triangulation, always a simplicial complex whose faces have
+   hyperbolic circumdiameter < sys(M_g) / 2 (so every face is a proper
+   triangle of the surface, with three distinct vertices).
+
+   A new triangulation holds the dummy points of its genus (a certified set
+   Q with sys(M_g) > 2 delta_Q; see README). User points are inserted,
+   dummies removed where the result keeps the guarantee.
+
+   Vertices: ids are dense and stable. The dummy vertices take ids 0..d-1
+   at creation, each new distinct point the next id; a removed id is never
+   reused. A vertex stores the point as given; hdt_vertex_point gives its
+   representative in the half-open fundamental domain (see
+   hdt_point_representative).
+
+   Faces: 3 vertex ids counterclockwise and, per corner, a translation id:
+   the group element applied to that vertex's representative point to place
+   it in the face's canonical copy. The canonical copy is the one in which the
+   face's smallest vertex id sits at its representative (translation 0, the
+   identity), so it meets F_g. Face indices are positions in the order of
+   hdt_faces; they hold until the next change of the triangulation.
+
+   Translation ids 0..|N|-1 are the neighbour set N (hdt_neighbour_word);
+   larger ids are given by a triangulation as it meets new elements and are
+   valid for that handle only (hdt_translation_word, hdt_translation_matrix).
+
+   A call that fails leaves the triangulation exactly as it was. One handle
+   is used by one thread at a time; distinct handles are independent. */
+typedef struct hdt_triangulation hdt_triangulation; /* opaque */
+
+/* A new triangulation of M_genus holding its dummy points. *out is NULL on
+   failure. HDT_EINVAL for genus < 2 or out NULL, HDT_ENOTSUP above
+   HDT_GENUS_MAX. */
+HDT_API hdt_status hdt_create(hdt_triangulation **out, int genus) HDT_NOEXCEPT;
+/* Frees the triangulation; NULL is a no-op. */
+HDT_API void hdt_destroy(hdt_triangulation *t) HDT_NOEXCEPT;
+/* The genus, or 0 when t is NULL. */
+HDT_API int hdt_genus(const hdt_triangulation *t) HDT_NOEXCEPT;
+
+/* Inserts the point (x, y) of the open unit disk (its representative on
+   M_g). A point already present as a user vertex: HDT_EEXISTS, and *vertex
+   receives that vertex. A point equal to a dummy vertex turns it into a user
+   vertex (HDT_OK, *vertex is the dummy's id). vertex may be NULL.
+   HDT_EDOMAIN for NaN, infinities or |z| >= 1 (decided exactly). */
+HDT_API hdt_status hdt_insert(hdt_triangulation *t, double x, double y, uint32_t *vertex) HDT_NOEXCEPT;
+/* Inserts n points xy[2i], xy[2i+1] in a spatial order (Hilbert curve on
+   the representatives), each located from the previous one. vertices (may
+   be NULL) receives n ids: vertices[i] answers point i (a duplicate gets the
+   existing vertex; that is not an error here). Every point is checked first:
+   a bad point rejects the whole call (HDT_EDOMAIN naming its index) and
+   nothing is inserted. */
+HDT_API hdt_status hdt_insert_many(hdt_triangulation *t, const double *xy, size_t n,
+                                   uint32_t *vertices) HDT_NOEXCEPT;
+/* Removes vertex v (user or dummy). Refused with HDT_ENOTSUP, nothing
+   changed, when the triangulation without v would break the guarantee
+   (a new face of circumdiameter >= sys/2). HDT_EINVAL when v is not a live
+   vertex. */
+HDT_API hdt_status hdt_remove_vertex(hdt_triangulation *t, uint32_t v) HDT_NOEXCEPT;
+/* Removes every dummy vertex that can go without breaking the guarantee;
+   *remaining (may be NULL) receives how many dummies are left. */
+HDT_API hdt_status hdt_remove_dummies(hdt_triangulation *t, size_t *remaining) HDT_NOEXCEPT;
+
+/* Live vertices, dummies included (0 when t is NULL). */
+HDT_API size_t hdt_vertex_count(const hdt_triangulation *t) HDT_NOEXCEPT;
+/* Live dummy vertices (0 when t is NULL). */
+HDT_API size_t hdt_dummy_count(const hdt_triangulation *t) HDT_NOEXCEPT;
+/* One past the largest vertex id ever given: ids below it are live or
+   removed (0 when t is NULL). */
+HDT_API size_t hdt_vertex_id_bound(const hdt_triangulation *t) HDT_NOEXCEPT;
+/* Faces: F = 2 (V + 2g - 2) (0 when t is NULL). */
+HDT_API size_t hdt_face_count(const hdt_triangulation *t) HDT_NOEXCEPT;
+/* The representative of vertex v in the half-open F_g, rounded to double.
+   HDT_EINVAL when v is not a live vertex. */
+HDT_API hdt_status hdt_vertex_point(const hdt_triangulation *t, uint32_t v, double *x, double *y) HDT_NOEXCEPT;
+/* 1 for a dummy vertex, 0 for a user vertex, -1 for no live vertex v. */
+HDT_API int hdt_vertex_is_dummy(const hdt_triangulation *t, uint32_t v) HDT_NOEXCEPT;
+
+/* The faces, two-call pattern: capacity (in faces) 0 asks for *count
+   (vertices may then be NULL); HDT_EBUFS, with *count set, when too small.
+   vertices: 3 per face, counterclockwise. translations (may be NULL): 3 per
+   face, the translation id of each corner (see above). */
+HDT_API hdt_status hdt_faces(const hdt_triangulation *t, uint32_t *vertices, int32_t *translations,
+                             size_t capacity, size_t *count) HDT_NOEXCEPT;
+/* The canonical word of a translation id of this triangulation (two-call
+   pattern as in hdt_word_reduce). HDT_EINVAL for an unknown id. */
+HDT_API hdt_status hdt_translation_word(const hdt_triangulation *t, int32_t id, int32_t *out,
+                                        size_t capacity, size_t *out_length) HDT_NOEXCEPT;
+/* The SU(1,1) matrix of a translation id (layout of hdt_word_matrix). */
+HDT_API hdt_status hdt_translation_matrix(const hdt_triangulation *t, int32_t id, double m[4]) HDT_NOEXCEPT;
+
+/* Point location: the face (index in hdt_faces order) whose copy contains
+   the disk point (x, y), and the translation id h of that copy: (x, y) lies
+   in the closed triangle h(canonical copy). A point on an edge or vertex gets
+   one of the faces around it. face or translation may be NULL. */
+HDT_API hdt_status hdt_locate(const hdt_triangulation *t, double x, double y, size_t *face,
+                              int32_t *translation) HDT_NOEXCEPT;
+/* The vertex nearest to the disk point (x, y) on M_g (hyperbolic distance,
+   decided exactly; ties go to the smaller id), dummies included. */
+HDT_API hdt_status hdt_nearest_vertex(const hdt_triangulation *t, double x, double y,
+                                      uint32_t *vertex) HDT_NOEXCEPT;
+
+/* Full check of every invariant with exact predicates: each edge shared by
+   two faces with consistent translations, canonical counterclockwise faces,
+   F = 2 (V + 2g - 2), each vertex surrounded once, the empty-circle property
+   across every edge, the simplicial condition (no loops, no double edges)
+   and the circumdiameter guarantee. HDT_OK, or HDT_EINTERNAL with a message
+   naming the broken invariant. */
+HDT_API hdt_status hdt_validate(const hdt_triangulation *t) HDT_NOEXCEPT;
+
 #ifdef __cplusplus
 }
 #endif

@@ -41,6 +41,8 @@ void TranslationTable::compute_matrices(TranslationId id) {
 TranslationId TranslationTable::intern(const Word &w) { return add_canonical(canonical_word(presentation_, w)); }
 
 TranslationId TranslationTable::compose(TranslationId a, TranslationId b) {
+  if (a == 0) return b;
+  if (b == 0) return a;
   const uint64_t key = (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
   auto it = products_.find(key);
   if (it != products_.end()) return it->second;
@@ -52,6 +54,15 @@ TranslationId TranslationTable::compose(TranslationId a, TranslationId b) {
   return id;
 }
 
-TranslationId TranslationTable::inverse(TranslationId a) { return intern(presentation_.inverse(word(a))); }
+TranslationId TranslationTable::inverse(TranslationId a) {
+  if (std::size_t(a) >= inverses_.size()) inverses_.resize(words_.size(), -1);
+  if (inverses_.at(a) < 0) {
+    const TranslationId b = intern(presentation_.inverse(word(a)));
+    if (std::size_t(b) >= inverses_.size()) inverses_.resize(words_.size(), -1);
+    inverses_[a] = b;
+    inverses_[b] = a;
+  }
+  return inverses_[a];
+}
 
 }  // namespace hdt::group

@@ -62,6 +62,7 @@ class TranslationTable {
   std::vector<bool> has_matrices_;
   std::unordered_map<Word, TranslationId, WordHash> ids_;
   std::unordered_map<uint64_t, TranslationId> products_;
+  std::vector<TranslationId> inverses_;  // -1: not known yet
 };
 
 }  // namespace hdt::group

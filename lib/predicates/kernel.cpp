@@ -228,6 +228,29 @@ int Kernel::beyond_side(const TranslatedPoint &p, int side) {
   return beyond_side_exact(p, side);
 }
 
+int Kernel::compare_distance_exact(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b) {
+  // cosh d(p, a) = <N_p, N_a> = <r_p, r_a> / (r_p3 r_a3) for the exact rows r
+  // (r_3 > 0), so the sign is that of <r_p, r_a> r_b3 - <r_p, r_b> r_a3.
+  const ExactRow rp = exact_row(p), ra = exact_row(a), rb = exact_row(b);
+  auto minkowski = [&](const ExactRow &u, const ExactRow &v) {
+    return field_.sub(field_.mul(u.v[0], v.v[0]), field_.add(field_.mul(u.v[1], v.v[1]), field_.mul(u.v[2], v.v[2])));
+  };
+  return field_.sign(field_.sub(field_.mul(minkowski(rp, ra), rb.v[3]), field_.mul(minkowski(rp, rb), ra.v[3])));
+}
+
+int Kernel::compare_distance(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b) {
+  const FilteredPoint fp = filtered(p), fa = filtered(a), fb = filtered(b);
+  const Difference d = difference(fa, fb);
+  // <N_p, N_a - N_b>; cosh is increasing, so its sign is the answer.
+  const double value = fp.n[0] * d.d[0] - fp.n[1] * d.d[1] - fp.n[2] * d.d[2];
+  const double size = std::abs(fp.n[0] * d.d[0]) + std::abs(fp.n[1] * d.d[1]) + std::abs(fp.n[2] * d.d[2]);
+  const double bound = (3 * (fp.error * (max_abs3(d.d) + d.error) + (max_abs3(fp.n) + fp.error) * d.error) +
+                        4 * kUnit * size) * 1.01;
+  if (const int s = sign_of(value, bound)) return ++statistics_.filtered, s;
+  ++statistics_.exact;
+  return compare_distance_exact(p, a, b);
+}
+
 bool Kernel::same_point_exact(const TranslatedPoint &p, const TranslatedPoint &q) {
   // The rows are positive multiples of (N, 1): equal points have
   // proportional rows, P_i Q_3 = Q_i P_3.

@@ -79,6 +79,9 @@ class Kernel {
   // point i.
   int in_circle_perturbed(const std::array<TranslatedPoint, 4> &points, const std::array<uint32_t, 4> &vertex);
   int beyond_side(const TranslatedPoint &p, int side);
+  // sign(d(p, a) - d(p, b)) for the hyperbolic distance d: -1 when a is
+  // nearer to p, 0 at equal distance.
+  int compare_distance(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b);
   // Whether p and q are the same point of the disk, exactly.
   bool same_point(const TranslatedPoint &p, const TranslatedPoint &q);
   // +1 when the circle through p, q, r has hyperbolic diameter >= sys/2 (or
@@ -96,6 +99,7 @@ class Kernel {
                       const TranslatedPoint &s);
   int beyond_side_exact(const TranslatedPoint &p, int side);
   bool same_point_exact(const TranslatedPoint &p, const TranslatedPoint &q);
+  int compare_distance_exact(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b);
 
   // Registers an exact algebraic point; returns its site id and sets *x, *y
   // to its coordinates rounded to double. Throws std::domain_error unless

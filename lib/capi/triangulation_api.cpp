@@ -1,0 +1,202 @@
+// The triangulation handle: lifecycle, insertion, removal, queries, output.
+#include <string>
+#include <vector>
+
+#include "capi/guard.hpp"
+#include "hdt.h"
+#include "triangulation/triangulation.hpp"
+
+using hdt::capi::ApiError;
+using hdt::capi::fail;
+using hdt::capi::guarded;
+using hdt::triangulation::Triangulation;
+
+struct hdt_triangulation {
+  explicit hdt_triangulation(int genus) : tri(genus) {}
+  Triangulation tri;
+};
+
+namespace {
+
+// The triangulation behind a handle. Queries on a const handle still fill
+// the kernel's caches (translation products, matrices), hence mutable.
+Triangulation &of(const hdt_triangulation *t) {
+  if (!t) throw ApiError(HDT_EINVAL, "the triangulation handle is NULL");
+  return const_cast<hdt_triangulation *>(t)->tri;
+}
+
+void check_translation(Triangulation &tri, int32_t id) {
+  if (id < 0 || std::size_t(id) >= tri.kernel().table().size())
+    throw ApiError(HDT_EINVAL, "unknown translation id " + std::to_string(id));
+}
+
+}  // namespace
+
+extern "C" {
+
+HDT_API hdt_status hdt_create(hdt_triangulation **out, int genus) HDT_NOEXCEPT {
+  return guarded("hdt_create", [&] {
+    if (!out) throw ApiError(HDT_EINVAL, "out must not be NULL");
+    *out = nullptr;
+    hdt::capi::check_genus(genus);
+    *out = new hdt_triangulation(genus);
+    return HDT_OK;
+  });
+}
+
+HDT_API void hdt_destroy(hdt_triangulation *t) HDT_NOEXCEPT { delete t; }
+
+HDT_API int hdt_genus(const hdt_triangulation *t) HDT_NOEXCEPT { return t ? t->tri.genus() : 0; }
+
+HDT_API hdt_status hdt_insert(hdt_triangulation *t, double x, double y, uint32_t *vertex) HDT_NOEXCEPT {
+  return guarded("hdt_insert", [&] {
+    Triangulation &tri = of(t);
+    hdt::capi::check_disk_point(x, y);
+    const Triangulation::Inserted r = tri.insert(x, y);
+    if (vertex) *vertex = r.vertex;
+    if (r.existed) return fail(HDT_EEXISTS, "hdt_insert", "the point is already vertex " + std::to_string(r.vertex));
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_insert_many(hdt_triangulation *t, const double *xy, size_t n, uint32_t *vertices) HDT_NOEXCEPT {
+  return guarded("hdt_insert_many", [&] {
+    Triangulation &tri = of(t);
+    if (n > 0 && !xy) throw ApiError(HDT_EINVAL, "xy is NULL but n is " + std::to_string(n));
+    tri.insert_many(xy, n, vertices);
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_remove_vertex(hdt_triangulation *t, uint32_t v) HDT_NOEXCEPT {
+  return guarded("hdt_remove_vertex", [&] {
+    Triangulation &tri = of(t);
+    if (!tri.remove(v))
+      return fail(HDT_ENOTSUP, "hdt_remove_vertex",
+                  "removing vertex " + std::to_string(v) +
+                      " would leave a face of circumdiameter >= sys/2 (the triangulation could stop being simplicial)");
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_remove_dummies(hdt_triangulation *t, size_t *remaining) HDT_NOEXCEPT {
+  return guarded("hdt_remove_dummies", [&] {
+    const std::size_t left = of(t).remove_dummies();
+    if (remaining) *remaining = left;
+    return HDT_OK;
+  });
+}
+
+HDT_API size_t hdt_vertex_count(const hdt_triangulation *t) HDT_NOEXCEPT { return t ? t->tri.vertex_count() : 0; }
+HDT_API size_t hdt_dummy_count(const hdt_triangulation *t) HDT_NOEXCEPT { return t ? t->tri.dummy_count() : 0; }
+HDT_API size_t hdt_vertex_id_bound(const hdt_triangulation *t) HDT_NOEXCEPT {
+  return t ? t->tri.vertices().size() : 0;
+}
+HDT_API size_t hdt_face_count(const hdt_triangulation *t) HDT_NOEXCEPT { return t ? t->tri.faces().size() : 0; }
+
+HDT_API hdt_status hdt_vertex_point(const hdt_triangulation *t, uint32_t v, double *x, double *y) HDT_NOEXCEPT {
+  return guarded("hdt_vertex_point", [&] {
+    Triangulation &tri = of(t);
+    if (!x || !y) throw ApiError(HDT_EINVAL, "x and y must not be NULL");
+    if (v >= tri.vertices().size() || !tri.vertices()[v].alive())
+      throw ApiError(HDT_EINVAL, "vertex " + std::to_string(v) + " is not a live vertex");
+    double px, py;
+    tri.vertex_point(v, &px, &py);
+    *x = px, *y = py;
+    return HDT_OK;
+  });
+}
+
+HDT_API int hdt_vertex_is_dummy(const hdt_triangulation *t, uint32_t v) HDT_NOEXCEPT {
+  if (!t || v >= t->tri.vertices().size() || !t->tri.vertices()[v].alive()) return -1;
+  return t->tri.vertices()[v].dummy ? 1 : 0;
+}
+
+HDT_API hdt_status hdt_faces(const hdt_triangulation *t, uint32_t *vertices, int32_t *translations, size_t capacity,
+                             size_t *count) HDT_NOEXCEPT {
+  return guarded("hdt_faces", [&] {
+    Triangulation &tri = of(t);
+    if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
+    const auto &faces = tri.faces();
+    const std::size_t F = faces.size();
+    if (capacity == 0) {
+      *count = F;
+      return HDT_OK;
+    }
+    if (capacity < F) {
+      *count = F;
+      return fail(HDT_EBUFS, "hdt_faces",
+                  "capacity " + std::to_string(capacity) + " is too small for " + std::to_string(F) + " faces");
+    }
+    if (!vertices) throw ApiError(HDT_EINVAL, "vertices must not be NULL when capacity > 0");
+    // Corner translations relative to each vertex's representative: t h^-1.
+    std::vector<int32_t> relative;
+    if (translations) {
+      auto &T = tri.kernel().table();
+      relative.resize(3 * F);
+      for (std::size_t f = 0; f < F; ++f)
+        for (int i = 0; i < 3; ++i) {
+          const auto home = tri.vertices()[faces[f].v[i]].home;
+          relative[3 * f + i] = home == 0 ? faces[f].t[i] : T.compose(faces[f].t[i], T.inverse(home));
+        }
+    }
+    for (std::size_t f = 0; f < F; ++f)
+      for (int i = 0; i < 3; ++i) vertices[3 * f + i] = faces[f].v[i];
+    if (translations)
+      for (std::size_t k = 0; k < 3 * F; ++k) translations[k] = relative[k];
+    *count = F;
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_translation_word(const hdt_triangulation *t, int32_t id, int32_t *out, size_t capacity,
+                                        size_t *out_length) HDT_NOEXCEPT {
+  return guarded("hdt_translation_word", [&] {
+    Triangulation &tri = of(t);
+    if (!out_length) throw ApiError(HDT_EINVAL, "out_length must not be NULL");
+    check_translation(tri, id);
+    return hdt::capi::copy_word(tri.kernel().table().word(id), out, capacity, out_length);
+  });
+}
+
+HDT_API hdt_status hdt_translation_matrix(const hdt_triangulation *t, int32_t id, double m[4]) HDT_NOEXCEPT {
+  return guarded("hdt_translation_matrix", [&] {
+    Triangulation &tri = of(t);
+    if (!m) throw ApiError(HDT_EINVAL, "m must not be NULL");
+    check_translation(tri, id);
+    const auto &f = tri.kernel().table().moebius(id);
+    m[0] = f.a.re, m[1] = f.a.im, m[2] = f.b.re, m[3] = f.b.im;
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_locate(const hdt_triangulation *t, double x, double y, size_t *face,
+                              int32_t *translation) HDT_NOEXCEPT {
+  return guarded("hdt_locate", [&] {
+    Triangulation &tri = of(t);
+    hdt::capi::check_disk_point(x, y);
+    const Triangulation::Located r = tri.locate(x, y);
+    if (face) *face = r.face;
+    if (translation) *translation = r.translation;
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_nearest_vertex(const hdt_triangulation *t, double x, double y, uint32_t *vertex) HDT_NOEXCEPT {
+  return guarded("hdt_nearest_vertex", [&] {
+    Triangulation &tri = of(t);
+    if (!vertex) throw ApiError(HDT_EINVAL, "vertex must not be NULL");
+    hdt::capi::check_disk_point(x, y);
+    *vertex = tri.nearest_vertex(x, y);
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_validate(const hdt_triangulation *t) HDT_NOEXCEPT {
+  return guarded("hdt_validate", [&] {
+    of(t).validate();
+    return HDT_OK;
+  });
+}
+
+}  // extern "C"

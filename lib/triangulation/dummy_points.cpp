@@ -1,0 +1,266 @@
+// The dummy point construction (paper, Algorithm 1).
+//
+// Start from Q0 = {0, v_0, m_0 .. m_{2g-1}} (v_0 and the m_k as exact sites)
+// and its triangulation by the 8g right triangles (0, v_{k-1}, m_k),
+// (0, m_k, v_k) of F_g, which is a triangulation of M_g but not a simplicial
+// complex (0 and m_k ~ m_{k+2g} are joined twice). Lawson flips make it
+// Delaunay; then, while some face has circumdiameter >= sys/2, its
+// circumcentre (rounded to double) is inserted, largest circle first, by a
+// split and Lawson flips. Flips, unlike Bowyer-Watson, work on triangulations
+// that are not simplicial, which the early stages are.
+//
+// The result is certified by Triangulation::validate(): every face is
+// locally Delaunay, surrounds its vertices once and has circumdiameter
+// < sys/2, decided with exact predicates, hence sys(M_g) > 2 delta_Q.
+#include "triangulation/dummy_points.hpp"
+
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+
+#include "predicates/filtered_point.hpp"
+#include "surface/exact_polygon.hpp"
+#include "surface/polygon.hpp"
+#include "surface/representative.hpp"
+#include "triangulation/triangulation.hpp"
+
+namespace hdt::triangulation {
+
+class DummyBuilder {
+ public:
+  explicit DummyBuilder(int genus) : t_(genus, Triangulation::Empty{}), K_(*t_.kernel_), T_(K_.table()) {}
+
+  std::shared_ptr<const DummyTemplate> build() {
+    initial_triangulation();
+    for (uint32_t f = 0; f < t_.faces_.size(); ++f)
+      for (int i = 0; i < 3; ++i) stack_.push_back({f, i});
+    lawson();
+    refine();
+    t_.validate();  // the certificate
+    auto result = std::make_shared<DummyTemplate>();
+    result->genus = t_.genus_;
+    result->vertices = t_.vertices_;
+    result->faces = t_.faces_;
+    for (std::size_t id = T_.neighbour_count(); id < T_.size(); ++id) result->extra_words.push_back(T_.word(TranslationId(id)));
+    return result;
+  }
+
+ private:
+  using Corner = Triangulation::Corner;
+  using NewFace = Triangulation::NewFace;
+  using BoundaryEdge = Triangulation::BoundaryEdge;
+  struct Edge {
+    uint32_t face;
+    int i;
+  };
+
+  void initial_triangulation() {
+    const group::Presentation &p = K_.presentation();
+    const int g = p.genus(), n = p.letter_count();
+    double x, y;
+    t_.vertices_.push_back({0, 0, 0, -1, kNone, true});  // 0: the centre of F_g
+    const int32_t v_site = K_.add_site(surface::exact_vertex(K_.field(), 0), &x, &y);
+    t_.vertices_.push_back({x, y, 0, v_site, kNone, true});  // 1: the vertex v_0
+    for (int k = 0; k < 2 * g; ++k) {
+      const int32_t s = K_.add_site(surface::exact_side_midpoint(K_.field(), k), &x, &y);
+      t_.vertices_.push_back({x, y, 0, s, kNone, true});  // 2 + k: m_k
+    }
+    // vertex_copy[k] maps v_0 to v_k: g_{k-2g} maps v_k to v_{k-2g-1}, and
+    // the steps -(2g+1) visit every vertex.
+    std::vector<TranslationId> vertex_copy(n, 0);
+    group::Word w;
+    for (int k = 0, step = 0; step < n - 1; ++step) {
+      const auto letter = static_cast<group::Letter>((k + 2 * g) % n);
+      w.insert(w.begin(), letter);
+      k = ((k - 2 * g - 1) % n + n) % n;
+      vertex_copy[k] = T_.intern(w);
+    }
+    for (int k = 0; k < n; ++k) {  // a cheap guard against a wrong cycle
+      const auto z = T_.moebius(vertex_copy[k]).apply({x = t_.vertices_[1].x, y = t_.vertices_[1].y});
+      const auto v = surface::vertex(p, k);
+      if (std::abs(z.re - v.re) + std::abs(z.im - v.im) > 1e-6) throw std::logic_error("dummy points: vertex cycle");
+    }
+    // m_k for k >= 2g is g_k(m_{k-2g}).
+    auto midpoint = [&](int k) {
+      return k < 2 * g ? Corner{uint32_t(2 + k), 0} : Corner{uint32_t(2 + k - 2 * g), T_.intern({static_cast<group::Letter>(k)})};
+    };
+    std::vector<NewFace> faces;
+    for (int k = 0; k < n; ++k) {
+      const Corner o{0, 0}, a{1, vertex_copy[(k + n - 1) % n]}, b{1, vertex_copy[k]}, m = midpoint(k);
+      faces.push_back({{o, a, m}});
+      faces.push_back({{o, m, b}});
+    }
+    // Link the faces: edge a -> b meets b -> a of the face whose copy
+    // h(face) has these corners, h = t_a t'_a^{-1}.
+    std::vector<Face> built(faces.size());
+    for (std::size_t j = 0; j < faces.size(); ++j)
+      for (int i = 0; i < 3; ++i) built[j].v[i] = faces[j].c[i].v, built[j].t[i] = faces[j].c[i].t;
+    for (std::size_t j = 0; j < faces.size(); ++j)
+      for (int i = 0; i < 3; ++i) {
+        const Corner a = faces[j].c[next(i)], b = faces[j].c[prev(i)];
+        bool linked = false;
+        for (std::size_t j2 = 0; j2 < faces.size() && !linked; ++j2)
+          for (int i2 = 0; i2 < 3 && !linked; ++i2) {
+            const Corner a2 = faces[j2].c[next(i2)], b2 = faces[j2].c[prev(i2)];
+            if (a2.v != b.v || b2.v != a.v) continue;
+            const TranslationId h = T_.compose(a.t, T_.inverse(b2.t));
+            if (T_.compose(h, a2.t) != b.t) continue;
+            if (j2 == j && h == 0) continue;
+            built[j].n[i] = uint32_t(j2);
+            built[j].nt[i] = h;
+            linked = true;
+          }
+        if (!linked) throw std::logic_error("dummy points: the initial triangulation does not close");
+      }
+    t_.faces_ = built;
+    t_.stamp_.assign(built.size(), 0);
+    for (uint32_t f = 0; f < built.size(); ++f)
+      for (int i = 0; i < 3; ++i) t_.vertices_[built[f].v[i]].face = f;
+    t_.live_vertices_ = t_.dummies_ = t_.vertices_.size();
+  }
+
+  // The in-circle test of the flips: perturbed when the four vertices are
+  // distinct, plain (a tie keeps the edge) otherwise.
+  int in_circle(const std::array<TranslatedPoint, 4> &p, const std::array<uint32_t, 4> &v) {
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        if (v[i] == v[j]) return K_.in_circle(p[0], p[1], p[2], p[3]);
+    return K_.in_circle_perturbed(p, v);
+  }
+
+  void lawson() {
+    while (!stack_.empty()) {
+      const Edge e = stack_.back();
+      stack_.pop_back();
+      if (e.face < t_.faces_.size()) flip_if_illegal(e.face, e.i);
+    }
+  }
+
+  void flip_if_illegal(uint32_t f, int i) {
+    const Face F = t_.faces_[f];
+    const uint32_t n = F.n[i];
+    if (n == f) return;
+    const int k = t_.twin(f, i);
+    if (k < 0) throw std::logic_error("dummy points: an edge without twin");
+    const Face N = t_.faces_[n];
+    const int b = next(i), c = prev(i);
+    for (int j : {b, c})
+      if (F.n[j] == f || F.n[j] == n) return;
+    for (int j : {next(k), prev(k)})
+      if (N.n[j] == f || N.n[j] == n) return;
+    const Corner A{F.v[i], F.t[i]}, B{F.v[b], F.t[b]}, C{F.v[c], F.t[c]};
+    const Corner D{N.v[k], T_.compose(F.nt[i], N.t[k])};
+    auto at = [&](const Corner &x) { return t_.point(x.v, x.t); };
+    if (in_circle({at(A), at(B), at(C), at(D)}, {A.v, B.v, C.v, D.v}) <= 0) return;
+    if (K_.orientation(at(A), at(B), at(D)) <= 0 || K_.orientation(at(A), at(D), at(C)) <= 0) return;
+    // N's corners: k = D, next(k) = C, prev(k) = B.
+    const std::vector<NewFace> created{{{A, B, D}}, {{A, D, C}}};
+    const std::vector<BoundaryEdge> boundary{
+        {A, B, F.n[c], t_.twin(f, c), F.nt[c]},
+        {C, A, F.n[b], t_.twin(f, b), F.nt[b]},
+        {B, D, N.n[next(k)], t_.twin(n, next(k)), T_.compose(F.nt[i], N.nt[next(k)])},
+        {D, C, N.n[prev(k)], t_.twin(n, prev(k)), T_.compose(F.nt[i], N.nt[prev(k)])},
+    };
+    t_.replace({f, n}, created, boundary, &ids_);
+    for (uint32_t id : ids_)
+      for (int j = 0; j < 3; ++j) stack_.push_back({id, j});
+  }
+
+  // Inserts the point (x, y), given in the canonical frame of face `from`.
+  void insert(double x, double y, uint32_t from) {
+    Triangulation::Walk w{};
+    for (int attempt = 0;; ++attempt) {
+      if (attempt > 64) throw std::logic_error("dummy points: cannot place a refinement point");
+      w = t_.walk({x, y, 0, -1}, from);
+      if (w.zero_edges == 0) break;
+      // On an edge line: move off it (the dummy points are ours to choose).
+      x = std::nextafter(x, 0.0) * (1 - 0x1p-30);
+      y = std::nextafter(y, 0.0) * (1 - 0x1p-29);
+    }
+    const surface::Representative r = surface::representative(K_, x, y);
+    const auto id = uint32_t(t_.vertices_.size());
+    const Face F = t_.faces_[w.face];
+    std::vector<NewFace> created;
+    std::vector<BoundaryEdge> boundary;
+    for (int i = 0; i < 3; ++i) {
+      const Corner a{F.v[next(i)], F.t[next(i)]}, b{F.v[prev(i)], F.t[prev(i)]};
+      if (F.n[i] == w.face) throw std::logic_error("dummy points: a face next to itself");
+      created.push_back({{a, b, Corner{id, w.query}}});
+      boundary.push_back({a, b, F.n[i], t_.twin(w.face, i), F.nt[i]});
+    }
+    t_.vertices_.push_back({x, y, r.translation, -1, kNone, true});
+    t_.replace({w.face}, created, boundary, &ids_);
+    ++t_.live_vertices_, ++t_.dummies_;
+    for (uint32_t f : ids_) stack_.push_back({f, 2});
+    lawson();
+  }
+
+  // Largest circles first: the circumcentre of the face whose circle is
+  // largest among those of hyperbolic diameter >= sys/2.
+  void refine() {
+    const int g = t_.genus_;
+    const double limit = std::sqrt(1 + std::cos(M_PI / (2.0 * g)));  // cosh(sys/4)
+    const std::size_t max_points = 64 * std::size_t(g) + 256;
+    for (;;) {
+      uint32_t best = kNone;
+      double best_cosh = 0, cx = 0, cy = 0;
+      for (uint32_t f = 0; f < t_.faces_.size(); ++f) {
+        const Face &F = t_.faces_[f];
+        double P[3][3];
+        for (int i = 0; i < 3; ++i) {
+          const predicates::FilteredPoint fp =
+              predicates::filtered_point(t_.vertices_[F.v[i]].x, t_.vertices_[F.v[i]].y, T_.lorentz(F.t[i]));
+          for (int j = 0; j < 3; ++j) P[i][j] = fp.n[j];
+        }
+        const double u[3] = {P[1][0] - P[0][0], P[1][1] - P[0][1], P[1][2] - P[0][2]};
+        const double v[3] = {P[2][0] - P[0][0], P[2][1] - P[0][1], P[2][2] - P[0][2]};
+        // The plane's Euclidean normal; its Minkowski dual is the centre.
+        double m[3] = {u[1] * v[2] - u[2] * v[1], -(u[2] * v[0] - u[0] * v[2]), -(u[0] * v[1] - u[1] * v[0])};
+        const double mm = m[0] * m[0] - m[1] * m[1] - m[2] * m[2];
+        double cosh_r, centre[3];
+        if (mm > 0) {
+          const double s = (m[0] > 0 ? 1 : -1) / std::sqrt(mm);
+          for (int j = 0; j < 3; ++j) centre[j] = m[j] * s;
+          cosh_r = centre[0] * P[0][0] - centre[1] * P[0][1] - centre[2] * P[0][2];
+        } else {  // a horocycle or hypercycle: take the centroid
+          double c[3], cc;
+          for (int j = 0; j < 3; ++j) c[j] = P[0][j] + P[1][j] + P[2][j];
+          cc = std::sqrt(c[0] * c[0] - c[1] * c[1] - c[2] * c[2]);
+          for (int j = 0; j < 3; ++j) centre[j] = c[j] / cc;
+          cosh_r = INFINITY;
+        }
+        if (!(cosh_r >= limit * (1 - 1e-9)) || cosh_r <= best_cosh) continue;
+        if (cosh_r < limit * (1 + 1e-9) && K_.large_circumdisk(t_.corner(F, 0), t_.corner(F, 1), t_.corner(F, 2)) < 0)
+          continue;  // close to the limit: the exact test decides
+        best = f, best_cosh = cosh_r;
+        cx = centre[1] / (1 + centre[0]), cy = centre[2] / (1 + centre[0]);
+      }
+      if (best == kNone) return;
+      if (t_.vertices_.size() > max_points) throw std::logic_error("dummy points: the refinement does not end");
+      insert(cx, cy, best);
+    }
+  }
+
+  Triangulation t_;
+  predicates::Kernel &K_;
+  group::TranslationTable &T_;
+  std::vector<Edge> stack_;
+  std::vector<uint32_t> ids_;
+};
+
+std::shared_ptr<const DummyTemplate> dummy_template(int genus) {
+  static std::mutex mutex;
+  static std::map<int, std::shared_ptr<const DummyTemplate>> cache;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    auto it = cache.find(genus);
+    if (it != cache.end()) return it->second;
+  }
+  // Built outside the lock: two threads may both build it, the first wins.
+  std::shared_ptr<const DummyTemplate> built = DummyBuilder(genus).build();
+  std::lock_guard<std::mutex> lock(mutex);
+  return cache.emplace(genus, built).first->second;
+}
+
+}  // namespace hdt::triangulation

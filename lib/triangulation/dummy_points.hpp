@@ -1,0 +1,27 @@
+// The dummy point set of a genus and its Delaunay triangulation (paper,
+// section 5), built once per process and genus, certified, and copied into
+// every new triangulation.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "group/presentation.hpp"
+#include "triangulation/mesh.hpp"
+
+namespace hdt::triangulation {
+
+struct DummyTemplate {
+  int genus;
+  std::vector<Vertex> vertices;  // sites: 0 is v_0, 1 + k is m_k (k < 2g)
+  std::vector<Face> faces;
+  // The canonical words of the translation ids from |N| on, in id order: a
+  // fresh table interns them to the same ids.
+  std::vector<group::Word> extra_words;
+};
+
+// The certified template of a genus (built on first use; thread-safe).
+std::shared_ptr<const DummyTemplate> dummy_template(int genus);
+
+}  // namespace hdt::triangulation

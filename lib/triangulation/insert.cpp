@@ -1,0 +1,157 @@
+// Bowyer-Watson insertion on the surface, and insertion in Hilbert order.
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "surface/representative.hpp"
+#include "triangulation/triangulation.hpp"
+
+namespace hdt::triangulation {
+
+uint32_t Triangulation::vertex_at(const TranslatedPoint &, const Walk &at) {
+  // On the lines of two edges means at their common corner, exactly.
+  if (at.zero_edges == 0 || (at.zero_edges & (at.zero_edges - 1)) == 0) return kNone;
+  for (int i = 0; i < 3; ++i)
+    if (!(at.zero_edges & (1 << i))) return faces_[at.face].v[i];
+  throw std::logic_error("a point on all three edge lines of a face");
+}
+
+Triangulation::Inserted Triangulation::insert(double x, double y) {
+  const surface::Representative r = surface::representative(*kernel_, x, y);
+  const Walk at = walk({x, y, r.translation, -1}, hint_face());
+  const uint32_t existing = vertex_at({x, y, at.query, -1}, at);
+  if (existing != kNone) {
+    last_face_ = at.face;
+    Vertex &u = vertices_[existing];
+    if (!u.dummy) return {existing, true};
+    u.dummy = false;  // the user's point is this dummy: it stays, as theirs
+    --dummies_;
+    return {existing, false};
+  }
+  return {insert_located(x, y, r.translation, -1, false, at), false};
+}
+
+uint32_t Triangulation::insert_located(double x, double y, TranslationId home, int32_t site, bool dummy,
+                                       const Walk &at) {
+  group::TranslationTable &T = kernel_->table();
+  const auto id = uint32_t(vertices_.size());
+  if (id == kNone) throw std::length_error("too many vertices");
+  if (stamp_.size() < faces_.size()) stamp_.resize(faces_.size(), 0);
+  if (++stamp_now_ == 0) {  // wrapped: forget every old visit
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    stamp_now_ = 1;
+  }
+  visits_.clear();
+  old_faces_.clear();
+  boundary_.clear();
+  new_faces_.clear();
+
+  // The conflict region: the face copies whose circle holds q (the query
+  // sits in at.face's canonical frame, the common frame). A face is in
+  // conflict in at most one copy (its circle is smaller than sys/2), but a
+  // face next to the region may border it in two copies, so visits are
+  // keyed by (face, frame).
+  visits_.push_back({at.face, 0, true});
+  stamp_[at.face] = stamp_now_;
+  old_faces_.push_back(at.face);
+  for (std::size_t s = 0; s < visits_.size(); ++s) {
+    if (!visits_[s].conflict) continue;
+    const uint32_t f = visits_[s].face;
+    const TranslationId sigma = visits_[s].frame;
+    for (int i = 0; i < 3; ++i) {
+      const Face &F = faces_[f];
+      const uint32_t n = F.n[i];
+      const TranslationId sn = T.compose(sigma, F.nt[i]);
+      int conflict = -1;
+      if (stamp_[n] == stamp_now_)
+        for (const Visit &v : visits_)
+          if (v.face == n && v.frame == sn) conflict = v.conflict;
+      if (conflict < 0) {
+        const Face &N = faces_[n];
+        const TranslatedPoint qn{x, y, T.compose(T.inverse(sn), at.query), site};
+        conflict = kernel_->in_circle_perturbed({corner(N, 0), corner(N, 1), corner(N, 2), qn},
+                                                {N.v[0], N.v[1], N.v[2], id}) > 0;
+        if (conflict && stamp_[n] == stamp_now_)
+          for (const Visit &v : visits_)
+            if (v.face == n && v.conflict) throw std::logic_error("a face conflicts in two copies");
+        stamp_[n] = stamp_now_;
+        visits_.push_back({n, sn, conflict == 1});
+        if (conflict) old_faces_.push_back(n);
+      }
+      if (!conflict)
+        boundary_.push_back({{F.v[next(i)], T.compose(sigma, F.t[next(i)])},
+                             {F.v[prev(i)], T.compose(sigma, F.t[prev(i)])},
+                             n,
+                             twin(f, i),
+                             sn});
+    }
+  }
+  // Star the hole from q.
+  for (const BoundaryEdge &e : boundary_) new_faces_.push_back({{e.a, e.b, Corner{id, at.query}}});
+  vertices_.push_back({x, y, home, site, kNone, dummy});
+  try {
+    replace(old_faces_, new_faces_, boundary_, &new_ids_);
+  } catch (...) {
+    vertices_.pop_back();
+    throw;
+  }
+  ++live_vertices_;
+  if (dummy) ++dummies_;
+  return id;
+}
+
+namespace {
+
+// Index of (x, y) in [0, 2^16)^2 along a Hilbert curve.
+uint64_t hilbert_index(uint32_t x, uint32_t y) {
+  uint64_t d = 0;
+  for (uint32_t s = 1u << 15; s > 0; s >>= 1) {
+    const uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
+    d += uint64_t(s) * s * ((3 * rx) ^ ry);
+    if (ry == 0) {
+      if (rx == 1) x = (s - 1) - (x & (s - 1)) + (x & ~(s - 1)), y = (s - 1) - (y & (s - 1)) + (y & ~(s - 1));
+      std::swap(x, y);
+    }
+  }
+  return d;
+}
+
+uint32_t grid(double c) { return uint32_t(std::clamp((c + 1) * 32768.0, 0.0, 65535.0)); }
+
+}  // namespace
+
+void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) {
+  // Check every point first: a bad one rejects the call before any change.
+  std::vector<TranslationId> home(n);
+  std::vector<std::pair<uint64_t, uint32_t>> order(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = xy[2 * i], y = xy[2 * i + 1];
+    try {
+      home[i] = surface::representative(*kernel_, x, y).translation;
+    } catch (const std::domain_error &) {
+      throw std::domain_error("point " + std::to_string(i) + " (" + std::to_string(x) + ", " + std::to_string(y) +
+                              ") is not a finite point of the open unit disk");
+    }
+    double rx = x, ry = y;
+    if (home[i] != 0) {
+      const auto z = kernel_->table().moebius(home[i]).apply({x, y});
+      rx = z.re, ry = z.im;
+    }
+    order[i] = {hilbert_index(grid(rx), grid(ry)), uint32_t(i)};
+  }
+  std::sort(order.begin(), order.end());
+  for (const auto &[key, i] : order) {
+    const double x = xy[2 * i], y = xy[2 * i + 1];
+    const Walk at = walk({x, y, home[i], -1}, hint_face());
+    uint32_t v = vertex_at({x, y, at.query, -1}, at);
+    if (v != kNone) {
+      last_face_ = at.face;
+      if (vertices_[v].dummy) vertices_[v].dummy = false, --dummies_;
+    } else {
+      v = insert_located(x, y, home[i], -1, false, at);
+    }
+    if (out) out[i] = v;
+  }
+}
+
+}  // namespace hdt::triangulation

@@ -1,0 +1,129 @@
+// Point location (a visibility walk through translated neighbours), the star
+// of a vertex, and the nearest vertex.
+#include <stdexcept>
+
+#include "surface/representative.hpp"
+#include "triangulation/triangulation.hpp"
+
+namespace hdt::triangulation {
+
+uint32_t Triangulation::hint_face() const { return last_face_ < faces_.size() ? last_face_ : 0; }
+
+Triangulation::Walk Triangulation::walk(const TranslatedPoint &q, uint32_t start) {
+  group::TranslationTable &T = kernel_->table();
+  uint32_t f = start;
+  TranslationId qt = q.translation;  // q in the canonical frame of f
+  // The walk visits each copy of a face at most once on a Delaunay
+  // triangulation; the bound only turns a broken invariant into an error.
+  const std::size_t limit = 16 * faces_.size() + 1024;
+  for (std::size_t step = 0; step < limit; ++step) {
+    const Face &F = faces_[f];
+    const TranslatedPoint x{q.x, q.y, qt, q.site};
+    rng_ ^= rng_ << 13, rng_ ^= rng_ >> 7, rng_ ^= rng_ << 17;
+    const int first = int(rng_ % 3);  // a random first edge: no cycles
+    int zero = 0;
+    bool moved = false;
+    for (int k = 0; k < 3 && !moved; ++k) {
+      const int i = (first + k) % 3;
+      const int o = kernel_->orientation(corner(F, next(i)), corner(F, prev(i)), x);
+      if (o < 0) {
+        qt = T.compose(T.inverse(F.nt[i]), qt);
+        f = F.n[i];
+        moved = true;
+      } else if (o == 0) {
+        zero |= 1 << i;
+      }
+    }
+    if (!moved) return {f, qt, zero};
+  }
+  throw std::logic_error("point location does not end: the triangulation is broken");
+}
+
+Triangulation::Located Triangulation::locate(double x, double y) {
+  const surface::Representative r = surface::representative(*kernel_, x, y);
+  const Walk w = walk({x, y, r.translation, -1}, hint_face());
+  last_face_ = w.face;
+  return {w.face, kernel_->table().inverse(w.query)};
+}
+
+void Triangulation::star(uint32_t v, std::vector<StarFace> *out) {
+  const Vertex &u = vertices_.at(v);
+  if (!u.alive()) throw std::invalid_argument("vertex " + std::to_string(v) + " is not live");
+  group::TranslationTable &T = kernel_->table();
+  out->clear();
+  uint32_t f = u.face;
+  TranslationId frame = 0;
+  for (;;) {
+    const Face &F = faces_[f];
+    const int c = corner_of(F, v);
+    out->push_back({f, c, frame});
+    // Counterclockwise around v: the next face holds the edge v -> F's last corner.
+    const int e = next(c);
+    frame = T.compose(frame, F.nt[e]);
+    f = F.n[e];
+    if (f == u.face) break;
+    if (out->size() > faces_.size()) throw std::logic_error("the star of a vertex does not close");
+  }
+  if (frame != 0) throw std::logic_error("the star of vertex " + std::to_string(v) + " winds onto another copy");
+}
+
+void Triangulation::vertex_point(uint32_t v, double *x, double *y) {
+  const Vertex &u = vertices_.at(v);
+  if (!u.alive()) throw std::invalid_argument("vertex " + std::to_string(v) + " is not live");
+  if (u.home == 0) {
+    *x = u.x, *y = u.y;
+    return;
+  }
+  const auto &m = kernel_->table().moebius(u.home);
+  const auto z = m.apply({u.x, u.y});
+  *x = z.re, *y = z.im;
+}
+
+uint32_t Triangulation::nearest_vertex(double x, double y) {
+  group::TranslationTable &T = kernel_->table();
+  const surface::Representative r = surface::representative(*kernel_, x, y);
+  const Walk w = walk({x, y, r.translation, -1}, hint_face());
+  last_face_ = w.face;
+  const TranslatedPoint q{x, y, w.query, -1};  // the frame: w.face's canonical copy
+  // Start at the nearest corner, then move to a nearer Delaunay neighbour
+  // while there is one: a vertex none of whose neighbours is nearer has q
+  // in its Voronoi cell.
+  const Face &F = faces_[w.face];
+  int best = 0;
+  for (int i = 1; i < 3; ++i) {
+    const int s = kernel_->compare_distance(q, corner(F, i), corner(F, best));
+    if (s < 0 || (s == 0 && F.v[i] < F.v[best])) best = i;
+  }
+  uint32_t face = w.face;
+  int c = best;
+  TranslationId frame = 0;  // the copy frame(canonical copy of face) holds the current vertex
+  for (std::size_t steps = 0; steps <= vertices_.size(); ++steps) {
+    const Face &G = faces_[face];
+    const uint32_t u = G.v[c];
+    const TranslatedPoint pu = point(u, T.compose(frame, G.t[c]));
+    bool moved = false;
+    uint32_t f = face;
+    int cf = c;
+    TranslationId fr = frame;
+    do {
+      const Face &H = faces_[f];
+      const int a = next(cf);
+      const TranslatedPoint pa = point(H.v[a], T.compose(fr, H.t[a]));
+      const int s = kernel_->compare_distance(q, pa, pu);
+      if (s < 0 || (s == 0 && H.v[a] < u)) {
+        face = f, c = a, frame = fr;
+        moved = true;
+        break;
+      }
+      const int e = next(cf);
+      fr = T.compose(fr, H.nt[e]);
+      const uint32_t nf = H.n[e];
+      cf = corner_of(faces_[nf], u);
+      f = nf;
+    } while (f != face || cf != c);
+    if (!moved) return u;
+  }
+  throw std::logic_error("nearest_vertex: the descent does not end");
+}
+
+}  // namespace hdt::triangulation

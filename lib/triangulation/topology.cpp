@@ -1,0 +1,159 @@
+// Replacing a set of faces by new ones: the one primitive behind insertion,
+// removal and the flips of the dummy construction.
+#include <algorithm>
+#include <stdexcept>
+
+#include "triangulation/triangulation.hpp"
+
+namespace hdt::triangulation {
+
+int Triangulation::corner_of(const Face &f, uint32_t v) const {
+  for (int i = 0; i < 3; ++i)
+    if (f.v[i] == v) return i;
+  throw std::logic_error("a face does not hold the vertex it should");
+}
+
+int Triangulation::twin(uint32_t f, int i) const {
+  const Face &F = faces_[f];
+  const Face &N = faces_.at(F.n[i]);
+  const uint32_t a = F.v[next(i)], b = F.v[prev(i)];
+  int found = -1, matches = 0;
+  for (int k = 0; k < 3; ++k)
+    if (N.n[k] == f && N.v[next(k)] == b && N.v[prev(k)] == a) found = k, ++matches;
+  if (matches <= 1) return found;
+  // Two edges of N join the same vertices to f (a non-simplicial stage of
+  // the dummy construction): the translations tell them apart.
+  group::TranslationTable &T = kernel_->table();
+  for (int k = 0; k < 3; ++k)
+    if (N.n[k] == f && N.v[next(k)] == b && N.v[prev(k)] == a && T.compose(F.nt[i], N.t[prev(k)]) == F.t[next(i)] &&
+        T.compose(F.nt[i], N.t[next(k)]) == F.t[prev(i)])
+      return k;
+  return -1;
+}
+
+void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<NewFace> &created,
+                            const std::vector<BoundaryEdge> &boundary, std::vector<uint32_t> *ids) {
+  group::TranslationTable &T = kernel_->table();
+  const std::size_t k = created.size();
+  const std::size_t base = faces_.size();
+  auto slot = [&](std::size_t j) { return j < old.size() ? old[j] : uint32_t(base + (j - old.size())); };
+  auto same = [](const Corner &p, const Corner &q) { return p.v == q.v && p.t == q.t; };
+
+  // 1. Each new face in its canonical copy: kappa maps the common frame to it.
+  struct Built {
+    Face face;
+    TranslationId kappa;
+  };
+  std::vector<Built> built(k);
+  struct OuterLink {
+    uint32_t outer;
+    int edge;
+    uint32_t face;
+    TranslationId nt;
+  };
+  std::vector<OuterLink> outer_links;
+  outer_links.reserve(boundary.size());
+  for (std::size_t j = 0; j < k; ++j) {
+    const NewFace &nf = created[j];
+    int m = 0;
+    for (int i = 1; i < 3; ++i)
+      if (nf.c[i].v < nf.c[m].v) m = i;
+    const TranslationId home = vertices_[nf.c[m].v].home;
+    const TranslationId kappa = nf.c[m].t == home ? 0 : T.compose(home, T.inverse(nf.c[m].t));
+    Built &b = built[j];
+    b.kappa = kappa;
+    for (int i = 0; i < 3; ++i) {
+      b.face.v[i] = nf.c[i].v;
+      b.face.t[i] = T.compose(kappa, nf.c[i].t);
+    }
+  }
+  // 2. Adjacency: edge i of a new face (c[i+1] -> c[i+2]) meets the reversed
+  // edge of another new face, or a boundary edge a -> b with the region (the
+  // new face) on its left.
+  for (std::size_t j = 0; j < k; ++j) {
+    const NewFace &nf = created[j];
+    for (int i = 0; i < 3; ++i) {
+      const Corner &a = nf.c[next(i)], &b = nf.c[prev(i)];
+      bool linked = false;
+      for (std::size_t j2 = 0; j2 < k && !linked; ++j2) {
+        if (j2 == j) continue;
+        const NewFace &other = created[j2];
+        for (int i2 = 0; i2 < 3; ++i2)
+          if (same(other.c[next(i2)], b) && same(other.c[prev(i2)], a)) {
+            built[j].face.n[i] = slot(j2);
+            built[j].face.nt[i] = T.compose(built[j].kappa, T.inverse(built[j2].kappa));
+            linked = true;
+            break;
+          }
+      }
+      for (std::size_t e = 0; e < boundary.size() && !linked; ++e) {
+        const BoundaryEdge &edge = boundary[e];
+        if (!same(edge.a, a) || !same(edge.b, b)) continue;
+        const TranslationId nt = T.compose(built[j].kappa, edge.outer_frame);
+        built[j].face.n[i] = edge.outer;
+        built[j].face.nt[i] = nt;
+        outer_links.push_back({edge.outer, edge.outer_edge, slot(j), T.inverse(nt)});
+        linked = true;
+      }
+      if (!linked) throw std::logic_error("replace: a new edge has no partner");
+    }
+  }
+  if (outer_links.size() != boundary.size()) throw std::logic_error("replace: a boundary edge has no new face");
+
+  // 3. Write: nothing below throws (capacity is reserved first).
+  const std::size_t new_size = faces_.size() + (k > old.size() ? k - old.size() : 0);
+  faces_.reserve(new_size);
+  stamp_.reserve(new_size);
+  if (ids) ids->reserve(k);
+  std::vector<uint32_t> holes(old.begin() + std::min(old.size(), k), old.end());
+  if (ids) ids->clear();
+  for (std::size_t j = 0; j < k; ++j) {
+    const uint32_t s = slot(j);
+    if (s == faces_.size()) {
+      faces_.push_back(built[j].face);
+      stamp_.push_back(0);
+    } else {
+      faces_[s] = built[j].face;
+    }
+    if (ids) ids->push_back(s);
+    for (int i = 0; i < 3; ++i) vertices_[built[j].face.v[i]].face = s;
+  }
+  for (const OuterLink &l : outer_links) {
+    faces_[l.outer].n[l.edge] = l.face;
+    faces_[l.outer].nt[l.edge] = l.nt;
+  }
+  if (k > 0) last_face_ = slot(0);
+  // 4. Fill the holes with the last faces, so ids stay dense.
+  std::sort(holes.begin(), holes.end());
+  while (!holes.empty()) {
+    const uint32_t last = uint32_t(faces_.size() - 1);
+    if (holes.back() == last) {
+      holes.pop_back();
+      faces_.pop_back();
+      stamp_.pop_back();
+      continue;
+    }
+    const uint32_t hole = holes.front();
+    holes.erase(holes.begin());
+    const Face moved = faces_[last];
+    for (int i = 0; i < 3; ++i) {
+      Face &N = faces_[moved.n[i]];
+      const uint32_t a = moved.v[next(i)], b = moved.v[prev(i)];
+      for (int e = 0; e < 3; ++e)
+        if (N.n[e] == last && N.v[next(e)] == b && N.v[prev(e)] == a) N.n[e] = hole;
+      if (vertices_[moved.v[i]].face == last) vertices_[moved.v[i]].face = hole;
+    }
+    faces_[hole] = moved;
+    for (uint32_t &n : faces_[hole].n)
+      if (n == last) n = hole;  // a face next to itself (dummy construction only)
+    faces_.pop_back();
+    stamp_.pop_back();
+    if (ids)
+      for (uint32_t &id : *ids)
+        if (id == last) id = hole;
+    if (last_face_ == last) last_face_ = hole;
+  }
+  if (last_face_ >= faces_.size()) last_face_ = 0;
+}
+
+}  // namespace hdt::triangulation

@@ -1,0 +1,153 @@
+// The Delaunay triangulation of a finite point set on M_g.
+//
+// Invariant between public calls: the stored faces form the Delaunay
+// triangulation (ties broken by the kernel's symbolic perturbation) of the
+// vertices on M_g, a simplicial complex whose faces all have hyperbolic
+// circumdiameter < sys/2 (paper, Proposition 2.2). A new triangulation holds
+// the dummy points of its genus (dummy_points.cpp), which establish the
+// invariant; insertion (Bowyer-Watson) keeps it because an empty circle of a
+// superset is empty for the set; removal keeps it by refusing.
+//
+// Every public operation either completes or throws before changing anything
+// (the new faces are computed first, then written without failure points).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "predicates/kernel.hpp"
+#include "triangulation/mesh.hpp"
+
+namespace hdt::triangulation {
+
+using predicates::Kernel;
+using predicates::TranslatedPoint;
+
+class Triangulation {
+ public:
+  explicit Triangulation(int genus);
+
+  int genus() const { return genus_; }
+  Kernel &kernel() { return *kernel_; }
+  const std::vector<Vertex> &vertices() const { return vertices_; }
+  const std::vector<Face> &faces() const { return faces_; }
+  std::size_t vertex_count() const { return live_vertices_; }
+  std::size_t dummy_count() const { return dummies_; }
+
+  struct Inserted {
+    uint32_t vertex;
+    bool existed;  // a user vertex was already there
+  };
+  // Throws std::domain_error unless (x, y) is a finite point of the open disk.
+  Inserted insert(double x, double y);
+  // All points are checked before any is inserted; vertices may be null.
+  void insert_many(const double *xy, std::size_t n, uint32_t *vertices);
+  // False, with nothing changed, when the result would break the invariant.
+  // Throws std::invalid_argument for a dead or unknown vertex.
+  bool remove(uint32_t v);
+  std::size_t remove_dummies();
+
+  struct Located {
+    uint32_t face;
+    TranslationId translation;  // (x, y) lies in translation(canonical copy)
+  };
+  Located locate(double x, double y);
+  uint32_t nearest_vertex(double x, double y);
+
+  // Checks every invariant with exact predicates; throws std::logic_error
+  // naming the first broken one.
+  void validate();
+
+  TranslatedPoint point(uint32_t v, TranslationId t) const {
+    const Vertex &u = vertices_[v];
+    return {u.x, u.y, t, u.site};
+  }
+  TranslatedPoint corner(const Face &f, int i) const { return point(f.v[i], f.t[i]); }
+  // The representative of v in F_g, rounded.
+  void vertex_point(uint32_t v, double *x, double *y);
+
+ private:
+  friend class DummyBuilder;
+  struct Empty {};
+  Triangulation(int genus, Empty);  // no vertices: the dummy construction's start
+
+  // A corner of a face under construction: a vertex and its translation in
+  // the common frame of the operation.
+  struct Corner {
+    uint32_t v;
+    TranslationId t;
+  };
+  struct NewFace {
+    std::array<Corner, 3> c;
+  };
+  // An edge a -> b of the region being replaced (the region on its left), and
+  // the face outside it: outer_frame(canonical copy of outer) is the copy
+  // across the edge in the common frame.
+  struct BoundaryEdge {
+    Corner a, b;
+    uint32_t outer;
+    int outer_edge;
+    TranslationId outer_frame;
+  };
+
+  // Replaces the faces `old` by `created` (given in one common frame),
+  // linking them to each other and to the outer faces of `boundary`. The ids
+  // of the new faces go to *ids in order. Throws before changing anything.
+  void replace(const std::vector<uint32_t> &old, const std::vector<NewFace> &created,
+               const std::vector<BoundaryEdge> &boundary, std::vector<uint32_t> *ids);
+  // The edge of f.n[i] that is edge i of f seen from the other side.
+  int twin(uint32_t f, int i) const;
+  int corner_of(const Face &f, uint32_t v) const;
+
+  // Walks from `start` (its canonical copy) to a face whose copy contains q.
+  // q_in_face is q's translation in that face's canonical frame; zero_edges
+  // has bit i set when q lies on the line of edge i.
+  struct Walk {
+    uint32_t face;
+    TranslationId query;
+    int zero_edges;
+  };
+  Walk walk(const TranslatedPoint &q, uint32_t start);
+  uint32_t hint_face() const;
+
+  // Bowyer-Watson insertion of the point (x, y) with home `home`, located in
+  // `at`. Returns the new vertex id.
+  uint32_t insert_located(double x, double y, TranslationId home, int32_t site, bool dummy, const Walk &at);
+  // The vertex of `at`'s face at q, if q is one of its corners.
+  uint32_t vertex_at(const TranslatedPoint &q_in_face, const Walk &at);
+
+  // The faces around v, counterclockwise, with their frames relative to the
+  // first (the canonical copy of vertices_[v].face).
+  struct StarFace {
+    uint32_t face;
+    int corner;             // v's corner in the face
+    TranslationId frame;    // frame(canonical copy) is the copy around v
+  };
+  void star(uint32_t v, std::vector<StarFace> *out);
+
+  int genus_;
+  std::unique_ptr<Kernel> kernel_;
+  std::vector<Vertex> vertices_;
+  std::vector<Face> faces_;
+  std::size_t live_vertices_ = 0, dummies_ = 0;
+  uint32_t last_face_ = 0;  // where the last operation ended: the next walk's start
+  uint64_t rng_ = 0x9E3779B97F4A7C15ull;
+
+  // Scratch space reused by every operation (no allocation on the common path).
+  struct Visit {
+    uint32_t face;
+    TranslationId frame;
+    bool conflict;
+  };
+  std::vector<Visit> visits_;
+  std::vector<uint32_t> stamp_;  // per face: the operation that last visited it
+  uint32_t stamp_now_ = 0;
+  std::vector<uint32_t> old_faces_, new_ids_;
+  std::vector<NewFace> new_faces_;
+  std::vector<BoundaryEdge> boundary_;
+  std::vector<StarFace> star_;
+};
+
+}  // namespace hdt::triangulation

@@ -1,0 +1,99 @@
+// The full check of every invariant, with exact predicates. It also
+// certifies the dummy point set at construction: a triangulation of M_g
+// whose faces are counterclockwise, surround each vertex exactly once, are
+// locally Delaunay across every edge and have circumdiameter < sys/2 lifts to
+// the Delaunay triangulation of the periodic point set, so delta < sys/2.
+#include <stdexcept>
+#include <string>
+
+#include "surface/representative.hpp"
+#include "triangulation/triangulation.hpp"
+
+namespace hdt::triangulation {
+
+namespace {
+
+[[noreturn]] void broken(const std::string &what) { throw std::logic_error("invalid triangulation: " + what); }
+
+std::string face_name(uint32_t f) { return "face " + std::to_string(f); }
+
+}  // namespace
+
+void Triangulation::validate() {
+  group::TranslationTable &T = kernel_->table();
+  const std::size_t F = faces_.size();
+  std::size_t live = 0, dummies = 0;
+  for (const Vertex &u : vertices_)
+    if (u.alive()) ++live, dummies += u.dummy;
+  if (live != live_vertices_ || dummies != dummies_) broken("vertex counts are out of date");
+  if (F != 2 * (live + 2 * std::size_t(genus_) - 2))
+    broken(std::to_string(F) + " faces for " + std::to_string(live) + " vertices: Euler's formula fails");
+
+  for (uint32_t f = 0; f < F; ++f) {
+    const Face &A = faces_[f];
+    for (int i = 0; i < 3; ++i)
+      if (A.v[i] >= vertices_.size() || !vertices_[A.v[i]].alive())
+        broken(face_name(f) + " holds a dead vertex");
+    if (A.v[0] == A.v[1] || A.v[1] == A.v[2] || A.v[2] == A.v[0]) broken(face_name(f) + " repeats a vertex (a loop)");
+    int m = 0;
+    for (int i = 1; i < 3; ++i)
+      if (A.v[i] < A.v[m]) m = i;
+    if (A.t[m] != vertices_[A.v[m]].home) broken(face_name(f) + " is not stored in its canonical copy");
+    if (kernel_->orientation(corner(A, 0), corner(A, 1), corner(A, 2)) <= 0)
+      broken(face_name(f) + " is not counterclockwise");
+    if (kernel_->large_circumdisk(corner(A, 0), corner(A, 1), corner(A, 2)) > 0)
+      broken(face_name(f) + " has circumdiameter >= sys/2");
+    for (int i = 0; i < 3; ++i) {
+      if (A.n[i] >= F) broken(face_name(f) + " has no neighbour across an edge");
+      const int k = twin(f, i);
+      if (k < 0) broken(face_name(f) + " and its neighbour do not share the edge");
+      const Face &B = faces_[A.n[i]];
+      if (B.nt[k] != T.inverse(A.nt[i])) broken(face_name(f) + ": neighbour translations disagree");
+      if (T.compose(A.nt[i], B.t[prev(k)]) != A.t[next(i)] || T.compose(A.nt[i], B.t[next(k)]) != A.t[prev(i)])
+        broken(face_name(f) + ": the copies across an edge do not meet");
+      const uint32_t d = B.v[k];
+      if (d == A.v[0] || d == A.v[1] || d == A.v[2])
+        broken(face_name(f) + ": the vertex across an edge is one of its own (a double edge)");
+      const TranslatedPoint pd = point(d, T.compose(A.nt[i], B.t[k]));
+      if (kernel_->in_circle_perturbed({corner(A, 0), corner(A, 1), corner(A, 2), pd}, {A.v[0], A.v[1], A.v[2], d}) >= 0)
+        broken(face_name(f) + " is not locally Delaunay");
+    }
+  }
+
+  std::size_t corners = 0;
+  for (uint32_t v = 0; v < vertices_.size(); ++v) {
+    const Vertex &u = vertices_[v];
+    if (!u.alive()) continue;
+    if (u.face >= F) broken("vertex " + std::to_string(v) + " points to no face");
+    corner_of(faces_[u.face], v);
+    if (surface::representative(*kernel_, point(v, u.home)).translation != u.home)
+      broken("vertex " + std::to_string(v) + " is not stored at its representative");
+    star(v, &star_);
+    corners += star_.size();
+    // The link: distinct vertices (no double edges), turning once around v.
+    std::vector<TranslatedPoint> link;
+    link.reserve(star_.size());
+    for (std::size_t i = 0; i < star_.size(); ++i) {
+      const Face &A = faces_[star_[i].face];
+      const int a = next(star_[i].corner);
+      for (std::size_t j = 0; j < i; ++j)
+        if (faces_[star_[j].face].v[next(star_[j].corner)] == A.v[a])
+          broken("vertex " + std::to_string(v) + " has a double edge");
+      link.push_back(point(A.v[a], T.compose(star_[i].frame, A.t[a])));
+    }
+    const Face &first = faces_[star_[0].face];
+    const TranslatedPoint centre = corner(first, star_[0].corner);
+    // Count the turns that pass the direction of link[0]: each is < pi
+    // (counterclockwise faces), so two orientation signs decide.
+    int winding = 0;
+    for (std::size_t j = 1; j < link.size(); ++j) {
+      const TranslatedPoint &b = j + 1 < link.size() ? link[j + 1] : link[0];
+      if (kernel_->orientation(centre, link[j], link[0]) > 0 && kernel_->orientation(centre, link[0], b) >= 0)
+        ++winding;
+    }
+    if (winding != 1) broken("the faces around vertex " + std::to_string(v) + " wind " + std::to_string(winding) + " times");
+  }
+  if (corners != 3 * F) broken("some face corners are not in their vertex's star");
+}
+
+}  // namespace hdt::triangulation
