@@ -85,34 +85,18 @@ class DummyBuilder {
     auto midpoint = [&](int k) {
       return k < 2 * g ? Corner{uint32_t(2 + k), 0} : Corner{uint32_t(2 + k - 2 * g), T_.intern({static_cast<group::Letter>(k)})};
     };
-    std::vector<NewFace> faces;
+    // Faces A_k = (0, v_{k-1}, m_k) and B_k = (0, m_k, v_k) at 2k and 2k+1.
+    // Across side s_k, g_k(B_{k+2g}) = (g_k 0, m_k, v_{k-1}) meets A_k and
+    // g_k(A_{k+2g}) = (g_k 0, v_k, m_k) meets B_k.
+    std::vector<Face> built(2 * std::size_t(n));
+    auto A = [&](int k) { return uint32_t(2 * ((k % n + n) % n)); };
+    auto B = [&](int k) { return A(k) + 1; };
     for (int k = 0; k < n; ++k) {
       const Corner o{0, 0}, a{1, vertex_copy[(k + n - 1) % n]}, b{1, vertex_copy[k]}, m = midpoint(k);
-      faces.push_back({{o, a, m}});
-      faces.push_back({{o, m, b}});
+      const TranslationId across = T_.intern({static_cast<group::Letter>(k)});
+      built[A(k)] = Face{{o.v, a.v, m.v}, {o.t, a.t, m.t}, {B(k + 2 * g), B(k), B(k - 1)}, {across, 0, 0}};
+      built[B(k)] = Face{{o.v, m.v, b.v}, {o.t, m.t, b.t}, {A(k + 2 * g), A(k + 1), A(k)}, {across, 0, 0}};
     }
-    // Link the faces: edge a -> b meets b -> a of the face whose copy
-    // h(face) has these corners, h = t_a t'_a^{-1}.
-    std::vector<Face> built(faces.size());
-    for (std::size_t j = 0; j < faces.size(); ++j)
-      for (int i = 0; i < 3; ++i) built[j].v[i] = faces[j].c[i].v, built[j].t[i] = faces[j].c[i].t;
-    for (std::size_t j = 0; j < faces.size(); ++j)
-      for (int i = 0; i < 3; ++i) {
-        const Corner a = faces[j].c[next(i)], b = faces[j].c[prev(i)];
-        bool linked = false;
-        for (std::size_t j2 = 0; j2 < faces.size() && !linked; ++j2)
-          for (int i2 = 0; i2 < 3 && !linked; ++i2) {
-            const Corner a2 = faces[j2].c[next(i2)], b2 = faces[j2].c[prev(i2)];
-            if (a2.v != b.v || b2.v != a.v) continue;
-            const TranslationId h = T_.compose(a.t, T_.inverse(b2.t));
-            if (T_.compose(h, a2.t) != b.t) continue;
-            if (j2 == j && h == 0) continue;
-            built[j].n[i] = uint32_t(j2);
-            built[j].nt[i] = h;
-            linked = true;
-          }
-        if (!linked) throw std::logic_error("dummy points: the initial triangulation does not close");
-      }
     t_.faces_ = built;
     t_.stamp_.assign(built.size(), 0);
     for (uint32_t f = 0; f < built.size(); ++f)
@@ -200,7 +184,6 @@ class DummyBuilder {
   // largest among those of hyperbolic diameter >= sys/2.
   void refine() {
     const int g = t_.genus_;
-    const double limit = std::sqrt(1 + std::cos(M_PI / (2.0 * g)));  // cosh(sys/4)
     const std::size_t max_points = 64 * std::size_t(g) + 256;
     for (;;) {
       uint32_t best = kNone;
@@ -218,21 +201,21 @@ class DummyBuilder {
         // The plane's Euclidean normal; its Minkowski dual is the centre.
         double m[3] = {u[1] * v[2] - u[2] * v[1], -(u[2] * v[0] - u[0] * v[2]), -(u[0] * v[1] - u[1] * v[0])};
         const double mm = m[0] * m[0] - m[1] * m[1] - m[2] * m[2];
-        double cosh_r, centre[3];
+        double cosh_r = INFINITY, centre[3];
         if (mm > 0) {
           const double s = (m[0] > 0 ? 1 : -1) / std::sqrt(mm);
           for (int j = 0; j < 3; ++j) centre[j] = m[j] * s;
           cosh_r = centre[0] * P[0][0] - centre[1] * P[0][1] - centre[2] * P[0][2];
+          if (!(cosh_r >= 1)) cosh_r = INFINITY;  // rounding made nonsense: still a candidate
         } else {  // a horocycle or hypercycle: take the centroid
           double c[3], cc;
           for (int j = 0; j < 3; ++j) c[j] = P[0][j] + P[1][j] + P[2][j];
           cc = std::sqrt(c[0] * c[0] - c[1] * c[1] - c[2] * c[2]);
           for (int j = 0; j < 3; ++j) centre[j] = c[j] / cc;
-          cosh_r = INFINITY;
         }
-        if (!(cosh_r >= limit * (1 - 1e-9)) || cosh_r <= best_cosh) continue;
-        if (cosh_r < limit * (1 + 1e-9) && K_.large_circumdisk(t_.corner(F, 0), t_.corner(F, 1), t_.corner(F, 2)) < 0)
-          continue;  // close to the limit: the exact test decides
+        // The exact test decides which faces need a point; the rounded
+        // radius only orders them.
+        if (cosh_r <= best_cosh || K_.large_circumdisk(t_.corner(F, 0), t_.corner(F, 1), t_.corner(F, 2)) < 0) continue;
         best = f, best_cosh = cosh_r;
         cx = centre[1] / (1 + centre[0]), cy = centre[2] / (1 + centre[0]);
       }

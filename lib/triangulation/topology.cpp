@@ -102,8 +102,8 @@ void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<
 
   // 3. Write: nothing below throws (capacity is reserved first).
   const std::size_t new_size = faces_.size() + (k > old.size() ? k - old.size() : 0);
-  faces_.reserve(new_size);
-  stamp_.reserve(new_size);
+  if (faces_.capacity() < new_size) faces_.reserve(std::max(new_size, 2 * faces_.capacity()));
+  if (stamp_.capacity() < new_size) stamp_.reserve(std::max(new_size, 2 * stamp_.capacity()));
   if (ids) ids->reserve(k);
   std::vector<uint32_t> holes(old.begin() + std::min(old.size(), k), old.end());
   if (ids) ids->clear();
