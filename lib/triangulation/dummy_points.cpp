@@ -156,7 +156,7 @@ class DummyBuilder {
     Triangulation::Walk w{};
     for (int attempt = 0;; ++attempt) {
       if (attempt > 64) throw std::logic_error("dummy points: cannot place a refinement point");
-      w = t_.walk({x, y, 0, -1}, from);
+      w = t_.walk({x, y, 0, -1}, from, 0);
       if (w.zero_edges == 0) break;
       // On an edge line: move off it (the dummy points are ours to choose).
       x = std::nextafter(x, 0.0) * (1 - 0x1p-30);

@@ -18,10 +18,10 @@ uint32_t Triangulation::vertex_at(const TranslatedPoint &, const Walk &at) {
 
 Triangulation::Inserted Triangulation::insert(double x, double y) {
   const surface::Representative r = surface::representative(*kernel_, x, y);
-  const Walk at = walk({x, y, r.translation, -1}, hint_face());
+  const Walk at = walk_from_hint({x, y, r.translation, -1});
   const uint32_t existing = vertex_at({x, y, at.query, -1}, at);
   if (existing != kNone) {
-    last_face_ = at.face;
+    last_vertex_ = existing;
     Vertex &u = vertices_[existing];
     if (!u.dummy) return {existing, true};
     u.dummy = false;  // the user's point is this dummy: it stays, as theirs
@@ -97,6 +97,7 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, i
   }
   ++live_vertices_;
   if (dummy) ++dummies_;
+  last_vertex_ = id;
   return id;
 }
 
@@ -140,12 +141,15 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
     order[i] = {hilbert_index(grid(rx), grid(ry)), uint32_t(i)};
   }
   std::sort(order.begin(), order.end());
+  vertices_.reserve(vertices_.size() + n);
+  faces_.reserve(faces_.size() + 2 * n);
+  stamp_.reserve(faces_.size() + 2 * n);
   for (const auto &[key, i] : order) {
     const double x = xy[2 * i], y = xy[2 * i + 1];
-    const Walk at = walk({x, y, home[i], -1}, hint_face());
+    const Walk at = walk_from_hint({x, y, home[i], -1});
     uint32_t v = vertex_at({x, y, at.query, -1}, at);
     if (v != kNone) {
-      last_face_ = at.face;
+      last_vertex_ = v;
       if (vertices_[v].dummy) vertices_[v].dummy = false, --dummies_;
     } else {
       v = insert_located(x, y, home[i], -1, false, at);

@@ -7,12 +7,22 @@
 
 namespace hdt::triangulation {
 
-uint32_t Triangulation::hint_face() const { return last_face_ < faces_.size() ? last_face_ : 0; }
+Triangulation::Hint Triangulation::hint() {
+  if (last_vertex_ < vertices_.size() && vertices_[last_vertex_].alive()) {
+    const Vertex &u = vertices_[last_vertex_];
+    const Face &F = faces_[u.face];
+    group::TranslationTable &T = kernel_->table();
+    const TranslationId t = F.t[corner_of(F, last_vertex_)];
+    return {u.face, u.home == 0 ? t : T.compose(t, T.inverse(u.home))};
+  }
+  return {last_face_ < faces_.size() ? last_face_ : 0, 0};
+}
 
-Triangulation::Walk Triangulation::walk(const TranslatedPoint &q, uint32_t start) {
+Triangulation::Walk Triangulation::walk(const TranslatedPoint &q, uint32_t start, TranslationId start_frame_inverse) {
   group::TranslationTable &T = kernel_->table();
   uint32_t f = start;
-  TranslationId qt = q.translation;  // q in the canonical frame of f
+  TranslationId qt = T.compose(start_frame_inverse, q.translation);  // q in the canonical frame of f
+  int entry = -1;  // the edge we came in by: q is on its inner side
   // The walk visits each copy of a face at most once on a Delaunay
   // triangulation; the bound only turns a broken invariant into an error.
   const std::size_t limit = 16 * faces_.size() + 1024;
@@ -25,24 +35,25 @@ Triangulation::Walk Triangulation::walk(const TranslatedPoint &q, uint32_t start
     bool moved = false;
     for (int k = 0; k < 3 && !moved; ++k) {
       const int i = (first + k) % 3;
+      if (i == entry) continue;
       const int o = kernel_->orientation(corner(F, next(i)), corner(F, prev(i)), x);
       if (o < 0) {
         qt = T.compose(T.inverse(F.nt[i]), qt);
+        entry = twin(f, i);
         f = F.n[i];
         moved = true;
       } else if (o == 0) {
         zero |= 1 << i;
       }
     }
-    if (!moved) return {f, qt, zero};
+    if (!moved) return {f, qt, zero};  // q is strictly inside the entry edge
   }
   throw std::logic_error("point location does not end: the triangulation is broken");
 }
 
 Triangulation::Located Triangulation::locate(double x, double y) {
   const surface::Representative r = surface::representative(*kernel_, x, y);
-  const Walk w = walk({x, y, r.translation, -1}, hint_face());
-  last_face_ = w.face;
+  const Walk w = walk_from_hint({x, y, r.translation, -1});
   return {w.face, kernel_->table().inverse(w.query)};
 }
 
@@ -82,8 +93,7 @@ void Triangulation::vertex_point(uint32_t v, double *x, double *y) {
 uint32_t Triangulation::nearest_vertex(double x, double y) {
   group::TranslationTable &T = kernel_->table();
   const surface::Representative r = surface::representative(*kernel_, x, y);
-  const Walk w = walk({x, y, r.translation, -1}, hint_face());
-  last_face_ = w.face;
+  const Walk w = walk_from_hint({x, y, r.translation, -1});
   const TranslatedPoint q{x, y, w.query, -1};  // the frame: w.face's canonical copy
   // Start at the nearest corner, then move to a nearer Delaunay neighbour
   // while there is one: a vertex none of whose neighbours is nearer has q

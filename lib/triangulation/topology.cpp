@@ -40,19 +40,10 @@ void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<
   auto same = [](const Corner &p, const Corner &q) { return p.v == q.v && p.t == q.t; };
 
   // 1. Each new face in its canonical copy: kappa maps the common frame to it.
-  struct Built {
-    Face face;
-    TranslationId kappa;
-  };
-  std::vector<Built> built(k);
-  struct OuterLink {
-    uint32_t outer;
-    int edge;
-    uint32_t face;
-    TranslationId nt;
-  };
-  std::vector<OuterLink> outer_links;
-  outer_links.reserve(boundary.size());
+  std::vector<Built> &built = built_;
+  built.resize(k);
+  std::vector<OuterLink> &outer_links = outer_links_;
+  outer_links.clear();
   for (std::size_t j = 0; j < k; ++j) {
     const NewFace &nf = created[j];
     int m = 0;
@@ -105,7 +96,8 @@ void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<
   if (faces_.capacity() < new_size) faces_.reserve(std::max(new_size, 2 * faces_.capacity()));
   if (stamp_.capacity() < new_size) stamp_.reserve(std::max(new_size, 2 * stamp_.capacity()));
   if (ids) ids->reserve(k);
-  std::vector<uint32_t> holes(old.begin() + std::min(old.size(), k), old.end());
+  std::vector<uint32_t> &holes = holes_;
+  holes.assign(old.begin() + long(std::min(old.size(), k)), old.end());
   if (ids) ids->clear();
   for (std::size_t j = 0; j < k; ++j) {
     const uint32_t s = slot(j);

@@ -109,8 +109,21 @@ class Triangulation {
     TranslationId query;
     int zero_edges;
   };
-  Walk walk(const TranslatedPoint &q, uint32_t start);
-  uint32_t hint_face() const;
+  // The walk starts in the copy start_frame(canonical copy of start); the
+  // argument is the inverse of that frame.
+  Walk walk(const TranslatedPoint &q, uint32_t start, TranslationId start_frame_inverse);
+  // Where the next walk starts: the copy of a face around the last vertex
+  // touched, the one in which that vertex sits at its representative (so
+  // near the next point of a spatially sorted sequence).
+  struct Hint {
+    uint32_t face;
+    TranslationId frame_inverse;
+  };
+  Hint hint();
+  Walk walk_from_hint(const TranslatedPoint &q) {
+    const Hint h = hint();
+    return walk(q, h.face, h.frame_inverse);
+  }
 
   // Bowyer-Watson insertion of the point (x, y) with home `home`, located in
   // `at`. Returns the new vertex id.
@@ -132,7 +145,8 @@ class Triangulation {
   std::vector<Vertex> vertices_;
   std::vector<Face> faces_;
   std::size_t live_vertices_ = 0, dummies_ = 0;
-  uint32_t last_face_ = 0;  // where the last operation ended: the next walk's start
+  uint32_t last_face_ = 0;     // where the last operation ended
+  uint32_t last_vertex_ = kNone;  // the vertex last inserted or found
   uint64_t rng_ = 0x9E3779B97F4A7C15ull;
 
   // Scratch space reused by every operation (no allocation on the common path).
@@ -148,6 +162,19 @@ class Triangulation {
   std::vector<NewFace> new_faces_;
   std::vector<BoundaryEdge> boundary_;
   std::vector<StarFace> star_;
+  struct Built {  // a new face in its canonical copy; kappa maps the common frame to it
+    Face face;
+    TranslationId kappa;
+  };
+  struct OuterLink {
+    uint32_t outer;
+    int edge;
+    uint32_t face;
+    TranslationId nt;
+  };
+  std::vector<Built> built_;
+  std::vector<OuterLink> outer_links_;
+  std::vector<uint32_t> holes_;
 };
 
 }  // namespace hdt::triangulation
