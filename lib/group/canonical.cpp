@@ -1,6 +1,9 @@
 #include "group/canonical.hpp"
 
 #include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 
 #include "exact/precision_ladder.hpp"
@@ -39,7 +42,59 @@ Letter least_first_letter(const Presentation &p, const Word &w) {
   throw std::logic_error("canonical_word: no separating side for the Dehn-reduced word " + word_to_string(w));
 }
 
+// The generators' Lorentz matrices rounded from multiprecision (within one
+// ulp per entry), once per genus.
+const std::vector<Lorentz<double>> &rounded_generators(const Presentation &p) {
+  static std::mutex mutex;
+  static std::map<int, std::unique_ptr<std::vector<Lorentz<double>>>> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto &slot = cache[p.genus()];
+  if (!slot) {
+    auto v = std::make_unique<std::vector<Lorentz<double>>>();
+    for (Letter k = 0; k < p.letter_count(); ++k) v->push_back(accurate_lorentz(p, Word{k}));
+    slot = std::move(v);
+  }
+  return *slot;
+}
+
+// least_first_letter in double precision with a running error bound; false
+// when the bound cannot certify every test (long words), and the
+// multiprecision ladder decides. Most words met by a triangulation are short.
+bool least_first_letter_double(const Presentation &p, const Word &w, Letter *out) {
+  constexpr double u = 0x1p-53;
+  const std::vector<Lorentz<double>> &L = rounded_generators(p);
+  double P[3] = {1, 0, 0}, E[3] = {0, 0, 0};  // h(O) and a bound on its error
+  for (std::size_t i = w.size(); i-- > 0;) {
+    const auto &m = L[w[i]].m;
+    double Q[3], F[3];
+    for (int r = 0; r < 3; ++r) {
+      Q[r] = m[r][0] * P[0] + m[r][1] * P[1] + m[r][2] * P[2];
+      const double S = std::abs(m[r][0] * P[0]) + std::abs(m[r][1] * P[1]) + std::abs(m[r][2] * P[2]);
+      const double carried = std::abs(m[r][0]) * E[0] + std::abs(m[r][1]) * E[1] + std::abs(m[r][2]) * E[2];
+      // One ulp in each entry of m, three roundings in the sum, slack.
+      F[r] = (carried + 6 * u * S) * (1 + 8 * u);
+    }
+    for (int r = 0; r < 3; ++r) P[r] = Q[r], E[r] = F[r];
+  }
+  const double A = L[0].m[0][0];  // cosh of the translation length = 2 A'^2 - 1 with A' = cot(pi/4g)
+  const double margin = (A + 1) / 2 - 1;  // A'^2 - 1, the proven half-gap (less a hair below)
+  for (Letter k = 0; k < p.letter_count(); ++k) {
+    const auto &m = L[k].m;  // g_k(O) is the first column
+    const double n[3] = {1 - m[0][0], m[1][0], m[2][0]};
+    const double side = P[0] * n[0] + P[1] * n[1] + P[2] * n[2];
+    const double size = std::abs(P[0] * n[0]) + std::abs(P[1] * n[1]) + std::abs(P[2] * n[2]);
+    const double error = (E[0] * std::abs(n[0]) + E[1] * std::abs(n[1]) + E[2] * std::abs(n[2]) + 8 * u * size) * 1.01;
+    if (!(error < 0.5 * margin) || std::abs(side) <= error) return false;
+    if (side > 0) {
+      *out = k;
+      return true;
+    }
+  }
+  return false;
+}
+
 Letter least_first_letter_at(const Presentation &p, const Word &w) {
+  if (Letter k; least_first_letter_double(p, w, &k)) return k;
   return exact::with_precision(bits_needed(p, w.size()),
                                [&](auto zero) { return least_first_letter<decltype(zero)>(p, w); });
 }

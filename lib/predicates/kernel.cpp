@@ -86,8 +86,15 @@ int32_t Kernel::add_site(const ExactSite &site, double *x, double *y) {
   if (field_.sign(w) <= 0) throw std::domain_error("add_site: the point is not inside the open unit disk");
   // Quotients in 132-bit MPFR, then rounded: within u |.| + 2^-120 of exact.
   const double z = field_.approximate(site.Z);
-  SiteData data{site, field_.approximate(site.X) / z, field_.approximate(site.Y) / z, 0};
+  SiteData data{site, field_.approximate(site.X) / z, field_.approximate(site.Y) / z, 0, {0, 0, 0}};
   data.rounding = 4 * kUnit * std::fmax(std::abs(data.x), std::abs(data.y)) + 0x1p-100;
+  // N = (Z^2 + X^2 + Y^2, 2XZ, 2YZ) / w, each part exact before rounding.
+  const FieldElement r2 = field_.add(field_.mul(site.X, site.X), field_.mul(site.Y, site.Y));
+  const FieldElement two_z = field_.add(site.Z, site.Z);
+  const double den = field_.approximate(w);
+  data.n[0] = field_.approximate(field_.add(zz, r2)) / den;
+  data.n[1] = field_.approximate(field_.mul(site.X, two_z)) / den;
+  data.n[2] = field_.approximate(field_.mul(site.Y, two_z)) / den;
   sites_.push_back(data);
   *x = data.x;
   *y = data.y;
@@ -101,14 +108,17 @@ TranslatedPoint Kernel::site_point(int32_t site, TranslationId translation) cons
 
 FilteredPoint Kernel::filtered(const TranslatedPoint &p) {
   const group::Lorentz<double> &L = table_.lorentz(p.translation);
-  FilteredPoint r = filtered_point(p.x, p.y, L);
-  if (p.site >= 0) {
-    // Each coordinate of p^/w moves by at most 6/w^2 per unit of x or y
-    // (|z| < 1, w <= 1), and |L_ij| <= L_00 for a Lorentz matrix.
-    const double x = p.x, y = p.y, w = 1 - x * x - y * y - 4 * sites_[p.site].rounding;
-    if (!(w > 0)) r.error = INFINITY;
-    else r.error += 3 * L.m[0][0] * 12 * sites_[p.site].rounding / (w * w) * 1.01;
+  if (p.site < 0) return filtered_point(p.x, p.y, L);
+  // A site's hyperboloid vector is stored rounded (4u per entry): apply L
+  // (u per entry) with three more roundings.
+  const double *n = sites_[p.site].n;
+  FilteredPoint r;
+  double worst = 0;
+  for (int i = 0; i < 3; ++i) {
+    r.n[i] = L.m[i][0] * n[0] + L.m[i][1] * n[1] + L.m[i][2] * n[2];
+    worst = std::fmax(worst, std::abs(L.m[i][0] * n[0]) + std::abs(L.m[i][1] * n[1]) + std::abs(L.m[i][2] * n[2]));
   }
+  r.error = 10 * kUnit * worst * 1.01;
   return r;
 }
 

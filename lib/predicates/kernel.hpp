@@ -131,6 +131,7 @@ class Kernel {
   struct SiteData {
     ExactSite exact;
     double x, y, rounding;  // |rounded - exact| <= rounding per coordinate
+    double n[3];            // the hyperboloid vector, each entry within 4u relative
   };
   std::vector<SiteData> sites_;
   const exact::Field &field_;

@@ -14,7 +14,10 @@
 // < sys/2, decided with exact predicates, hence sys(M_g) > 2 delta_Q.
 #include "triangulation/dummy_points.hpp"
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -31,13 +34,21 @@ class DummyBuilder {
  public:
   explicit DummyBuilder(int genus) : t_(genus, Triangulation::Empty{}), K_(*t_.kernel_), T_(K_.table()) {}
 
+  static double ms() {
+    static const auto t0 = std::chrono::steady_clock::now();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  }
   std::shared_ptr<const DummyTemplate> build() {
+    ms();
     initial_triangulation();
     for (uint32_t f = 0; f < t_.faces_.size(); ++f)
       for (int i = 0; i < 3; ++i) stack_.push_back({f, i});
     lawson();
+    if (getenv("HDT_DEBUG")) fprintf(stderr, "%.1f ms initial: filtered %lu exact %lu\n", ms(), K_.statistics().filtered, K_.statistics().exact);
     refine();
+    if (getenv("HDT_DEBUG")) fprintf(stderr, "%.1f ms refined: filtered %lu exact %lu\n", ms(), K_.statistics().filtered, K_.statistics().exact);
     t_.validate();  // the certificate
+    if (getenv("HDT_DEBUG")) fprintf(stderr, "%.1f ms validated: filtered %lu exact %lu\n", ms(), K_.statistics().filtered, K_.statistics().exact);
     auto result = std::make_shared<DummyTemplate>();
     result->genus = t_.genus_;
     result->vertices = t_.vertices_;
@@ -221,7 +232,13 @@ class DummyBuilder {
       }
       if (best == kNone) return;
       if (t_.vertices_.size() > max_points) throw std::logic_error("dummy points: the refinement does not end");
-      insert(cx, cy, best);
+      // Congruent faces have symmetric circumcentres, and symmetric points
+      // are cocircular: a relative nudge of about 2^-20 keeps the set in
+      // general position, so the filters decide every test.
+      rng_ = rng_ * 6364136223846793005ull + 1442695040888963407ull;
+      const double dx = double(int64_t(rng_ >> 44) - (1 << 19)) * 0x1p-39;
+      const double dy = double(int64_t((rng_ >> 24) & 0xFFFFF) - (1 << 19)) * 0x1p-39;
+      insert(cx * (1 + dx), cy * (1 + dy), best);
     }
   }
 
@@ -230,6 +247,7 @@ class DummyBuilder {
   group::TranslationTable &T_;
   std::vector<Edge> stack_;
   std::vector<uint32_t> ids_;
+  uint64_t rng_ = 0x2545F4914F6CDD1Dull;
 };
 
 std::shared_ptr<const DummyTemplate> dummy_template(int genus) {

@@ -3,9 +3,11 @@
 // whose faces are counterclockwise, surround each vertex exactly once, are
 // locally Delaunay across every edge and have circumdiameter < sys/2 lifts to
 // the Delaunay triangulation of the periodic point set, so delta < sys/2.
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "predicates/filtered_point.hpp"
 #include "surface/representative.hpp"
 #include "triangulation/triangulation.hpp"
 
@@ -16,6 +18,25 @@ namespace {
 [[noreturn]] void broken(const std::string &what) { throw std::logic_error("invalid triangulation: " + what); }
 
 std::string face_name(uint32_t f) { return "face " + std::to_string(f); }
+
+// Sum of the angles at P between consecutive points of the closed fan L,
+// on the hyperboloid: with A' = A - <A, P> P the tangent direction, the angle
+// is atan2(det[P, A, B], -<A', B'>).
+double angle_sum(const std::array<double, 3> &P, const std::vector<std::array<double, 3>> &L) {
+  auto minkowski = [](const std::array<double, 3> &a, const std::array<double, 3> &b) {
+    return a[0] * b[0] - a[1] * b[1] - a[2] * b[2];
+  };
+  auto tangent = [&](const std::array<double, 3> &a) {
+    const double c = minkowski(a, P);
+    return std::array<double, 3>{a[0] - c * P[0], a[1] - c * P[1], a[2] - c * P[2]};
+  };
+  double sum = 0;
+  for (std::size_t j = 0; j < L.size(); ++j) {
+    const auto &a = L[j], &b = L[(j + 1) % L.size()];
+    sum += std::atan2(predicates::det3_value(P.data(), a.data(), b.data()), -minkowski(tangent(a), tangent(b)));
+  }
+  return sum;
+}
 
 }  // namespace
 
@@ -71,27 +92,30 @@ void Triangulation::validate() {
     star(v, &star_);
     corners += star_.size();
     // The link: distinct vertices (no double edges), turning once around v.
-    std::vector<TranslatedPoint> link;
+    std::vector<std::array<double, 3>> link;
     link.reserve(star_.size());
+    auto lift = [&](const TranslatedPoint &q) {
+      const predicates::FilteredPoint fp = predicates::filtered_point(q.x, q.y, T.lorentz(q.translation));
+      return std::array<double, 3>{fp.n[0], fp.n[1], fp.n[2]};
+    };
     for (std::size_t i = 0; i < star_.size(); ++i) {
       const Face &A = faces_[star_[i].face];
       const int a = next(star_[i].corner);
       for (std::size_t j = 0; j < i; ++j)
         if (faces_[star_[j].face].v[next(star_[j].corner)] == A.v[a])
           broken("vertex " + std::to_string(v) + " has a double edge");
-      link.push_back(point(A.v[a], T.compose(star_[i].frame, A.t[a])));
+      link.push_back(lift(point(A.v[a], T.compose(star_[i].frame, A.t[a]))));
     }
+    // The angles at v add up to 2 pi times the number of turns of the
+    // faces around it. Each angle is positive (counterclockwise faces,
+    // checked exactly) and computed to far better than the 1 radian margin
+    // used, so rounding the sum is a certified count.
     const Face &first = faces_[star_[0].face];
-    const TranslatedPoint centre = corner(first, star_[0].corner);
-    // Count the turns that pass the direction of link[0]: each is < pi
-    // (counterclockwise faces), so two orientation signs decide.
-    int winding = 0;
-    for (std::size_t j = 1; j < link.size(); ++j) {
-      const TranslatedPoint &b = j + 1 < link.size() ? link[j + 1] : link[0];
-      if (kernel_->orientation(centre, link[j], link[0]) > 0 && kernel_->orientation(centre, link[0], b) >= 0)
-        ++winding;
-    }
-    if (winding != 1) broken("the faces around vertex " + std::to_string(v) + " wind " + std::to_string(winding) + " times");
+    const double angles = angle_sum(lift(corner(first, star_[0].corner)), link);
+    const long winding = std::lround(angles / (2 * M_PI));
+    if (std::abs(angles - 2 * M_PI * double(winding)) > 1) broken("the angles around a vertex are not a whole turn");
+    if (winding != 1)
+      broken("the faces around vertex " + std::to_string(v) + " turn " + std::to_string(winding) + " times");
   }
   if (corners != 3 * F) broken("some face corners are not in their vertex's star");
 }
