@@ -192,9 +192,11 @@ HDT_API int hdt_genus(const hdt_triangulation *t) HDT_NOEXCEPT;
    HDT_EDOMAIN for NaN, infinities or |z| >= 1 (decided exactly). */
 HDT_API hdt_status hdt_insert(hdt_triangulation *t, double x, double y, uint32_t *vertex) HDT_NOEXCEPT;
 /* Inserts n points xy[2i], xy[2i+1] in a spatial order (Hilbert curve on
-   the representatives), each located from the previous one. vertices (may
-   be NULL) receives n ids: vertices[i] answers point i (a duplicate gets the
-   existing vertex; that is not an error here). Every point is checked first:
+   the representatives), each located from the previous one; new vertices
+   get their ids in that order, not in input order. vertices (may be NULL)
+   receives n ids: vertices[i] answers point i (a duplicate gets the
+   existing vertex; that is not an error here, and a dummy met this way
+   becomes a user vertex). Every point is checked first:
    a bad point rejects the whole call (HDT_EDOMAIN naming its index) and
    nothing is inserted. */
 HDT_API hdt_status hdt_insert_many(hdt_triangulation *t, const double *xy, size_t n,

@@ -1,4 +1,6 @@
 // Surface facts: systole, the polygon's vertices and side midpoints.
+#include <memory>
+
 #include "capi/guard.hpp"
 #include "group/presentation.hpp"
 #include "hdt.h"
@@ -26,6 +28,16 @@ hdt_status polygon_point(const char *function, int genus, int k, double *x, doub
   });
 }
 
+// The kernel of the genus last asked for on this thread: building one costs
+// far more than a representative (the table of N), and a caller usually asks
+// many times in a row for one genus.
+hdt::predicates::Kernel &thread_kernel(int genus) {
+  thread_local std::unique_ptr<hdt::predicates::Kernel> kernel;
+  if (!kernel || kernel->presentation().genus() != genus)
+    kernel = std::make_unique<hdt::predicates::Kernel>(hdt::group::Presentation(genus));
+  return *kernel;
+}
+
 }  // namespace
 
 extern "C" {
@@ -49,7 +61,7 @@ HDT_API hdt_status hdt_point_representative(int genus, double x, double y, doubl
     if (!length) throw ApiError(HDT_EINVAL, "length must not be NULL");
     hdt::capi::check_disk_point(x, y);
     const hdt::group::Presentation p(genus);
-    hdt::predicates::Kernel kernel(p);
+    hdt::predicates::Kernel &kernel = thread_kernel(genus);
     const hdt::surface::Representative r = hdt::surface::representative(kernel, x, y);
     const hdt::group::Word &w = kernel.table().word(r.translation);
     const hdt_status status = hdt::capi::copy_word(w, word, capacity, length);
