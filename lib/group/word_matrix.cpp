@@ -1,6 +1,7 @@
 #include "group/word_matrix.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "exact/precision_ladder.hpp"
 #include "group/generators.hpp"
@@ -54,5 +55,20 @@ Complex<double> accurate_image(const Presentation &p, const Word &w, Complex<dou
     return Complex<double>{to_double(image.re), to_double(image.im)};
   });
 }
+
+template <class T>
+Lorentz<T> accurate_lorentz_as(const Presentation &p, const Word &w) {
+  const double bits = bits_for(p, w.size()) + double(std::numeric_limits<T>::digits);
+  return exact::with_precision(bits, [&](auto zero) {
+    using U = decltype(zero);
+    const Lorentz<U> m = shared_generators<U>(p).lorentz(w.data(), w.size());
+    Lorentz<T> r;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) r.m[i][j] = static_cast<T>(m.m[i][j]);
+    return r;
+  });
+}
+
+template Lorentz<exact::mp_real<40>> accurate_lorentz_as(const Presentation &, const Word &);
 
 }  // namespace hdt::group

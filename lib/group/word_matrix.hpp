@@ -27,6 +27,11 @@ inline Lorentz<double> accurate_lorentz(const Presentation &p, const Word &w) {
   return accurate_lorentz(p, w.data(), w.size());
 }
 
+// The word's Lorentz matrix rounded once to the type T = mp_real<D>: the
+// product runs at a rung with enough bits for the word and for T.
+template <class T>
+Lorentz<T> accurate_lorentz_as(const Presentation &p, const Word &w);
+
 // The image of the disk point z under the word, computed in multiprecision
 // (enough for the word and for z's distance to the unit circle) and rounded.
 Complex<double> accurate_image(const Presentation &p, const Word &w, Complex<double> z);

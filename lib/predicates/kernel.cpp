@@ -175,6 +175,7 @@ int Kernel::orientation(const TranslatedPoint &p, const TranslatedPoint &q, cons
   const Det3 d = det3_filtered(a.n, a.error, db.d, db.error, dc.d, dc.error);
   if (const int s = sign_of(d.value, d.bound)) return ++statistics_.filtered, s;
   ++statistics_.exact;
+  if (const int s = orientation_mid(p, q, r); s != 2) return ++statistics_.refined, s;
   return orientation_exact(p, q, r);
 }
 
@@ -189,6 +190,7 @@ int Kernel::in_circle_filter(const TranslatedPoint &p, const TranslatedPoint &q,
   const Det3 d = det3_filtered(db.d, db.error, dc.d, dc.error, de.d, de.error);
   if (const int sg = sign_of(d.value, d.bound)) return ++statistics_.filtered, -sg;
   ++statistics_.exact;
+  if (const int sg = in_circle_mid(p, q, r, s); sg != 2) return ++statistics_.refined, sg;
   return 2;
 }
 

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "exact/field.hpp"
+#include "exact/multiprecision.hpp"
 #include "group/exact_lorentz.hpp"
 #include "group/translation_table.hpp"
 #include "predicates/filtered_point.hpp"
@@ -54,10 +55,18 @@ struct TranslatedPoint {
   int32_t site = -1;  // >= 0: the point is kernel site `site`, (x, y) its rounding
 };
 
+// A point of the second filter stage (133-bit reals).
+using MidReal = exact::mp_real<40>;
+struct MidPoint {
+  MidReal n[3];
+  double error;  // on each coordinate
+};
+
 // Counts of the filter's successes and failures, for tests and benchmarks.
 struct FilterStatistics {
   unsigned long filtered = 0;
   unsigned long exact = 0;
+  unsigned long refined = 0;  // decided by the 133-bit stage (counted in exact too)
 };
 
 class Kernel {
@@ -116,6 +125,18 @@ class Kernel {
     std::array<exact::FieldElement, 4> v;
   };
   ExactRow exact_row(const TranslatedPoint &p);
+  // The second filter stage, in 133-bit arithmetic with a certified bound:
+  // it decides what double precision cannot near the polygon's corners,
+  // where translations of N have entries up to cosh(2R) and cancel against
+  // the point; 2 when it cannot decide either (sites go straight to exact).
+  using Mid = MidReal;
+  bool mid_point(const TranslatedPoint &p, MidPoint *out);
+  const group::Lorentz<Mid> &mid_matrix(TranslationId id);
+  int orientation_mid(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+  int in_circle_mid(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                    const TranslatedPoint &s);
+  std::vector<std::unique_ptr<group::Lorentz<Mid>>> mid_matrices_;  // by translation id, lazily
+
   // The filtered in-circle sign, or 2 when the filter cannot decide.
   int in_circle_filter(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                        const TranslatedPoint &s);
