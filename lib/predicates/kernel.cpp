@@ -79,14 +79,14 @@ const Cyclotomic &Kernel::scale(int letters) {
   return scale_powers_[letters];
 }
 
-int32_t Kernel::add_site(const ExactSite &site, double *x, double *y) {
+int32_t Kernel::add_site(const ExactSite &site, double *x, double *y, const group::Complex<MidReal> *approximation) {
   if (field_.sign(site.Z) <= 0) throw std::domain_error("add_site: Z must be positive");
   const FieldElement zz = field_.mul(site.Z, site.Z);
   const FieldElement w = field_.sub(zz, field_.add(field_.mul(site.X, site.X), field_.mul(site.Y, site.Y)));
   if (field_.sign(w) <= 0) throw std::domain_error("add_site: the point is not inside the open unit disk");
   // Quotients in 132-bit MPFR, then rounded: within u |.| + 2^-120 of exact.
   const double z = field_.approximate(site.Z);
-  SiteData data{site, field_.approximate(site.X) / z, field_.approximate(site.Y) / z, 0, {0, 0, 0}};
+  SiteData data{site, field_.approximate(site.X) / z, field_.approximate(site.Y) / z, 0, {0, 0, 0}, false, {}};
   data.rounding = 4 * kUnit * std::fmax(std::abs(data.x), std::abs(data.y)) + 0x1p-100;
   // N = (Z^2 + X^2 + Y^2, 2XZ, 2YZ) / w, each part exact before rounding.
   const FieldElement r2 = field_.add(field_.mul(site.X, site.X), field_.mul(site.Y, site.Y));
@@ -95,6 +95,7 @@ int32_t Kernel::add_site(const ExactSite &site, double *x, double *y) {
   data.n[0] = field_.approximate(field_.add(zz, r2)) / den;
   data.n[1] = field_.approximate(field_.mul(site.X, two_z)) / den;
   data.n[2] = field_.approximate(field_.mul(site.Y, two_z)) / den;
+  if (approximation) data.has_mid = true, data.mid = *approximation;
   sites_.push_back(data);
   *x = data.x;
   *y = data.y;
@@ -328,6 +329,7 @@ int Kernel::large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q,
   if (mm < -bound_mm) return ++statistics_.filtered, 1;
   if (mm > bound_mm && std::abs(Q) > bound_Q) return ++statistics_.filtered, Q > 0 ? 1 : -1;
   ++statistics_.exact;
+  if (const int s = large_circumdisk_mid(p, q, r); s != 2) return ++statistics_.refined, s;
   return large_circumdisk_exact(p, q, r);
 }
 

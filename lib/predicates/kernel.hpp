@@ -113,7 +113,9 @@ class Kernel {
   // Registers an exact algebraic point; returns its site id and sets *x, *y
   // to its coordinates rounded to double. Throws std::domain_error unless
   // Z > 0 and the point lies in the open unit disk.
-  int32_t add_site(const ExactSite &site, double *x, double *y);
+  // approximation (may be null): the point's coordinates within 2^-128,
+  // which lets the second filter stage handle the site.
+  int32_t add_site(const ExactSite &site, double *x, double *y, const group::Complex<MidReal> *approximation = nullptr);
   TranslatedPoint site_point(int32_t site, TranslationId translation) const;
 
   const FilterStatistics &statistics() const { return statistics_; }
@@ -135,6 +137,7 @@ class Kernel {
   int orientation_mid(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int in_circle_mid(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                     const TranslatedPoint &s);
+  int large_circumdisk_mid(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   std::vector<std::unique_ptr<group::Lorentz<Mid>>> mid_matrices_;  // by translation id, lazily
 
   // The filtered in-circle sign, or 2 when the filter cannot decide.
@@ -153,6 +156,8 @@ class Kernel {
     ExactSite exact;
     double x, y, rounding;  // |rounded - exact| <= rounding per coordinate
     double n[3];            // the hyperboloid vector, each entry within 4u relative
+    bool has_mid = false;   // mid: the coordinates within 2^-128
+    group::Complex<MidReal> mid;
   };
   std::vector<SiteData> sites_;
   const exact::Field &field_;

@@ -58,23 +58,31 @@ const group::Lorentz<Mid> &Kernel::mid_matrix(TranslationId id) {
 }
 
 bool Kernel::mid_point(const TranslatedPoint &p, MidPoint *out) {
-  if (p.site >= 0) return false;
-  const Mid x(p.x), y(p.y);
+  double coordinate_error = 0;
+  Mid x(p.x), y(p.y);
+  if (p.site >= 0) {
+    const SiteData &site = sites_[p.site];
+    if (!site.has_mid) return false;
+    x = site.mid.re, y = site.mid.im;
+    coordinate_error = 0x1p-128;
+  }
   const Mid s = x * x + y * y;
   const Mid hat[3] = {Mid(1) + s, x + x, y + y};
   const Mid w = Mid(1) - s;
   const double wd = static_cast<double>(w);
   if (!(wd > 0)) return false;
   const group::Lorentz<Mid> &L = mid_matrix(p.translation);
-  double worst = 0;
+  double worst = 0, row = 0;
   for (int i = 0; i < 3; ++i) {
     const Mid v = L.m[i][0] * hat[0] + L.m[i][1] * hat[1] + L.m[i][2] * hat[2];
     out->n[i] = v / w;
     worst = std::max(worst, magnitude(L.m[i][0] * hat[0]) + magnitude(L.m[i][1] * hat[1]) + magnitude(L.m[i][2] * hat[2]));
+    row = std::max(row, magnitude(L.m[i][0]) + magnitude(L.m[i][1]) + magnitude(L.m[i][2]));
   }
   // L and the hat vector within 2u' each, the sums 3u', the quotient u', and
-  // w within 2u'(1 + s) / w relative.
-  out->error = worst / wd * (8 * kMidUnit + 4 * kMidUnit / wd) * 1.01;
+  // w within 2u'(1 + s) / w relative; a site's coordinates move hat / w by at
+  // most 6 / w^2 per unit in each.
+  out->error = (worst / wd * (8 * kMidUnit + 4 * kMidUnit / wd) + row * 12 * coordinate_error / (wd * wd)) * 1.01;
   return true;
 }
 
@@ -96,6 +104,32 @@ int Kernel::in_circle_mid(const TranslatedPoint &p, const TranslatedPoint &q, co
   // det[N 1] = -det[N_q - N_p; N_r - N_p; N_s - N_p].
   const int sg = det3_sign(db.d, db.error, db.size, dc.d, dc.error, dc.size, de.d, de.error, de.size);
   return sg != 0 ? -sg : 2;
+}
+
+int Kernel::large_circumdisk_mid(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
+  // The double filter's computation (kernel.cpp) with u' for u.
+  MidPoint a, b, e;
+  if (!mid_point(p, &a) || !mid_point(q, &b) || !mid_point(r, &e)) return 2;
+  const MidDifference d2 = difference(b, a), d3 = difference(e, a);
+  const Mid c[3] = {d2.d[1] * d3.d[2] - d2.d[2] * d3.d[1], d2.d[2] * d3.d[0] - d2.d[0] * d3.d[2],
+                    d2.d[0] * d3.d[1] - d2.d[1] * d3.d[0]};
+  const double ec = 2 * (d2.error * d3.size + d2.size * d3.error) + 4 * kMidUnit * d2.size * d3.size;
+  double cmax = 0, amax = 0;
+  for (int i = 0; i < 3; ++i) cmax = std::max(cmax, magnitude(c[i])), amax = std::max(amax, magnitude(a.n[i]));
+  cmax += ec, amax += a.error;
+  const Mid c3 = -(c[0] * a.n[0] + c[1] * a.n[1] + c[2] * a.n[2]);
+  const double e3 = 3 * (ec * amax + cmax * a.error) + 4 * kMidUnit * 3 * cmax * amax;
+  const double c3max = magnitude(c3) + e3;
+  const Mid mm = c[0] * c[0] - c[1] * c[1] - c[2] * c[2];
+  const double emm = 3 * (2 * cmax * ec) + 6 * kMidUnit * 3 * cmax * cmax;
+  using std::cos;
+  const Mid k = Mid(1) + cos(exact::pi<Mid>() / Mid(2 * presentation().genus()));  // within 4u'
+  const Mid Q = c3 * c3 - k * mm;
+  const double eQ = 2 * c3max * e3 + 2 * emm + 8 * kMidUnit * 2 * 3 * cmax * cmax + 4 * kMidUnit * c3max * c3max;
+  const double mmd = static_cast<double>(mm), Qd = static_cast<double>(Q);
+  if (mmd < -emm * 1.02) return 1;
+  if (mmd > emm * 1.02 && std::abs(Qd) > eQ * 1.02) return Qd > 0 ? 1 : -1;
+  return 2;
 }
 
 }  // namespace hdt::predicates

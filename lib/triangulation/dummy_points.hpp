@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "group/presentation.hpp"
+#include "predicates/kernel.hpp"
 #include "triangulation/mesh.hpp"
 
 namespace hdt::triangulation {
@@ -20,6 +21,10 @@ struct DummyTemplate {
   // fresh table interns them to the same ids.
   std::vector<group::Word> extra_words;
 };
+
+// Registers the sites of Q0 with a fresh kernel: site 0 is v_0, site 1 + k
+// is m_k (k < 2g); *x, *y receive their roundings (2g + 1 entries each).
+void register_q0_sites(predicates::Kernel &kernel, double *x, double *y);
 
 // The certified template of a genus (built on first use; thread-safe).
 std::shared_ptr<const DummyTemplate> dummy_template(int genus);

@@ -3,7 +3,6 @@
 
 #include <stdexcept>
 
-#include "surface/exact_polygon.hpp"
 #include "triangulation/dummy_points.hpp"
 
 namespace hdt::triangulation {
@@ -14,10 +13,8 @@ Triangulation::Triangulation(int genus, Empty)
 Triangulation::Triangulation(int genus) : Triangulation(genus, Empty{}) {
   const std::shared_ptr<const DummyTemplate> q = dummy_template(genus);
   // The same sites and translation ids as the template's kernel had.
-  double x, y;
-  if (kernel_->add_site(surface::exact_vertex(kernel_->field(), 0), &x, &y) != 0)
-    throw std::logic_error("dummy template: site ids");
-  for (int k = 0; k < 2 * genus; ++k) kernel_->add_site(surface::exact_side_midpoint(kernel_->field(), k), &x, &y);
+  std::vector<double> sx(2 * genus + 1), sy(2 * genus + 1);
+  register_q0_sites(*kernel_, sx.data(), sy.data());
   group::TranslationTable &T = kernel_->table();
   for (const group::Word &w : q->extra_words)
     if (std::size_t(T.intern(w)) + 1 != T.size()) throw std::logic_error("dummy template: translation ids");
