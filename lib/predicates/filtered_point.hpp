@@ -2,6 +2,7 @@
 // certified bound on the error of each coordinate. Input to the filters.
 #pragma once
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 
@@ -33,11 +34,28 @@ inline FilteredPoint filtered_point(double x, double y, const group::Lorentz<dou
     const double P = L.m[i][0] * p[0] + L.m[i][1] * p[1] + L.m[i][2] * p[2];
     const double S = std::abs(L.m[i][0]) * p[0] + std::abs(L.m[i][1] * p[1]) + std::abs(L.m[i][2] * p[2]);
     r.n[i] = P / w;
-    worst = std::fmax(worst, S);
+    worst = std::max(worst, S);
   }
   // Each product sum: u (L rounded) + 2u (p0) + 3u (arithmetic) per unit of
   // S; the division and w add 5u of |P| <= S; 16u covers all with room.
   r.error = 16 * kUnit * worst / w;
+  return r;
+}
+
+// The same for the identity translation: N = p^ / w, without a product.
+inline FilteredPoint filtered_point(double x, double y) {
+  const double xx = x * x, exx = std::fma(x, x, -xx);
+  const double yy = y * y, eyy = std::fma(y, y, -yy);
+  const double s = xx + yy, b = s - xx, es = (xx - (s - b)) + (yy - b);
+  const double tail = es + exx + eyy;
+  const double w = (1.0 - s) - tail;
+  const double p0 = (1.0 + s) + tail;
+  FilteredPoint r;
+  r.n[0] = p0 / w;
+  r.n[1] = 2 * x / w;
+  r.n[2] = 2 * y / w;
+  // Relative errors: w 4u, p0 2u, the division u: 8u of p0 / w covers all.
+  r.error = 8 * kUnit * r.n[0];
   return r;
 }
 
@@ -51,7 +69,7 @@ inline double det3_value(const double *a, const double *b, const double *c) {
   return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
 }
 
-inline double max_abs3(const double *a) { return std::fmax(std::abs(a[0]), std::fmax(std::abs(a[1]), std::abs(a[2]))); }
+inline double max_abs3(const double *a) { return std::max(std::abs(a[0]), std::max(std::abs(a[1]), std::abs(a[2]))); }
 
 inline Det3 det3_filtered(const double *a, double ea, const double *b, double eb, const double *c, double ec) {
   const double ma = max_abs3(a) + ea, mb = max_abs3(b) + eb, mc = max_abs3(c) + ec;

@@ -87,7 +87,7 @@ int32_t Kernel::add_site(const ExactSite &site, double *x, double *y, const grou
   // Quotients in 132-bit MPFR, then rounded: within u |.| + 2^-120 of exact.
   const double z = field_.approximate(site.Z);
   SiteData data{site, field_.approximate(site.X) / z, field_.approximate(site.Y) / z, 0, {0, 0, 0}, false, {}};
-  data.rounding = 4 * kUnit * std::fmax(std::abs(data.x), std::abs(data.y)) + 0x1p-100;
+  data.rounding = 4 * kUnit * std::max(std::abs(data.x), std::abs(data.y)) + 0x1p-100;
   // N = (Z^2 + X^2 + Y^2, 2XZ, 2YZ) / w, each part exact before rounding.
   const FieldElement r2 = field_.add(field_.mul(site.X, site.X), field_.mul(site.Y, site.Y));
   const FieldElement two_z = field_.add(site.Z, site.Z);
@@ -108,6 +108,7 @@ TranslatedPoint Kernel::site_point(int32_t site, TranslationId translation) cons
 }
 
 FilteredPoint Kernel::filtered(const TranslatedPoint &p) {
+  if (p.site < 0 && p.translation == 0) return filtered_point(p.x, p.y);
   const group::Lorentz<double> &L = table_.lorentz(p.translation);
   if (p.site < 0) return filtered_point(p.x, p.y, L);
   // A site's hyperboloid vector is stored rounded (4u per entry): apply L
@@ -117,7 +118,7 @@ FilteredPoint Kernel::filtered(const TranslatedPoint &p) {
   double worst = 0;
   for (int i = 0; i < 3; ++i) {
     r.n[i] = L.m[i][0] * n[0] + L.m[i][1] * n[1] + L.m[i][2] * n[2];
-    worst = std::fmax(worst, std::abs(L.m[i][0] * n[0]) + std::abs(L.m[i][1] * n[1]) + std::abs(L.m[i][2] * n[2]));
+    worst = std::max(worst, std::abs(L.m[i][0] * n[0]) + std::abs(L.m[i][1] * n[1]) + std::abs(L.m[i][2] * n[2]));
   }
   r.error = 10 * kUnit * worst * 1.01;
   return r;
@@ -227,8 +228,14 @@ int Kernel::in_circle_perturbed(const std::array<TranslatedPoint, 4> &pt, const 
       "repeated)");
 }
 
-int Kernel::beyond_side(const TranslatedPoint &p, int side) {
+void Kernel::beyond_sides(const TranslatedPoint &p, int *signs) {
   const FilteredPoint a = filtered(p);
+  for (int k = 0; k < int(side_normals_.size()); ++k) signs[k] = beyond_side_filtered(a, k, p);
+}
+
+int Kernel::beyond_side(const TranslatedPoint &p, int side) { return beyond_side_filtered(filtered(p), side, p); }
+
+int Kernel::beyond_side_filtered(const FilteredPoint &a, int side, const TranslatedPoint &p) {
   const auto &n = side_normals_.at(side);
   // <N, n> with the Minkowski signs folded into n (n = (1 - Q0, Q1, Q2)).
   const double value = a.n[0] * n[0] + a.n[1] * n[1] + a.n[2] * n[2];

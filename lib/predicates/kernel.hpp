@@ -88,6 +88,9 @@ class Kernel {
   // point i.
   int in_circle_perturbed(const std::array<TranslatedPoint, 4> &points, const std::array<uint32_t, 4> &vertex);
   int beyond_side(const TranslatedPoint &p, int side);
+  // beyond_side for every side k = 0..4g-1 into signs[k], the point's
+  // filtered vector computed once.
+  void beyond_sides(const TranslatedPoint &p, int *signs);
   // sign(d(p, a) - d(p, b)) for the hyperbolic distance d: -1 when a is
   // nearer to p, 0 at equal distance.
   int compare_distance(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b);
@@ -140,6 +143,7 @@ class Kernel {
   int large_circumdisk_mid(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   std::vector<std::unique_ptr<group::Lorentz<Mid>>> mid_matrices_;  // by translation id, lazily
 
+  int beyond_side_filtered(const FilteredPoint &a, int side, const TranslatedPoint &p);
   // The filtered in-circle sign, or 2 when the filter cannot decide.
   int in_circle_filter(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                        const TranslatedPoint &s);

@@ -32,13 +32,15 @@ Representative representative(predicates::Kernel &kernel, const predicates::Tran
   TranslationId h = point.translation;
   auto at = [&](TranslationId t) { return predicates::TranslatedPoint{point.x, point.y, t, point.site}; };
   std::vector<int> on;  // the sides whose line holds h(z)
+  thread_local std::vector<int> signs;  // no allocation per call
+  signs.resize(std::size_t(n));
   for (;;) {
     on.clear();
     int beyond = -1;
+    kernel.beyond_sides(at(h), signs.data());
     for (int k = 0; k < n && beyond < 0; ++k) {
-      const int s = kernel.beyond_side(at(h), k);
-      if (s > 0) beyond = k;
-      if (s == 0) on.push_back(k);
+      if (signs[k] > 0) beyond = k;
+      if (signs[k] == 0) on.push_back(k);
     }
     if (beyond < 0) break;
     h = prepend(kernel, p.inverse(beyond), h);

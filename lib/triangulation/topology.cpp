@@ -66,6 +66,15 @@ void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<
     for (int i = 0; i < 3; ++i) {
       const Corner &a = nf.c[next(i)], &b = nf.c[prev(i)];
       bool linked = false;
+      // Bowyer-Watson builds face j on boundary edge j: try that first.
+      if (j < boundary.size() && same(boundary[j].a, a) && same(boundary[j].b, b)) {
+        const BoundaryEdge &edge = boundary[j];
+        const TranslationId nt = T.compose(built[j].kappa, edge.outer_frame);
+        built[j].face.n[i] = edge.outer;
+        built[j].face.nt[i] = nt;
+        outer_links.push_back({edge.outer, edge.outer_edge, slot(j), T.inverse(nt)});
+        continue;
+      }
       for (std::size_t j2 = 0; j2 < k && !linked; ++j2) {
         if (j2 == j) continue;
         const NewFace &other = created[j2];
