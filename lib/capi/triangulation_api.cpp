@@ -109,7 +109,7 @@ HDT_API hdt_status hdt_vertex_point(const hdt_triangulation *t, uint32_t v, doub
 
 HDT_API int hdt_vertex_is_dummy(const hdt_triangulation *t, uint32_t v) HDT_NOEXCEPT {
   if (!t || v >= t->tri.vertices().size() || !t->tri.vertices()[v].alive()) return -1;
-  return t->tri.vertices()[v].dummy ? 1 : 0;
+  return t->tri.is_dummy(v) ? 1 : 0;
 }
 
 HDT_API hdt_status hdt_faces(const hdt_triangulation *t, uint32_t *vertices, int32_t *translations, size_t capacity,

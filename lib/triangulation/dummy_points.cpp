@@ -71,8 +71,9 @@ class DummyBuilder {
     const int g = p.genus(), n = p.letter_count();
     std::vector<double> sx(2 * g + 1), sy(2 * g + 1);
     register_q0_sites(K_, sx.data(), sy.data());
-    t_.vertices_.push_back({0, 0, 0, -1, kNone, true});  // 0: the centre of F_g
-    for (int s = 0; s <= 2 * g; ++s) t_.vertices_.push_back({sx[s], sy[s], 0, s, kNone, true});  // 1: v_0; 2 + k: m_k
+    t_.vertices_.push_back({0, 0, 0, kNone});  // 0: the centre of F_g
+    for (int s = 0; s <= 2 * g; ++s) t_.vertices_.push_back({sx[s], sy[s], 0, kNone});  // 1: v_0; 2 + k: m_k
+    t_.dummy_.assign(t_.vertices_.size(), true);
     double x, y;
     // vertex_copy[k] maps v_0 to v_k: g_{k-2g} maps v_k to v_{k-2g-1}, and
     // the steps -(2g+1) visit every vertex.
@@ -106,7 +107,6 @@ class DummyBuilder {
       built[B(k)] = Face{{o.v, m.v, b.v}, {o.t, m.t, b.t}, {A(k + 2 * g), A(k + 1), A(k)}, {across, 0, 0}};
     }
     t_.faces_ = built;
-    t_.stamp_.assign(built.size(), 0);
     for (uint32_t f = 0; f < built.size(); ++f)
       for (int i = 0; i < 3; ++i) t_.vertices_[built[f].v[i]].face = f;
     t_.live_vertices_ = t_.dummies_ = t_.vertices_.size();
@@ -181,7 +181,8 @@ class DummyBuilder {
       created.push_back({{a, b, Corner{id, w.query}}});
       boundary.push_back({a, b, F.n[i], t_.twin(w.face, i), F.nt[i]});
     }
-    t_.vertices_.push_back({x, y, r.translation, -1, kNone, true});
+    t_.vertices_.push_back({x, y, r.translation, kNone});
+    t_.dummy_.push_back(true);
     t_.replace({w.face}, created, boundary, &ids_);
     ++t_.live_vertices_, ++t_.dummies_;
     for (uint32_t f : ids_) stack_.push_back({f, 2});

@@ -15,7 +15,7 @@ namespace hdt::triangulation {
 
 struct DummyTemplate {
   int genus;
-  std::vector<Vertex> vertices;  // sites: 0 is v_0, 1 + k is m_k (k < 2g)
+  std::vector<Vertex> vertices;  // all dummies; 1 is v_0, 2 + k is m_k (k < 2g): the sites
   std::vector<Face> faces;
   // The canonical words of the translation ids from |N| on, in id order: a
   // fresh table interns them to the same ids.

@@ -22,25 +22,18 @@ Triangulation::Inserted Triangulation::insert(double x, double y) {
   const uint32_t existing = vertex_at({x, y, at.query, -1}, at);
   if (existing != kNone) {
     last_vertex_ = existing;
-    Vertex &u = vertices_[existing];
-    if (!u.dummy) return {existing, true};
-    u.dummy = false;  // the user's point is this dummy: it stays, as theirs
+    if (!dummy_[existing]) return {existing, true};
+    dummy_[existing] = false;  // the user's point is this dummy: it stays, as theirs
     --dummies_;
     return {existing, false};
   }
-  return {insert_located(x, y, r.translation, -1, false, at), false};
+  return {insert_located(x, y, r.translation, false, at), false};
 }
 
-uint32_t Triangulation::insert_located(double x, double y, TranslationId home, int32_t site, bool dummy,
-                                       const Walk &at) {
+uint32_t Triangulation::insert_located(double x, double y, TranslationId home, bool dummy, const Walk &at) {
   group::TranslationTable &T = kernel_->table();
   const auto id = uint32_t(vertices_.size());
   if (id == kNone) throw std::length_error("too many vertices");
-  if (stamp_.size() < faces_.size()) stamp_.resize(faces_.size(), 0);
-  if (++stamp_now_ == 0) {  // wrapped: forget every old visit
-    std::fill(stamp_.begin(), stamp_.end(), 0);
-    stamp_now_ = 1;
-  }
   visits_.clear();
   old_faces_.clear();
   boundary_.clear();
@@ -52,7 +45,6 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, i
   // face next to the region may border it in two copies, so visits are
   // keyed by (face, frame).
   visits_.push_back({at.face, 0, true});
-  stamp_[at.face] = stamp_now_;
   old_faces_.push_back(at.face);
   for (std::size_t s = 0; s < visits_.size(); ++s) {
     if (!visits_[s].conflict) continue;
@@ -62,19 +54,19 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, i
       const Face &F = faces_[f];
       const uint32_t n = F.n[i];
       const TranslationId sn = T.compose(sigma, F.nt[i]);
+      // The region and its rim are a few faces: a linear search beats a
+      // per-face mark in memory and in cache misses.
       int conflict = -1;
-      if (stamp_[n] == stamp_now_)
-        for (const Visit &v : visits_)
-          if (v.face == n && v.frame == sn) conflict = v.conflict;
+      for (const Visit &v : visits_)
+        if (v.face == n && v.frame == sn) conflict = v.conflict;
       if (conflict < 0) {
         const Face &N = faces_[n];
-        const TranslatedPoint qn{x, y, T.compose(T.inverse(sn), at.query), site};
+        const TranslatedPoint qn{x, y, T.compose(T.inverse(sn), at.query), -1};
         conflict = kernel_->in_circle_perturbed({corner(N, 0), corner(N, 1), corner(N, 2), qn},
                                                 {N.v[0], N.v[1], N.v[2], id}) > 0;
-        if (conflict && stamp_[n] == stamp_now_)
+        if (conflict)
           for (const Visit &v : visits_)
             if (v.face == n && v.conflict) throw std::logic_error("a face conflicts in two copies");
-        stamp_[n] = stamp_now_;
         visits_.push_back({n, sn, conflict == 1});
         if (conflict) old_faces_.push_back(n);
       }
@@ -88,11 +80,13 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, i
   }
   // Star the hole from q.
   for (const BoundaryEdge &e : boundary_) new_faces_.push_back({{e.a, e.b, Corner{id, at.query}}});
-  vertices_.push_back({x, y, home, site, kNone, dummy});
+  vertices_.push_back({x, y, home, kNone});
+  dummy_.push_back(dummy);
   try {
     replace(old_faces_, new_faces_, boundary_, &new_ids_);
   } catch (...) {
     vertices_.pop_back();
+    dummy_.pop_back();
     throw;
   }
   ++live_vertices_;
@@ -143,16 +137,15 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
   std::sort(order.begin(), order.end());
   vertices_.reserve(vertices_.size() + n);
   faces_.reserve(faces_.size() + 2 * n);
-  stamp_.reserve(faces_.size() + 2 * n);
   for (const auto &[key, i] : order) {
     const double x = xy[2 * i], y = xy[2 * i + 1];
     const Walk at = walk_from_hint({x, y, home[i], -1});
     uint32_t v = vertex_at({x, y, at.query, -1}, at);
     if (v != kNone) {
       last_vertex_ = v;
-      if (vertices_[v].dummy) vertices_[v].dummy = false, --dummies_;
+      if (dummy_[v]) dummy_[v] = false, --dummies_;
     } else {
-      v = insert_located(x, y, home[i], -1, false, at);
+      v = insert_located(x, y, home[i], false, at);
     }
     if (out) out[i] = v;
   }

@@ -30,12 +30,13 @@ using group::TranslationId;
 
 constexpr uint32_t kNone = UINT32_MAX;
 
+// 24 bytes: whether a vertex is a dummy is kept in a bit vector beside, and
+// the only exact algebraic points (kernel sites) are the Q0 dummies v_0 and
+// m_k, vertices 1 .. 2g+1, whose (x, y) are their roundings.
 struct Vertex {
-  double x, y;           // the point as stored: the user's input, exactly
-  TranslationId home;    // home(x + iy) lies in the half-open F_g
-  int32_t site;          // >= 0: an exact algebraic kernel site, (x, y) its rounding
-  uint32_t face;         // an incident face; kNone once the vertex is removed
-  bool dummy;
+  double x, y;         // the point as stored: the user's input, exactly
+  TranslationId home;  // home(x + iy) lies in the half-open F_g
+  uint32_t face;       // an incident face; kNone once the vertex is removed
   bool alive() const { return face != kNone; }
 };
 

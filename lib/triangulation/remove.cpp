@@ -62,7 +62,7 @@ bool Triangulation::remove(uint32_t v) {
   for (const NewFace &f : new_faces_)
     if (kernel_->large_circumdisk(at(f.c[0]), at(f.c[1]), at(f.c[2])) > 0) return false;
   replace(old_faces_, new_faces_, boundary_, &new_ids_);
-  if (vertices_[v].dummy) --dummies_;
+  if (dummy_[v]) --dummies_;
   vertices_[v].face = kNone;
   --live_vertices_;
   return true;
@@ -73,7 +73,7 @@ std::size_t Triangulation::remove_dummies() {
   for (bool progress = true; progress && dummies_ > 0;) {
     progress = false;
     for (uint32_t v = 0; v < vertices_.size(); ++v)
-      if (vertices_[v].alive() && vertices_[v].dummy && remove(v)) progress = true;
+      if (vertices_[v].alive() && dummy_[v] && remove(v)) progress = true;
   }
   return dummies_;
 }

@@ -103,7 +103,6 @@ void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<
   // 3. Write: nothing below throws (capacity is reserved first).
   const std::size_t new_size = faces_.size() + (k > old.size() ? k - old.size() : 0);
   if (faces_.capacity() < new_size) faces_.reserve(std::max(new_size, 2 * faces_.capacity()));
-  if (stamp_.capacity() < new_size) stamp_.reserve(std::max(new_size, 2 * stamp_.capacity()));
   if (ids) ids->reserve(k);
   std::vector<uint32_t> &holes = holes_;
   holes.assign(old.begin() + long(std::min(old.size(), k)), old.end());
@@ -112,7 +111,6 @@ void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<
     const uint32_t s = slot(j);
     if (s == faces_.size()) {
       faces_.push_back(built[j].face);
-      stamp_.push_back(0);
     } else {
       faces_[s] = built[j].face;
     }
@@ -131,7 +129,6 @@ void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<
     if (holes.back() == last) {
       holes.pop_back();
       faces_.pop_back();
-      stamp_.pop_back();
       continue;
     }
     const uint32_t hole = holes.front();
@@ -148,7 +145,6 @@ void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<
     for (uint32_t &n : faces_[hole].n)
       if (n == last) n = hole;  // a face next to itself (dummy construction only)
     faces_.pop_back();
-    stamp_.pop_back();
     if (ids)
       for (uint32_t &id : *ids)
         if (id == last) id = hole;

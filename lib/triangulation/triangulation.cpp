@@ -20,7 +20,7 @@ Triangulation::Triangulation(int genus) : Triangulation(genus, Empty{}) {
     if (std::size_t(T.intern(w)) + 1 != T.size()) throw std::logic_error("dummy template: translation ids");
   vertices_ = q->vertices;
   faces_ = q->faces;
-  stamp_.assign(faces_.size(), 0);
+  dummy_.assign(vertices_.size(), true);
   live_vertices_ = dummies_ = vertices_.size();
 }
 

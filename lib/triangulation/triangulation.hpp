@@ -60,9 +60,12 @@ class Triangulation {
   // naming the first broken one.
   void validate();
 
+  bool is_dummy(uint32_t v) const { return dummy_[v]; }
+  // The kernel site of vertex v, or -1: sites 0 .. 2g are vertices 1 .. 2g+1.
+  int32_t site_of(uint32_t v) const { return v >= 1 && v <= uint32_t(2 * genus_ + 1) ? int32_t(v - 1) : -1; }
   TranslatedPoint point(uint32_t v, TranslationId t) const {
     const Vertex &u = vertices_[v];
-    return {u.x, u.y, t, u.site};
+    return {u.x, u.y, t, site_of(v)};
   }
   TranslatedPoint corner(const Face &f, int i) const { return point(f.v[i], f.t[i]); }
   // The representative of v in F_g, rounded.
@@ -127,7 +130,7 @@ class Triangulation {
 
   // Bowyer-Watson insertion of the point (x, y) with home `home`, located in
   // `at`. Returns the new vertex id.
-  uint32_t insert_located(double x, double y, TranslationId home, int32_t site, bool dummy, const Walk &at);
+  uint32_t insert_located(double x, double y, TranslationId home, bool dummy, const Walk &at);
   // The vertex of `at`'s face at q, if q is one of its corners.
   uint32_t vertex_at(const TranslatedPoint &q_in_face, const Walk &at);
 
@@ -143,6 +146,7 @@ class Triangulation {
   int genus_;
   std::unique_ptr<Kernel> kernel_;
   std::vector<Vertex> vertices_;
+  std::vector<bool> dummy_;  // per vertex
   std::vector<Face> faces_;
   std::size_t live_vertices_ = 0, dummies_ = 0;
   uint32_t last_face_ = 0;     // where the last operation ended
@@ -156,8 +160,6 @@ class Triangulation {
     bool conflict;
   };
   std::vector<Visit> visits_;
-  std::vector<uint32_t> stamp_;  // per face: the operation that last visited it
-  uint32_t stamp_now_ = 0;
   std::vector<uint32_t> old_faces_, new_ids_;
   std::vector<NewFace> new_faces_;
   std::vector<BoundaryEdge> boundary_;

@@ -44,8 +44,8 @@ void Triangulation::validate() {
   group::TranslationTable &T = kernel_->table();
   const std::size_t F = faces_.size();
   std::size_t live = 0, dummies = 0;
-  for (const Vertex &u : vertices_)
-    if (u.alive()) ++live, dummies += u.dummy;
+  for (uint32_t v = 0; v < vertices_.size(); ++v)
+    if (vertices_[v].alive()) ++live, dummies += dummy_[v];
   if (live != live_vertices_ || dummies != dummies_) broken("vertex counts are out of date");
   if (F != 2 * (live + 2 * std::size_t(genus_) - 2))
     broken(std::to_string(F) + " faces for " + std::to_string(live) + " vertices: Euler's formula fails");
@@ -89,7 +89,7 @@ void Triangulation::validate() {
     corner_of(faces_[u.face], v);
     // (The sites are v_0 and the m_k, k < 2g, in the half-open domain by its
     // definition; they lie on side lines, where the test is exact and slow.)
-    if (u.site < 0 && surface::representative(*kernel_, point(v, u.home)).translation != u.home)
+    if (site_of(v) < 0 && surface::representative(*kernel_, point(v, u.home)).translation != u.home)
       broken("vertex " + std::to_string(v) + " is not stored at its representative");
     star(v, &star_);
     corners += star_.size();
