@@ -2,6 +2,7 @@
 // of a vertex, and the nearest vertex.
 #include <stdexcept>
 
+#include "group/word_matrix.hpp"
 #include "surface/representative.hpp"
 #include "triangulation/triangulation.hpp"
 
@@ -85,8 +86,8 @@ void Triangulation::vertex_point(uint32_t v, double *x, double *y) {
     *x = u.x, *y = u.y;
     return;
   }
-  const auto &m = kernel_->table().moebius(u.home);
-  const auto z = m.apply({u.x, u.y});
+  // In multiprecision: near the unit circle a double Moebius map loses digits.
+  const auto z = group::accurate_image(kernel_->presentation(), kernel_->table().word(u.home), {u.x, u.y});
   *x = z.re, *y = z.im;
 }
 

@@ -19,10 +19,12 @@ namespace {
 
 std::string face_name(uint32_t f) { return "face " + std::to_string(f); }
 
-// Sum of the angles at P between consecutive points of the closed fan L,
-// on the hyperboloid: with A' = A - <A, P> P the tangent direction, the angle
-// is atan2(det[P, A, B], -<A', B'>).
-double angle_sum(const std::array<double, 3> &P, const std::vector<std::array<double, 3>> &L) {
+// The number of turns of the closed fan L around P: the sum of the angles
+// at P between consecutive points, divided by 2 pi. On the hyperboloid, with
+// A' = A - <A, P> P the tangent direction, an angle is atan2(det[P, A, B],
+// -<A', B'>). Returns -1 when rounding could reach a quarter turn (tiny
+// triangles far from the origin), and the caller counts exactly instead.
+long turns_by_angles(const std::array<double, 3> &P, const std::vector<std::array<double, 3>> &L) {
   auto minkowski = [](const std::array<double, 3> &a, const std::array<double, 3> &b) {
     return a[0] * b[0] - a[1] * b[1] - a[2] * b[2];
   };
@@ -30,12 +32,21 @@ double angle_sum(const std::array<double, 3> &P, const std::vector<std::array<do
     const double c = minkowski(a, P);
     return std::array<double, 3>{a[0] - c * P[0], a[1] - c * P[1], a[2] - c * P[2]};
   };
-  double sum = 0;
+  auto size = [](const std::array<double, 3> &a) { return std::abs(a[0]) + std::abs(a[1]) + std::abs(a[2]); };
+  double sum = 0, error = 0;
   for (std::size_t j = 0; j < L.size(); ++j) {
     const auto &a = L[j], &b = L[(j + 1) % L.size()];
-    sum += std::atan2(predicates::det3_value(P.data(), a.data(), b.data()), -minkowski(tangent(a), tangent(b)));
+    const auto ta = tangent(a), tb = tangent(b);
+    const double na = std::sqrt(std::max(0.0, -minkowski(ta, ta))), nb = std::sqrt(std::max(0.0, -minkowski(tb, tb)));
+    // Inputs carry a few ulps of |P| |A| and cancel down to |A'|: a generous
+    // bound on the angle's error is that ratio times 1e3 ulps.
+    if (!(na > 0 && nb > 0)) return -1;
+    error += 1e3 * 0x1p-53 * (size(P) * size(a) / na + size(P) * size(b) / nb) * size(P);
+    sum += std::atan2(predicates::det3_value(P.data(), a.data(), b.data()), -minkowski(ta, tb));
   }
-  return sum;
+  const long turns = std::lround(sum / (2 * M_PI));
+  if (!(error < 1) || std::abs(sum - 2 * M_PI * double(turns)) > 1) return -1;
+  return turns;
 }
 
 }  // namespace
@@ -96,8 +107,10 @@ void Triangulation::validate() {
     // The link: distinct vertices (no double edges), turning once around v.
     std::vector<std::array<double, 3>> link;
     link.reserve(star_.size());
+    bool rough = false;  // a lifted point is not accurate to 1e-9: count exactly
     auto lift = [&](const TranslatedPoint &q) {
       const predicates::FilteredPoint fp = predicates::filtered_point(q.x, q.y, T.lorentz(q.translation));
+      if (!(fp.error < 1e-9 * fp.n[0])) rough = true;
       return std::array<double, 3>{fp.n[0], fp.n[1], fp.n[2]};
     };
     for (std::size_t i = 0; i < star_.size(); ++i) {
@@ -113,9 +126,24 @@ void Triangulation::validate() {
     // checked exactly) and computed to far better than the 1 radian margin
     // used, so rounding the sum is a certified count.
     const Face &first = faces_[star_[0].face];
-    const double angles = angle_sum(lift(corner(first, star_[0].corner)), link);
-    const long winding = std::lround(angles / (2 * M_PI));
-    if (std::abs(angles - 2 * M_PI * double(winding)) > 1) broken("the angles around a vertex are not a whole turn");
+    const std::array<double, 3> centre_lift = lift(corner(first, star_[0].corner));
+    long winding = rough ? -1 : turns_by_angles(centre_lift, link);
+    if (winding < 0) {
+      // Exactly: count the turns that pass the direction of link[0]; each
+      // turn is < pi (counterclockwise faces), so two signs decide.
+      std::vector<TranslatedPoint> exact;
+      for (const StarFace &s : star_) {
+        const Face &A = faces_[s.face];
+        exact.push_back(point(A.v[next(s.corner)], T.compose(s.frame, A.t[next(s.corner)])));
+      }
+      const TranslatedPoint centre = corner(first, star_[0].corner);
+      winding = 0;
+      for (std::size_t j = 1; j < exact.size(); ++j) {
+        const TranslatedPoint &b = j + 1 < exact.size() ? exact[j + 1] : exact[0];
+        if (kernel_->orientation(centre, exact[j], exact[0]) > 0 && kernel_->orientation(centre, exact[0], b) >= 0)
+          ++winding;
+      }
+    }
     if (winding != 1)
       broken("the faces around vertex " + std::to_string(v) + " turn " + std::to_string(winding) + " times");
   }
