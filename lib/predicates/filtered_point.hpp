@@ -17,12 +17,20 @@ struct FilteredPoint {
 
 constexpr double kUnit = DBL_EPSILON / 2;  // u = 2^-53
 
+// The rounding error of x * x, exactly (Dekker's product: no fma call on
+// targets built without FMA instructions).
+inline double square_error(double x, double xx) {
+  const double c = 134217729.0 * x;  // 2^27 + 1
+  const double hi = c - (c - x), lo = x - hi;
+  return ((hi * hi - xx) + 2 * hi * lo) + lo * lo;
+}
+
 // N = L p^ / w for the disk point (x, y), L the correctly rounded Lorentz
 // matrix of the translation. w = 1 - x^2 - y^2 is computed with error-free
 // products and sums, so it keeps full relative precision near the circle.
 inline FilteredPoint filtered_point(double x, double y, const group::Lorentz<double> &L) {
-  const double xx = x * x, exx = std::fma(x, x, -xx);
-  const double yy = y * y, eyy = std::fma(y, y, -yy);
+  const double xx = x * x, exx = square_error(x, xx);
+  const double yy = y * y, eyy = square_error(y, yy);
   const double s = xx + yy, b = s - xx, es = (xx - (s - b)) + (yy - b);  // s + es = xx + yy exactly
   const double tail = es + exx + eyy;
   // Relative errors: w <= 4u (1 - s is exact for s in [1/2, 2]), p0 <= 2u.
@@ -44,8 +52,8 @@ inline FilteredPoint filtered_point(double x, double y, const group::Lorentz<dou
 
 // The same for the identity translation: N = p^ / w, without a product.
 inline FilteredPoint filtered_point(double x, double y) {
-  const double xx = x * x, exx = std::fma(x, x, -xx);
-  const double yy = y * y, eyy = std::fma(y, y, -yy);
+  const double xx = x * x, exx = square_error(x, xx);
+  const double yy = y * y, eyy = square_error(y, yy);
   const double s = xx + yy, b = s - xx, es = (xx - (s - b)) + (yy - b);
   const double tail = es + exx + eyy;
   const double w = (1.0 - s) - tail;
