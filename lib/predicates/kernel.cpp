@@ -1,6 +1,7 @@
 #include "predicates/kernel.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <functional>
 #include <stdexcept>
 
@@ -108,6 +109,19 @@ TranslatedPoint Kernel::site_point(int32_t site, TranslationId translation) cons
 }
 
 FilteredPoint Kernel::filtered(const TranslatedPoint &p) {
+  uint64_t bits;
+  std::memcpy(&bits, &p.x, sizeof bits);
+  uint64_t h = bits * 0x9E3779B97F4A7C15ull;
+  std::memcpy(&bits, &p.y, sizeof bits);
+  h ^= (bits + uint64_t(uint32_t(p.translation)) * 0xC2B2AE3D27D4EB4Full) * 0x165667B19E3779F9ull;
+  CachedPoint &c = filtered_cache_[(h >> 58) & 63];
+  if (c.x == p.x && c.y == p.y && c.translation == p.translation && c.site == p.site) return c.point;
+  c.point = compute_filtered(p);
+  c.x = p.x, c.y = p.y, c.translation = p.translation, c.site = p.site;
+  return c.point;
+}
+
+FilteredPoint Kernel::compute_filtered(const TranslatedPoint &p) {
   if (p.site < 0 && p.translation == 0) return filtered_point(p.x, p.y);
   const group::Lorentz<double> &L = table_.lorentz(p.translation);
   if (p.site < 0) return filtered_point(p.x, p.y, L);

@@ -28,6 +28,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -154,6 +155,16 @@ class Kernel {
   // The double point of p for the filter; a site's rounding error is
   // folded into the error bound.
   FilteredPoint filtered(const TranslatedPoint &p);
+  FilteredPoint compute_filtered(const TranslatedPoint &p);
+  // A small direct-mapped cache of filtered points: a walk or a conflict
+  // search asks for the same few corners and query again and again.
+  struct CachedPoint {
+    double x = NAN, y = NAN;
+    TranslationId translation = -1;
+    int32_t site = -1;
+    FilteredPoint point;
+  };
+  std::array<CachedPoint, 64> filtered_cache_{};
 
   group::TranslationTable table_;
   struct SiteData {
