@@ -29,6 +29,12 @@ class TranslationTable {
   std::size_t neighbour_count() const { return neighbour_count_; }
   bool is_neighbour(TranslationId id) const { return id >= 0 && std::size_t(id) < neighbour_count_; }
 
+  // The id of a word already known to be canonical, or -1 when the table
+  // has not met it (no arithmetic).
+  TranslationId find_canonical(const Word &w) const {
+    auto it = ids_.find(w);
+    return it == ids_.end() ? -1 : it->second;
+  }
   // The id of the element of any word (canonicalised first), added if new.
   TranslationId intern(const Word &w);
   // The id of a * b (apply b first), cached.

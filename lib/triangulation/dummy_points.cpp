@@ -77,13 +77,27 @@ class DummyBuilder {
     double x, y;
     // vertex_copy[k] maps v_0 to v_k: g_{k-2g} maps v_k to v_{k-2g-1}, and
     // the steps -(2g+1) visit every vertex.
-    std::vector<TranslationId> vertex_copy(n, 0);
-    group::Word w;
-    for (int k = 0, step = 0; step < n - 1; ++step) {
-      const auto letter = static_cast<group::Letter>((k + 2 * g) % n);
-      w.insert(w.begin(), letter);
+    // The 4g letters of the cycle multiply to 1, so after m steps the
+    // element is the run [l_m .. l_1] or, equally, the inverse of the rest
+    // of the cycle; the shorter (the shortlex-least at m = 2g) is its
+    // canonical word, an element of N: found in the table without arithmetic.
+    std::vector<group::Letter> cycle;  // l_1, l_2, ...
+    std::vector<int> vertex_of_step{0};
+    for (int k = 0, step = 0; step < n; ++step) {
+      cycle.push_back(static_cast<group::Letter>((k + 2 * g) % n));
       k = ((k - 2 * g - 1) % n + n) % n;
-      vertex_copy[k] = T_.intern(w);
+      vertex_of_step.push_back(k);
+    }
+    std::vector<TranslationId> vertex_copy(n, 0);
+    for (int m = 1; m < n; ++m) {
+      const group::Word run(cycle.rend() - m, cycle.rend());  // l_m .. l_1
+      group::Word rest;                                     // l_{m+1}^-1 .. l_{4g}^-1
+      for (int i = m; i < n; ++i) rest.push_back(p.inverse(cycle[i]));
+      TranslationId id = -1;
+      if (run.size() < rest.size() || (run.size() == rest.size() && run < rest)) id = T_.find_canonical(run);
+      else id = T_.find_canonical(rest);
+      if (id < 0) id = T_.intern(run);  // not expected: the cycle stays in N
+      vertex_copy[vertex_of_step[m]] = id;
     }
     for (int k = 0; k < n; ++k) {  // a cheap guard against a wrong cycle
       const auto z = T_.moebius(vertex_copy[k]).apply({x = t_.vertices_[1].x, y = t_.vertices_[1].y});
@@ -202,9 +216,8 @@ class DummyBuilder {
         const Face &F = t_.faces_[f];
         double P[3][3];
         for (int i = 0; i < 3; ++i) {
-          const predicates::FilteredPoint fp =
-              predicates::filtered_point(t_.vertices_[F.v[i]].x, t_.vertices_[F.v[i]].y, T_.lorentz(F.t[i]));
-          for (int j = 0; j < 3; ++j) P[i][j] = fp.n[j];
+          const std::array<double, 3> n = K_.hyperboloid(t_.corner(F, i));
+          for (int j = 0; j < 3; ++j) P[i][j] = n[j];
         }
         const double u[3] = {P[1][0] - P[0][0], P[1][1] - P[0][1], P[1][2] - P[0][2]};
         const double v[3] = {P[2][0] - P[0][0], P[2][1] - P[0][1], P[2][2] - P[0][2]};
@@ -242,14 +255,15 @@ class DummyBuilder {
         const Face &F = t_.faces_[best];  // its centroid serves
         double c[3] = {0, 0, 0};
         for (int i = 0; i < 3; ++i) {
-          const predicates::FilteredPoint fp =
-              predicates::filtered_point(t_.vertices_[F.v[i]].x, t_.vertices_[F.v[i]].y, T_.lorentz(F.t[i]));
-          for (int j = 0; j < 3; ++j) c[j] += fp.n[j];
+          const std::array<double, 3> n = K_.hyperboloid(t_.corner(F, i));
+          for (int j = 0; j < 3; ++j) c[j] += n[j];
         }
         cx = c[1] / (c[0] + std::sqrt(c[0] * c[0] - c[1] * c[1] - c[2] * c[2]));
         cy = c[2] / (c[0] + std::sqrt(c[0] * c[0] - c[1] * c[1] - c[2] * c[2]));
       }
       if (t_.vertices_.size() > max_points) throw std::logic_error("dummy points: the refinement does not end");
+      if (getenv("HDT_DEBUG") && t_.vertices_.size() % 50 == 0)
+        fprintf(stderr, "%zu points, %zu faces, largest cosh r %g (limit %g) at face %u\n", t_.vertices_.size(), t_.faces_.size(), best_cosh, limit, best);
       // Congruent faces have symmetric circumcentres, and symmetric points
       // are cocircular: a relative nudge of about 2^-20 keeps the set in
       // general position, so the filters decide every test.
