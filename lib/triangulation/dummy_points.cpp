@@ -14,10 +14,7 @@
 // < sys/2, decided with exact predicates, hence sys(M_g) > 2 delta_Q.
 #include "triangulation/dummy_points.hpp"
 
-#include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -34,21 +31,13 @@ class DummyBuilder {
  public:
   explicit DummyBuilder(int genus) : t_(genus, Triangulation::Empty{}), K_(*t_.kernel_), T_(K_.table()) {}
 
-  static double ms() {
-    static const auto t0 = std::chrono::steady_clock::now();
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  }
   std::shared_ptr<const DummyTemplate> build() {
-    ms();
     initial_triangulation();
     for (uint32_t f = 0; f < t_.faces_.size(); ++f)
       for (int i = 0; i < 3; ++i) stack_.push_back({f, i});
     lawson();
-    if (getenv("HDT_DEBUG")) fprintf(stderr, "%.1f ms initial: filtered %lu exact %lu\n", ms(), K_.statistics().filtered, K_.statistics().exact - K_.statistics().refined);
     refine();
-    if (getenv("HDT_DEBUG")) fprintf(stderr, "%.1f ms refined: filtered %lu exact %lu\n", ms(), K_.statistics().filtered, K_.statistics().exact - K_.statistics().refined);
     t_.validate();  // the certificate
-    if (getenv("HDT_DEBUG")) fprintf(stderr, "%.1f ms validated: filtered %lu exact %lu\n", ms(), K_.statistics().filtered, K_.statistics().exact - K_.statistics().refined);
     auto result = std::make_shared<DummyTemplate>();
     result->genus = t_.genus_;
     result->vertices = t_.vertices_;
@@ -262,8 +251,6 @@ class DummyBuilder {
         cy = c[2] / (c[0] + std::sqrt(c[0] * c[0] - c[1] * c[1] - c[2] * c[2]));
       }
       if (t_.vertices_.size() > max_points) throw std::logic_error("dummy points: the refinement does not end");
-      if (getenv("HDT_DEBUG") && t_.vertices_.size() % 50 == 0)
-        fprintf(stderr, "%zu points, %zu faces, largest cosh r %g (limit %g) at face %u\n", t_.vertices_.size(), t_.faces_.size(), best_cosh, limit, best);
       // Congruent faces have symmetric circumcentres, and symmetric points
       // are cocircular: a relative nudge of about 2^-20 keeps the set in
       // general position, so the filters decide every test.
