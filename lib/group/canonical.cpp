@@ -1,46 +1,111 @@
 #include "group/canonical.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "exact/precision_ladder.hpp"
 #include "group/dehn.hpp"
 #include "group/generators.hpp"
 #include "group/word_matrix.hpp"
 
+// How the letters are found. P = h(O) is computed once from the Dehn-reduced
+// word; each letter k found moves it by g_k^{-1} (P <- L_{k+2g} P), so a word
+// of m letters costs about 2m matrix-vector products instead of m^2 / 2.
+// Every separation test is first tried in double precision with an error
+// bound; only the few that bound leaves open (P close to a side line, seen
+// from far away) are evaluated in multiprecision. Once P is close to O the
+// remaining letters are usually found in double precision altogether.
+//
+// Precision of the incremental peeling: P is known up to a relative error u
+// in each coordinate, which places a point at distance d from O only within
+// about u e^{2d} of its true position along the ray from O (its coordinates
+// are of size e^d and nearly cancel in t^2 - u^2 - v^2). Peeling back to O
+// uncovers that error, so it costs as many bits as computing P did: peeling
+// j letters off a product of m letters is certified at the precision of a
+// product of m + j letters (the bound of word_precision_bits, see
+// segment_capacity). Long words either take a higher rung or peel in
+// segments, each starting again from a Dehn-reduced word of the rest.
+
 namespace hdt::group {
 
 namespace {
+
+// ---------------------------------------------------------------------------
+// Precision
 
 // Bits needed to decide every separation test on a word of m letters: the
 // amplified rounding error (word_precision_bits) must stay far below the
 // margin 2(A^2 - 1) >= 2.
 double bits_needed(const Presentation &p, std::size_t m) { return 64.0 + word_precision_bits(p, m); }
 
-// The least letter k such that the line of side s_k separates O from h(O),
-// h the element of the Dehn-reduced, non-empty word w.
-template <class T>
-Letter least_first_letter(const Presentation &p, const Word &w) {
-  const GeneratorSet<T> &gens = shared_generators<T>(p);
-  const HyperboloidPoint<T> origin{};
-  const HyperboloidPoint<T> P = gens.apply(w, origin);
-  const T A = gens.moebius(0).a.re;
-  const T margin = A * A - T(1);  // half the proven bound 2(A^2 - 1)
-  for (Letter k = 0; k < p.letter_count(); ++k) {
-    const HyperboloidPoint<T> Q = gens.lorentz(k).apply(origin);  // g_k(O)
-    const T side = P.t * (T(1) - Q.t) + P.u * Q.u + P.v * Q.v;  // <P, O - Q>
-    using std::abs;
-    if (abs(side) < margin)
-      throw std::logic_error("canonical_word: separation test below its certified margin for " + word_to_string(w));
-    if (side > 0) return k;
-  }
-  // No line separates: h(O) = O, so h is the identity, impossible for a
-  // non-empty Dehn-reduced word.
-  throw std::logic_error("canonical_word: no separating side for the Dehn-reduced word " + word_to_string(w));
+constexpr std::size_t kRungs = std::size(exact::kLadderDigits10);
+
+double rung_bits(std::size_t rung) { return exact::bits_of_digits10(exact::kLadderDigits10[rung]); }
+
+// Runs f(mp_real<D>()) on the given rung of the precision ladder.
+template <class F>
+auto with_rung(std::size_t rung, F &&f) {
+  return exact::with_precision(rung_bits(rung), std::forward<F>(f));
 }
+
+// The longest product, in letters, that a rung certifies: n with
+// bits_needed(n) <= rung_bits. Peeling j letters off a word of m letters
+// needs m + j <= n. Why: each peeling step multiplies the error carried so
+// far by at most |g^{-1}| <= 6A^2 (the bound word_precision_bits uses for a
+// product factor) and adds its own rounding, no larger than a product
+// factor's since |P| only decreases as letters come off (P moves towards O).
+// After j steps the error is that of a product of m + j letters: at most
+// 2^-64 in each coordinate on the rung, far below the margin.
+std::size_t segment_capacity(const Presentation &p, std::size_t rung) {
+  const double bits = rung_bits(rung);
+  const double per_letter = word_precision_bits(p, 1) - 2.0 * std::log2(3.0);
+  // bits_needed(n) = 64 + per_letter n + 2 log2(n + 2): start above the
+  // answer (the logarithm left out) and step down.
+  double n = std::floor((bits - 64.0) / per_letter);
+  while (n > 0 && bits_needed(p, std::size_t(n)) > bits) n -= 1;
+  return n > 0 ? std::size_t(n) : 0;
+}
+
+// Relative cost of a multiplication on each rung (MPFR, measured on x86-64:
+// about 125, 230, 600 and 3900 ns).
+constexpr double kRungCost[kRungs] = {1, 2, 5, 30};
+
+struct Segment {
+  std::size_t rung = 0;
+  std::size_t steps = 0;  // letters the segment may peel; 0: no rung can
+};
+
+// The rung for peeling a word of m letters, chosen for the cheapest whole
+// schedule: a segment on rung r that peels j letters off n costs (n + j)
+// products at kRungCost[r] and leaves a word of about n - j letters for the
+// next one. A low rung that peels in a few segments often beats the next rung
+// up, whose multiplications cost several times more.
+Segment plan_segment(const Presentation &p, std::size_t m) {
+  std::size_t capacity[kRungs];
+  for (std::size_t r = 0; r < kRungs; ++r) capacity[r] = segment_capacity(p, r);
+  std::vector<double> cost(m + 1, std::numeric_limits<double>::infinity());
+  std::vector<Segment> first(m + 1);
+  cost[0] = 0;
+  for (std::size_t n = 1; n <= m; ++n)
+    for (std::size_t r = 0; r < kRungs; ++r) {
+      if (capacity[r] <= n) continue;
+      const std::size_t j = std::min(n, capacity[r] - n);
+      const double c = double(n + j) * kRungCost[r] + cost[n - j];
+      if (c < cost[n]) cost[n] = c, first[n] = Segment{r, capacity[r] - n};
+    }
+  return first[m];
+}
+
+// ---------------------------------------------------------------------------
+// Double precision with an error bound
 
 // The generators' Lorentz matrices rounded from multiprecision (within one
 // ulp per entry), once per genus.
@@ -57,46 +122,170 @@ const std::vector<Lorentz<double>> &rounded_generators(const Presentation &p) {
   return *slot;
 }
 
-// least_first_letter in double precision with a running error bound; false
-// when the bound cannot certify every test (long words), and the
-// multiprecision ladder decides. Most words met by a triangulation are short.
-bool least_first_letter_double(const Presentation &p, const Word &w, Letter *out) {
-  constexpr double u = 0x1p-53;
+struct DoubleGenerators {
+  const std::vector<Lorentz<double>> &lorentz;
+  double margin;  // A^2 - 1, half the proven gap, rounded down
+};
+
+DoubleGenerators double_generators(const Presentation &p) {
   const std::vector<Lorentz<double>> &L = rounded_generators(p);
-  double P[3] = {1, 0, 0}, E[3] = {0, 0, 0};  // h(O) and a bound on its error
-  for (std::size_t i = w.size(); i-- > 0;) {
-    const auto &m = L[w[i]].m;
-    double Q[3], F[3];
-    for (int r = 0; r < 3; ++r) {
-      Q[r] = m[r][0] * P[0] + m[r][1] * P[1] + m[r][2] * P[2];
-      const double S = std::abs(m[r][0] * P[0]) + std::abs(m[r][1] * P[1]) + std::abs(m[r][2] * P[2]);
-      const double carried = std::abs(m[r][0]) * E[0] + std::abs(m[r][1]) * E[1] + std::abs(m[r][2]) * E[2];
-      // One ulp in each entry of m, three roundings in the sum, slack.
-      F[r] = (carried + 6 * u * S) * (1 + 8 * u);
-    }
-    for (int r = 0; r < 3; ++r) P[r] = Q[r], E[r] = F[r];
-  }
-  const double A = L[0].m[0][0];  // cosh of the translation length = 2 A'^2 - 1 with A' = cot(pi/4g)
-  const double margin = (A + 1) / 2 - 1;  // A'^2 - 1, the proven half-gap (less a hair below)
-  for (Letter k = 0; k < p.letter_count(); ++k) {
-    const auto &m = L[k].m;  // g_k(O) is the first column
-    const double n[3] = {1 - m[0][0], m[1][0], m[2][0]};
-    const double side = P[0] * n[0] + P[1] * n[1] + P[2] * n[2];
-    const double size = std::abs(P[0] * n[0]) + std::abs(P[1] * n[1]) + std::abs(P[2] * n[2]);
-    const double error = (E[0] * std::abs(n[0]) + E[1] * std::abs(n[1]) + E[2] * std::abs(n[2]) + 8 * u * size) * 1.01;
-    if (!(error < 0.5 * margin) || std::abs(side) <= error) return false;
-    if (side > 0) {
-      *out = k;
-      return true;
-    }
-  }
-  return false;
+  // L[0][0][0] = cosh of the translation length = 2A^2 - 1 with A = cot(pi/4g).
+  return {L, ((L[0].m[0][0] + 1) / 2 - 1) * (1 - 0x1p-40)};
 }
 
-Letter least_first_letter_at(const Presentation &p, const Word &w) {
-  if (Letter k; least_first_letter_double(p, w, &k)) return k;
-  return exact::with_precision(bits_needed(p, w.size()),
-                               [&](auto zero) { return least_first_letter<decltype(zero)>(p, w); });
+constexpr double kUnit = 0x1p-53;  // unit roundoff of double
+constexpr double kTiny = 0x1p-1020;  // covers underflow of scaled coordinates
+
+// A hyperboloid point 2^scale (P +- E): E bounds the absolute error of each
+// coordinate of P.
+struct DoublePoint {
+  double P[3] = {1, 0, 0};
+  double E[3] = {0, 0, 0};
+  int scale = 0;
+};
+
+// L x with its error bound (x unscaled).
+DoublePoint apply(const Lorentz<double> &L, const DoublePoint &x) {
+  const auto &m = L.m;
+  DoublePoint y;
+  for (int r = 0; r < 3; ++r) {
+    y.P[r] = m[r][0] * x.P[0] + m[r][1] * x.P[1] + m[r][2] * x.P[2];
+    const double S = std::abs(m[r][0] * x.P[0]) + std::abs(m[r][1] * x.P[1]) + std::abs(m[r][2] * x.P[2]);
+    const double carried = std::abs(m[r][0]) * x.E[0] + std::abs(m[r][1]) * x.E[1] + std::abs(m[r][2]) * x.E[2];
+    // One ulp in each entry of m, three roundings in the sum, slack.
+    y.E[r] = (carried + 6 * kUnit * S) * (1 + 8 * kUnit);
+  }
+  return y;
+}
+
+// h(O) for the element h of the word, in double precision.
+DoublePoint double_image(const DoubleGenerators &d, const Word &w) {
+  DoublePoint x;
+  for (std::size_t i = w.size(); i-- > 0;) x = apply(d.lorentz[w[i]], x);
+  return x;
+}
+
+// The sign of the separation test <P, O - g_k(O)> when the error bound
+// certifies it with at least the margin, 0 otherwise (also for overflow).
+int certified_side(const DoubleGenerators &d, Letter k, const DoublePoint &x) {
+  const auto &m = d.lorentz[k].m;  // g_k(O) is the first column
+  const double n[3] = {1 - m[0][0], m[1][0], m[2][0]};
+  const double side = x.P[0] * n[0] + x.P[1] * n[1] + x.P[2] * n[2];
+  const double size = std::abs(x.P[0] * n[0]) + std::abs(x.P[1] * n[1]) + std::abs(x.P[2] * n[2]);
+  // x's error, one ulp in each entry of n and the rounding of 1 - m00, the
+  // products and the sums.
+  const double error =
+      (x.E[0] * std::abs(n[0]) + x.E[1] * std::abs(n[1]) + x.E[2] * std::abs(n[2]) + 8 * kUnit * size + kTiny) * 1.01;
+  if (std::abs(side) - error >= std::ldexp(d.margin, -x.scale)) return side > 0 ? 1 : -1;
+  return 0;
+}
+
+constexpr Letter kNoLetter = -1;   // no side line separates: the point is O
+constexpr Letter kUndecided = -2;  // a test was left open
+
+// The least letter k whose side line separates O from the point x. A test
+// the double bound leaves open goes to decide(k), which returns its sign or
+// 0 to leave it open.
+template <class Decide>
+Letter least_separating_letter(const DoubleGenerators &d, const DoublePoint &x, Decide &&decide) {
+  const Letter count = Letter(d.lorentz.size());
+  for (Letter k = 0; k < count; ++k) {
+    int sign = certified_side(d, k, x);
+    if (sign == 0) sign = decide(k);
+    if (sign == 0) return kUndecided;
+    if (sign > 0) return k;
+  }
+  return kNoLetter;
+}
+
+// Each letter lowers the geodesic length of the rest by one.
+void append_letter(Word &out, Letter k, std::size_t bound) {
+  if (out.size() >= bound) throw std::logic_error("canonical_word: peeling did not shorten the word");
+  out.push_back(k);
+}
+
+// Peels letters off the point x in double precision while its error bound
+// certifies every test. True when x reached O; false (out left as it was)
+// when a test stayed open, and multiprecision takes over.
+bool peel_in_double(const Presentation &p, const DoubleGenerators &d, DoublePoint x, Word &out, std::size_t bound) {
+  const std::size_t start = out.size();
+  for (;;) {
+    const Letter k = least_separating_letter(d, x, [](Letter) { return 0; });
+    if (k == kNoLetter) return true;
+    if (k == kUndecided) {
+      out.resize(start);
+      return false;
+    }
+    append_letter(out, k, bound);
+    x = apply(d.lorentz[p.inverse(k)], x);
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Multiprecision
+
+// P scaled by the binary exponent of P.t (its largest coordinate) and
+// rounded to double, so that far points neither overflow nor lose the
+// filter. The error bound holds P to within 2^-64 of the true point in each
+// coordinate (the invariant of a segment, see segment_capacity).
+template <class T>
+DoublePoint rounded_point(const HyperboloidPoint<T> &P) {
+  DoublePoint x;
+  x.scale = int(mpfr_get_exp(P.t.backend().data()));
+  const T *coordinates[3] = {&P.t, &P.u, &P.v};
+  const double carried = std::ldexp(0x1p-64, -x.scale);
+  for (int i = 0; i < 3; ++i) {
+    long exponent = 0;
+    const double mantissa = mpfr_get_d_2exp(&exponent, coordinates[i]->backend().data(), MPFR_RNDN);
+    x.P[i] = std::ldexp(mantissa, int(exponent - x.scale));
+    x.E[i] = kUnit * std::abs(x.P[i]) + carried + kTiny;
+  }
+  return x;
+}
+
+// The same point without the scale, for peeling on in double precision.
+DoublePoint unscaled(const DoublePoint &x) {
+  DoublePoint y;
+  for (int i = 0; i < 3; ++i) y.P[i] = std::ldexp(x.P[i], x.scale), y.E[i] = std::ldexp(x.E[i], x.scale);
+  return y;
+}
+
+// Below cosh d(O, P) = 2^24 double precision may finish the job: P's
+// rounding grows about like |P|^2 u on the way back to O.
+constexpr int kDoubleScale = 24;
+
+// The separation test for side k in multiprecision, checked against the
+// margin that the precision guarantees.
+template <class T>
+int side_sign(const GeneratorSet<T> &gens, const HyperboloidPoint<T> &P, Letter k, const T &margin, const Word &w) {
+  const auto &m = gens.lorentz(k).m;  // g_k(O) is the first column
+  const T side = P.t * (T(1) - m[0][0]) + P.u * m[1][0] + P.v * m[2][0];
+  using std::abs;
+  if (abs(side) < margin)
+    throw std::logic_error("canonical_word: separation test below its certified margin for " + word_to_string(w));
+  return side > 0 ? 1 : -1;
+}
+
+// One segment at the precision of T: computes P = h(O) for the element h of
+// the Dehn-reduced word w and peels letters off it, appending them to out.
+// True when P reached O; false once `budget` letters are peeled and the
+// precision is spent.
+template <class T>
+bool peel_segment(const Presentation &p, const DoubleGenerators &d, const Word &w, std::size_t budget, Word &out,
+                  std::size_t bound) {
+  const GeneratorSet<T> &gens = shared_generators<T>(p);
+  const T A = gens.moebius(0).a.re;
+  const T margin = A * A - T(1);  // half the proven bound 2(A^2 - 1)
+  HyperboloidPoint<T> P = gens.apply(w, HyperboloidPoint<T>{});
+  for (std::size_t j = 0;; ++j) {
+    const DoublePoint x = rounded_point(P);
+    if (x.scale <= kDoubleScale && peel_in_double(p, d, unscaled(x), out, bound)) return true;
+    if (j == budget) return false;
+    const Letter k = least_separating_letter(d, x, [&](Letter k) { return side_sign(gens, P, k, margin, w); });
+    if (k == kNoLetter) return true;  // unreachable in practice: the double path finishes at O
+    append_letter(out, k, bound);
+    P = gens.lorentz(p.inverse(k)).apply(P);
+  }
 }
 
 }  // namespace
@@ -126,18 +315,22 @@ Word canonical_word(const Presentation &p, const Letter *input, std::size_t leng
                             " letters for genus " + std::to_string(p.genus()));
   // Peel the least possible first letter off h until nothing is left. Each
   // step lowers the geodesic length by one, so there are at most |w| steps.
-  Word out;
   const std::size_t bound = w.size();
+  const DoubleGenerators d = double_generators(p);
+  Word out;
+  // Most words met by a triangulation are short: double precision suffices.
+  if (peel_in_double(p, d, double_image(d, w), out, bound)) return out;
   while (!w.empty()) {
-    if (out.size() >= bound) throw std::logic_error("canonical_word: peeling did not shorten the word");
-    const Letter k = least_first_letter_at(p, w);
-    out.push_back(k);
-    Word rest;
-    rest.reserve(w.size() + 1);
-    rest.push_back(p.inverse(k));
+    const Segment s = plan_segment(p, w.size());
+    if (s.steps == 0) throw std::logic_error("canonical_word: a peeled word outgrew the precision");
+    const std::size_t start = out.size();
+    if (with_rung(s.rung, [&](auto zero) { return peel_segment<decltype(zero)>(p, d, w, s.steps, out, bound); }))
+      break;
+    // The rung's bits are spent: go on from a Dehn-reduced word of the rest,
+    // h with this segment's letters peeled off.
+    Word rest = p.inverse(Word(out.begin() + std::ptrdiff_t(start), out.end()));
     rest.insert(rest.end(), w.begin(), w.end());
     w = dehn_reduce(p, rest);
-    if (w.size() > limit + 1) throw std::logic_error("canonical_word: a peeled word outgrew the precision");
   }
   return out;
 }

@@ -107,7 +107,7 @@ class Kernel {
   int large_circumdisk_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
 
   // The hyperboloid vector of p in double, for constructions (circumcentres
-  // of the dummy refinement), not predicates: accurate to about 1e-12
+  // of the dummy refinement), not predicates: accurate to about 1e-9
   // relative, from the 133-bit stage where double precision is not.
   std::array<double, 3> hyperboloid(const TranslatedPoint &p);
 

@@ -134,7 +134,7 @@ int Kernel::large_circumdisk_mid(const TranslatedPoint &p, const TranslatedPoint
 
 std::array<double, 3> Kernel::hyperboloid(const TranslatedPoint &p) {
   const FilteredPoint f = filtered(p);
-  if (f.error < 1e-12 * f.n[0]) return {f.n[0], f.n[1], f.n[2]};
+  if (f.error < 1e-9 * f.n[0]) return {f.n[0], f.n[1], f.n[2]};
   MidPoint m;
   if (!mid_point(p, &m)) return {f.n[0], f.n[1], f.n[2]};
   return {static_cast<double>(m.n[0]), static_cast<double>(m.n[1]), static_cast<double>(m.n[2])};
