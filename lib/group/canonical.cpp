@@ -46,14 +46,32 @@ namespace {
 // margin 2(A^2 - 1) >= 2.
 double bits_needed(const Presentation &p, std::size_t m) { return 64.0 + word_precision_bits(p, m); }
 
-constexpr std::size_t kRungs = std::size(exact::kLadderDigits10);
+// The rungs for peeling: those of the precision ladder with one more between
+// each two. The bits a word needs grow steadily with its length, and the
+// cost of a multiplication about quadratically with the bits, so a fine
+// ladder wastes less. The top rung is the ladder's (canonical_max_length).
+constexpr unsigned kPeelDigits10[] = {40, 80, 160, 320, 640, 1280, 2560};
+constexpr std::size_t kRungs = std::size(kPeelDigits10);
+static_assert(kPeelDigits10[kRungs - 1] == exact::kLadderDigits10[std::size(exact::kLadderDigits10) - 1]);
 
-double rung_bits(std::size_t rung) { return exact::bits_of_digits10(exact::kLadderDigits10[rung]); }
+// Relative cost of a matrix-vector product on each rung (MPFR, measured on
+// x86-64: 0.5 us at 40 digits, 31 us at 2560).
+constexpr double kRungCost[kRungs] = {1, 1.4, 1.9, 3, 7.3, 22, 58};
 
-// Runs f(mp_real<D>()) on the given rung of the precision ladder.
+double rung_bits(std::size_t rung) { return exact::bits_of_digits10(kPeelDigits10[rung]); }
+
+// Runs f(mp_real<D>()) on the given rung.
 template <class F>
 auto with_rung(std::size_t rung, F &&f) {
-  return exact::with_precision(rung_bits(rung), std::forward<F>(f));
+  switch (rung) {
+    case 0: return f(exact::mp_real<kPeelDigits10[0]>());
+    case 1: return f(exact::mp_real<kPeelDigits10[1]>());
+    case 2: return f(exact::mp_real<kPeelDigits10[2]>());
+    case 3: return f(exact::mp_real<kPeelDigits10[3]>());
+    case 4: return f(exact::mp_real<kPeelDigits10[4]>());
+    case 5: return f(exact::mp_real<kPeelDigits10[5]>());
+    default: return f(exact::mp_real<kPeelDigits10[6]>());
+  }
 }
 
 // The longest product, in letters, that a rung certifies: n with
@@ -73,10 +91,6 @@ std::size_t segment_capacity(const Presentation &p, std::size_t rung) {
   while (n > 0 && bits_needed(p, std::size_t(n)) > bits) n -= 1;
   return n > 0 ? std::size_t(n) : 0;
 }
-
-// Relative cost of a multiplication on each rung (MPFR, measured on x86-64:
-// about 125, 230, 600 and 3900 ns).
-constexpr double kRungCost[kRungs] = {1, 2, 5, 30};
 
 struct Segment {
   std::size_t rung = 0;
@@ -205,17 +219,13 @@ void append_letter(Word &out, Letter k, std::size_t bound) {
 }
 
 // Peels letters off the point x in double precision while its error bound
-// certifies every test. True when x reached O; false (out left as it was)
-// when a test stayed open, and multiprecision takes over.
+// certifies every test, appending them to out. True when x reached O; false
+// when a test stayed open (the letters found so far are kept).
 bool peel_in_double(const Presentation &p, const DoubleGenerators &d, DoublePoint x, Word &out, std::size_t bound) {
-  const std::size_t start = out.size();
   for (;;) {
     const Letter k = least_separating_letter(d, x, [](Letter) { return 0; });
     if (k == kNoLetter) return true;
-    if (k == kUndecided) {
-      out.resize(start);
-      return false;
-    }
+    if (k == kUndecided) return false;
     append_letter(out, k, bound);
     x = apply(d.lorentz[p.inverse(k)], x);
   }
@@ -279,7 +289,13 @@ bool peel_segment(const Presentation &p, const DoubleGenerators &d, const Word &
   HyperboloidPoint<T> P = gens.apply(w, HyperboloidPoint<T>{});
   for (std::size_t j = 0;; ++j) {
     const DoublePoint x = rounded_point(P);
-    if (x.scale <= kDoubleScale && peel_in_double(p, d, unscaled(x), out, bound)) return true;
+    if (x.scale <= kDoubleScale) {
+      // Try to finish in double precision; if it cannot, forget its letters
+      // (P stays where it is) and take one more step here.
+      const std::size_t before = out.size();
+      if (peel_in_double(p, d, unscaled(x), out, bound)) return true;
+      out.resize(before);
+    }
     if (j == budget) return false;
     const Letter k = least_separating_letter(d, x, [&](Letter k) { return side_sign(gens, P, k, margin, w); });
     if (k == kNoLetter) return true;  // unreachable in practice: the double path finishes at O
@@ -318,16 +334,19 @@ Word canonical_word(const Presentation &p, const Letter *input, std::size_t leng
   const std::size_t bound = w.size();
   const DoubleGenerators d = double_generators(p);
   Word out;
-  // Most words met by a triangulation are short: double precision suffices.
-  if (peel_in_double(p, d, double_image(d, w), out, bound)) return out;
   while (!w.empty()) {
-    const Segment s = plan_segment(p, w.size());
-    if (s.steps == 0) throw std::logic_error("canonical_word: a peeled word outgrew the precision");
     const std::size_t start = out.size();
-    if (with_rung(s.rung, [&](auto zero) { return peel_segment<decltype(zero)>(p, d, w, s.steps, out, bound); }))
-      break;
-    // The rung's bits are spent: go on from a Dehn-reduced word of the rest,
-    // h with this segment's letters peeled off.
+    // Double precision first (most words met by a triangulation are short),
+    // multiprecision when it cannot find even the first letter.
+    if (peel_in_double(p, d, double_image(d, w), out, bound)) break;
+    if (out.size() == start) {
+      const Segment s = plan_segment(p, w.size());
+      if (s.steps == 0) throw std::logic_error("canonical_word: a peeled word outgrew the precision");
+      if (with_rung(s.rung, [&](auto zero) { return peel_segment<decltype(zero)>(p, d, w, s.steps, out, bound); }))
+        break;
+    }
+    // The bound or the rung's bits are spent: go on from a Dehn-reduced word
+    // of the rest, h with the letters found since `start` peeled off.
     Word rest = p.inverse(Word(out.begin() + std::ptrdiff_t(start), out.end()));
     rest.insert(rest.end(), w.begin(), w.end());
     w = dehn_reduce(p, rest);
