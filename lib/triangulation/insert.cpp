@@ -97,10 +97,10 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, b
 
 namespace {
 
-// Index of (x, y) in [0, 2^16)^2 along a Hilbert curve.
+// Index of (x, y) in [0, 2^15)^2 along a Hilbert curve (30 bits).
 uint32_t hilbert_index(uint32_t x, uint32_t y) {
   uint32_t d = 0;
-  for (uint32_t s = 1u << 15; s > 0; s >>= 1) {
+  for (uint32_t s = 1u << 14; s > 0; s >>= 1) {
     const uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
     d += s * s * ((3 * rx) ^ ry);
     if (ry == 0) {
@@ -111,7 +111,9 @@ uint32_t hilbert_index(uint32_t x, uint32_t y) {
   return d;
 }
 
-uint32_t grid(double c) { return uint32_t(std::clamp((c + 1) * 32768.0, 0.0, 65535.0)); }
+uint32_t grid(double c) { return uint32_t(std::clamp((c + 1) * 16384.0, 0.0, 32767.0)); }
+
+constexpr uint32_t kAtHome = 1u << 31;  // in a sort key: the point is its own representative
 
 }  // namespace
 
@@ -119,7 +121,8 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
   // Check every point first: a bad one rejects the call before any change.
   // The points are copied in Hilbert order of their representatives (reading
   // the caller's array in that order would miss the cache at every point);
-  // 24 bytes each, and the representative is found again when inserting.
+  // 24 bytes each, and the representative is found again when inserting
+  // unless the key says it is the point itself.
   struct Item {
     uint32_t key, index;
     double x, y;
@@ -139,14 +142,15 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
       const auto z = kernel_->table().moebius(home).apply({x, y});
       rx = z.re, ry = z.im;
     }
-    order[i] = {hilbert_index(grid(rx), grid(ry)), uint32_t(i), x, y};
+    order[i] = {hilbert_index(grid(rx), grid(ry)) | (home == 0 ? kAtHome : 0), uint32_t(i), x, y};
   }
-  std::sort(order.begin(), order.end(), [](const Item &a, const Item &b) { return a.key < b.key; });
+  auto curve = [](const Item &a) { return a.key & ~kAtHome; };
+  std::sort(order.begin(), order.end(), [&](const Item &a, const Item &b) { return curve(a) < curve(b); });
   vertices_.reserve(vertices_.size() + n);
   faces_.reserve(faces_.size() + 2 * n);
   for (const Item &item : order) {
     const double x = item.x, y = item.y;
-    const TranslationId home = surface::representative(*kernel_, x, y).translation;
+    const TranslationId home = (item.key & kAtHome) ? 0 : surface::representative(*kernel_, x, y).translation;
     const Walk at = walk_from_hint({x, y, home, -1});
     uint32_t v = vertex_at({x, y, at.query, -1}, at);
     if (v != kNone) {
