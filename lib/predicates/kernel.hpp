@@ -109,7 +109,8 @@ class Kernel {
   // The hyperboloid vector of p in double, for constructions (circumcentres
   // of the dummy refinement), not predicates: accurate to about 1e-9
   // relative, from the 133-bit stage where double precision is not.
-  std::array<double, 3> hyperboloid(const TranslatedPoint &p);
+  // *accurate (may be null) tells whether that accuracy was reached.
+  std::array<double, 3> hyperboloid(const TranslatedPoint &p, bool *accurate = nullptr);
 
   // The exact evaluations alone (for tests against the filter).
   int orientation_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);

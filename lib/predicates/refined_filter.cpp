@@ -132,12 +132,16 @@ int Kernel::large_circumdisk_mid(const TranslatedPoint &p, const TranslatedPoint
   return 2;
 }
 
-std::array<double, 3> Kernel::hyperboloid(const TranslatedPoint &p) {
+std::array<double, 3> Kernel::hyperboloid(const TranslatedPoint &p, bool *accurate) {
   const FilteredPoint f = filtered(p);
-  if (f.error < 1e-9 * f.n[0]) return {f.n[0], f.n[1], f.n[2]};
   MidPoint m;
-  if (!mid_point(p, &m)) return {f.n[0], f.n[1], f.n[2]};
-  return {static_cast<double>(m.n[0]), static_cast<double>(m.n[1]), static_cast<double>(m.n[2])};
+  const bool good = f.error < 1e-9 * f.n[0];
+  if (!good && mid_point(p, &m) && m.error < 1e-12 * static_cast<double>(m.n[0])) {
+    if (accurate) *accurate = true;
+    return {static_cast<double>(m.n[0]), static_cast<double>(m.n[1]), static_cast<double>(m.n[2])};
+  }
+  if (accurate) *accurate = good;
+  return {f.n[0], f.n[1], f.n[2]};
 }
 
 }  // namespace hdt::predicates

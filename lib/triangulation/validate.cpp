@@ -109,9 +109,10 @@ void Triangulation::validate() {
     link.reserve(star_.size());
     bool rough = false;  // a lifted point is not accurate to 1e-9: count exactly
     auto lift = [&](const TranslatedPoint &q) {
-      const predicates::FilteredPoint fp = predicates::filtered_point(q.x, q.y, T.lorentz(q.translation));
-      if (!(fp.error < 1e-9 * fp.n[0])) rough = true;
-      return std::array<double, 3>{fp.n[0], fp.n[1], fp.n[2]};
+      bool accurate = false;
+      const std::array<double, 3> n = kernel_->hyperboloid(q, &accurate);
+      if (!accurate) rough = true;
+      return n;
     };
     for (std::size_t i = 0; i < star_.size(); ++i) {
       const Face &A = faces_[star_[i].face];
