@@ -35,6 +35,9 @@ class TranslationTable {
     auto it = ids_.find(w);
     return it == ids_.end() ? -1 : it->second;
   }
+  // The id of a word the caller knows to be canonical (a copy of another
+  // table's), added if new, without recomputing its canonical form.
+  TranslationId intern_canonical(const Word &w) { return add_canonical(w); }
   // The id of the element of any word (canonicalised first), added if new.
   TranslationId intern(const Word &w);
   // The id of a * b (apply b first), cached.

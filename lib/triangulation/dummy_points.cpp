@@ -29,7 +29,8 @@ namespace hdt::triangulation {
 
 class DummyBuilder {
  public:
-  explicit DummyBuilder(int genus) : t_(genus, Triangulation::Empty{}), K_(*t_.kernel_), T_(K_.table()) {}
+  // t: a triangulation with no vertices and a fresh kernel; it receives the set.
+  explicit DummyBuilder(Triangulation &t) : t_(t), K_(*t_.kernel_), T_(K_.table()) {}
 
   std::shared_ptr<const DummyTemplate> build() {
     initial_triangulation();
@@ -261,7 +262,7 @@ class DummyBuilder {
     }
   }
 
-  Triangulation t_;
+  Triangulation &t_;
   predicates::Kernel &K_;
   group::TranslationTable &T_;
   std::vector<Edge> stack_;
@@ -281,18 +282,24 @@ void register_q0_sites(predicates::Kernel &kernel, double *x, double *y) {
   }
 }
 
-std::shared_ptr<const DummyTemplate> dummy_template(int genus) {
-  static std::mutex mutex;
-  static std::map<int, std::shared_ptr<const DummyTemplate>> cache;
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    auto it = cache.find(genus);
-    if (it != cache.end()) return it->second;
-  }
-  // Built outside the lock: two threads may both build it, the first wins.
-  std::shared_ptr<const DummyTemplate> built = DummyBuilder(genus).build();
-  std::lock_guard<std::mutex> lock(mutex);
-  return cache.emplace(genus, built).first->second;
+namespace {
+
+std::mutex cache_mutex;
+std::map<int, std::shared_ptr<const DummyTemplate>> cache;
+
+}  // namespace
+
+std::shared_ptr<const DummyTemplate> cached_dummy_template(int genus) {
+  std::lock_guard<std::mutex> lock(cache_mutex);
+  auto it = cache.find(genus);
+  return it == cache.end() ? nullptr : it->second;
+}
+
+std::shared_ptr<const DummyTemplate> build_dummy_points(Triangulation &t) {
+  // Built outside the lock: two threads may both build one, the first stays.
+  std::shared_ptr<const DummyTemplate> built = DummyBuilder(t).build();
+  std::lock_guard<std::mutex> lock(cache_mutex);
+  return cache.emplace(t.genus(), built).first->second;
 }
 
 }  // namespace hdt::triangulation

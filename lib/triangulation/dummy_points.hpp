@@ -26,7 +26,13 @@ struct DummyTemplate {
 // is m_k (k < 2g); *x, *y receive their roundings (2g + 1 entries each).
 void register_q0_sites(predicates::Kernel &kernel, double *x, double *y);
 
-// The certified template of a genus (built on first use; thread-safe).
-std::shared_ptr<const DummyTemplate> dummy_template(int genus);
+class Triangulation;
+
+// The certified template of a genus if this process has built it, else null
+// (thread-safe).
+std::shared_ptr<const DummyTemplate> cached_dummy_template(int genus);
+// Builds and certifies the dummy points in t (no vertices yet, a fresh
+// kernel), keeps a copy for later triangulations and returns it.
+std::shared_ptr<const DummyTemplate> build_dummy_points(Triangulation &t);
 
 }  // namespace hdt::triangulation

@@ -1,4 +1,5 @@
-// A new triangulation: a copy of its genus's certified dummy template.
+// A new triangulation: its genus's certified dummy points, built in the
+// first triangulation of the genus, copied into the later ones.
 #include "triangulation/triangulation.hpp"
 
 #include <stdexcept>
@@ -11,13 +12,17 @@ Triangulation::Triangulation(int genus, Empty)
     : genus_(genus), kernel_(std::make_unique<Kernel>(group::Presentation(genus))) {}
 
 Triangulation::Triangulation(int genus) : Triangulation(genus, Empty{}) {
-  const std::shared_ptr<const DummyTemplate> q = dummy_template(genus);
+  const std::shared_ptr<const DummyTemplate> q = cached_dummy_template(genus);
+  if (!q) {  // the first of its genus in this process: built here, in place
+    build_dummy_points(*this);
+    return;
+  }
   // The same sites and translation ids as the template's kernel had.
   std::vector<double> sx(2 * genus + 1), sy(2 * genus + 1);
   register_q0_sites(*kernel_, sx.data(), sy.data());
   group::TranslationTable &T = kernel_->table();
   for (const group::Word &w : q->extra_words)
-    if (std::size_t(T.intern(w)) + 1 != T.size()) throw std::logic_error("dummy template: translation ids");
+    if (std::size_t(T.intern_canonical(w)) + 1 != T.size()) throw std::logic_error("dummy template: translation ids");
   vertices_ = q->vertices;
   faces_ = q->faces;
   dummy_.assign(vertices_.size(), true);
