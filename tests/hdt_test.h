@@ -36,6 +36,18 @@ static inline uint64_t rng_next(uint64_t *s) {
 /* Uniform in 0..n-1 (n > 0; the bias is irrelevant here). */
 static inline int rng_below(uint64_t *s, int n) { return (int)(rng_next(s) % (uint64_t)n); }
 
+/* Sign of x^2 + y^2 - 1 computed exactly, for x and y multiples of 2^-60
+   below 2 in magnitude (each is then m 2^-60 with |m| < 2^61, and the sum of
+   squares fits 128 bits); 2 when that does not apply. */
+static inline int exact_norm_vs_one(double x, double y) {
+  __extension__ typedef unsigned __int128 u128;
+  const double sx = ldexp(fabs(x), 60), sy = ldexp(fabs(y), 60);
+  if (!(fabs(x) < 2 && fabs(y) < 2) || sx != floor(sx) || sy != floor(sy)) return 2;
+  const u128 mx = (u128)(uint64_t)sx, my = (u128)(uint64_t)sy;
+  const u128 sum = mx * mx + my * my, one = (u128)1 << 120;
+  return sum < one ? -1 : sum > one;
+}
+
 /* ---- Words ---- */
 static inline int inv_letter(int g, int k) { return (k + 2 * g) % (4 * g); }
 

@@ -176,16 +176,6 @@ static void points_in_f(uint64_t *rng, int g, size_t n, double *xy) {
   }
 }
 
-/* Sign of x^2 + y^2 - 1, exactly, for x, y multiples of 2^-60 below 2 in
-   magnitude (as in test_api.c); 2 when that does not apply. */
-static int exact_norm_vs_one(double x, double y) {
-  __extension__ typedef unsigned __int128 u128;
-  const double sx = ldexp(fabs(x), 60), sy = ldexp(fabs(y), 60);
-  if (!(fabs(x) < 2 && fabs(y) < 2) || sx != floor(sx) || sy != floor(sy)) return 2;
-  const u128 mx = (u128)(uint64_t)sx, my = (u128)(uint64_t)sy;
-  const u128 sum = mx * mx + my * my, one = (u128)1 << 120;
-  return sum < one ? -1 : sum > one;
-}
 
 /* Inserts one point that must be accepted (new vertex or an existing one). */
 static uint32_t insert_ok(hdt_triangulation *t, double x, double y, int *existed) {
