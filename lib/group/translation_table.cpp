@@ -40,9 +40,7 @@ void TranslationTable::compute_matrices(TranslationId id) {
 
 TranslationId TranslationTable::intern(const Word &w) { return add_canonical(canonical_word(presentation_, w)); }
 
-TranslationId TranslationTable::compose(TranslationId a, TranslationId b) {
-  if (a == 0) return b;
-  if (b == 0) return a;
+TranslationId TranslationTable::compose_cached(TranslationId a, TranslationId b) {
   const uint64_t key = (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
   auto it = products_.find(key);
   if (it != products_.end()) return it->second;
@@ -54,7 +52,7 @@ TranslationId TranslationTable::compose(TranslationId a, TranslationId b) {
   return id;
 }
 
-TranslationId TranslationTable::inverse(TranslationId a) {
+TranslationId TranslationTable::inverse_interned(TranslationId a) {
   if (std::size_t(a) >= inverses_.size()) inverses_.resize(words_.size(), -1);
   if (inverses_.at(a) < 0) {
     const TranslationId b = intern(presentation_.inverse(word(a)));

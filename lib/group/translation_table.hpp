@@ -40,9 +40,18 @@ class TranslationTable {
   TranslationId intern_canonical(const Word &w) { return add_canonical(w); }
   // The id of the element of any word (canonicalised first), added if new.
   TranslationId intern(const Word &w);
-  // The id of a * b (apply b first), cached.
-  TranslationId compose(TranslationId a, TranslationId b);
-  TranslationId inverse(TranslationId a);
+  // The id of a * b (apply b first), cached. The identity and known
+  // inverses are answered inline: they are most calls on the hot path.
+  TranslationId compose(TranslationId a, TranslationId b) {
+    if (a == 0) return b;
+    if (b == 0) return a;
+    return compose_cached(a, b);
+  }
+  TranslationId inverse(TranslationId a) {
+    if (a == 0) return 0;
+    if (std::size_t(a) < inverses_.size() && inverses_[a] >= 0) return inverses_[a];
+    return inverse_interned(a);
+  }
 
   const Word &word(TranslationId id) const { return words_.at(id); }
   // Correctly rounded matrices, computed on first use (building them for all
@@ -61,6 +70,8 @@ class TranslationTable {
     std::size_t operator()(const Word &w) const noexcept;
   };
   TranslationId add_canonical(const Word &canonical);
+  TranslationId compose_cached(TranslationId a, TranslationId b);
+  TranslationId inverse_interned(TranslationId a);
   void compute_matrices(TranslationId id);
 
   Presentation presentation_;
