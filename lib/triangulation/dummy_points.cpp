@@ -19,7 +19,6 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "predicates/filtered_point.hpp"
 #include "surface/exact_polygon.hpp"
 #include "surface/polygon.hpp"
 #include "surface/representative.hpp"

@@ -8,7 +8,7 @@
 
 namespace hdt::triangulation {
 
-uint32_t Triangulation::vertex_at(const TranslatedPoint &, const Walk &at) {
+uint32_t Triangulation::vertex_at(const Walk &at) const {
   // On the lines of two edges means at their common corner, exactly.
   if (at.zero_edges == 0 || (at.zero_edges & (at.zero_edges - 1)) == 0) return kNone;
   for (int i = 0; i < 3; ++i)
@@ -19,7 +19,7 @@ uint32_t Triangulation::vertex_at(const TranslatedPoint &, const Walk &at) {
 Triangulation::Inserted Triangulation::insert(double x, double y) {
   const surface::Representative r = surface::representative(*kernel_, x, y);
   const Walk at = walk_from_hint({x, y, r.translation, -1});
-  const uint32_t existing = vertex_at({x, y, at.query, -1}, at);
+  const uint32_t existing = vertex_at(at);
   if (existing != kNone) {
     last_vertex_ = existing;
     if (!dummy_[existing]) return {existing, true};
@@ -152,7 +152,7 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
     const double x = item.x, y = item.y;
     const TranslationId home = (item.key & kAtHome) ? 0 : surface::representative(*kernel_, x, y).translation;
     const Walk at = walk_from_hint({x, y, home, -1});
-    uint32_t v = vertex_at({x, y, at.query, -1}, at);
+    uint32_t v = vertex_at(at);
     if (v != kNone) {
       last_vertex_ = v;
       if (dummy_[v]) dummy_[v] = false, --dummies_;

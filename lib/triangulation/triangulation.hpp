@@ -132,8 +132,9 @@ class Triangulation {
   // Bowyer-Watson insertion of the point (x, y) with home `home`, located in
   // `at`. Returns the new vertex id.
   uint32_t insert_located(double x, double y, TranslationId home, bool dummy, const Walk &at);
-  // The vertex of `at`'s face at q, if q is one of its corners.
-  uint32_t vertex_at(const TranslatedPoint &q_in_face, const Walk &at);
+  // The vertex of `at`'s face at the walked-to point, if it is one of its
+  // corners (kNone otherwise).
+  uint32_t vertex_at(const Walk &at) const;
 
   // The faces around v, counterclockwise, with their frames relative to the
   // first (the canonical copy of vertices_[v].face).
