@@ -903,6 +903,25 @@ static void shuffle(uint64_t *rng, uint32_t *a, size_t n) {
   }
 }
 
+/* Removes v: on success the triangulation is valid and has one vertex less
+   (with its structure checked when `structure`), else the call was refused
+   with HDT_ENOTSUP and nothing changed. Returns whether v was removed. */
+static int remove_or_refuse(hdt_triangulation *t, uint32_t v, const char *what, int structure) {
+  snapshot_t before = snapshot(t);
+  const hdt_status s = hdt_remove_vertex(t, v);
+  if (s == HDT_OK) {
+    expect(hdt_vertex_count(t) == before.vertices - 1, "%s: count %zu -> %zu", what, before.vertices,
+           hdt_vertex_count(t));
+    expect_valid(t, what);
+    if (structure) expect_structure(t, what);
+  } else {
+    expect_error(s, HDT_ENOTSUP, "hdt_remove_vertex", "guarantee|systole|circum|diameter|simplicial|refuse", what);
+    expect_unchanged(t, &before, "a refused removal");
+  }
+  snapshot_free(&before);
+  return s == HDT_OK;
+}
+
 START_TEST(vertex_removal) {
   for (int g = 2; g <= 3; ++g) {
     uint64_t rng = 0x12345 + (uint64_t)g;
@@ -934,19 +953,10 @@ START_TEST(vertex_removal) {
     /* Dummies through hdt_remove_vertex: removed, or refused with nothing changed. */
     size_t dummy_ok = 0, dummy_refused = 0;
     for (uint32_t v = 0; v < d; ++v) {
-      snapshot_t before = snapshot(t);
-      const hdt_status s = hdt_remove_vertex(t, v);
       char what[64];
       snprintf(what, sizeof what, "g=%d, dummy %u removed", g, v);
-      if (s == HDT_OK) {
-        ++dummy_ok;
-        expect_valid(t, what);
-      } else {
-        expect_error(s, HDT_ENOTSUP, "hdt_remove_vertex", "guarantee|systole|circum|diameter|simplicial|refuse", what);
-        expect_unchanged(t, &before, "a refused removal");
-        ++dummy_refused;
-      }
-      snapshot_free(&before);
+      if (remove_or_refuse(t, v, what, 0)) ++dummy_ok;
+      else ++dummy_refused;
     }
     expect_structure(t, "after dummy removals");
     /* Without dummies (those left go through hdt_remove_dummies), remove the
@@ -956,22 +966,10 @@ START_TEST(vertex_removal) {
     expect_valid(t, "remove_dummies");
     size_t removed = 0, refused = 0;
     for (size_t i = nu / 2; i < nu; ++i) {
-      snapshot_t before = snapshot(t);
-      const hdt_status s = hdt_remove_vertex(t, users[i]);
       char what[64];
       snprintf(what, sizeof what, "g=%d, user vertex %u", g, users[i]);
-      if (s == HDT_OK) {
-        ++removed;
-        expect(hdt_vertex_count(t) == before.vertices - 1, "%s: count %zu -> %zu", what, before.vertices,
-               hdt_vertex_count(t));
-        expect_valid(t, what);
-        expect_structure(t, what);
-      } else {
-        expect_error(s, HDT_ENOTSUP, "hdt_remove_vertex", "guarantee|systole|circum|diameter|simplicial|refuse", what);
-        expect_unchanged(t, &before, "a refused removal");
-        ++refused;
-      }
-      snapshot_free(&before);
+      if (remove_or_refuse(t, users[i], what, 1)) ++removed;
+      else ++refused;
     }
     printf("vertex_removal g=%d: dummies via remove_vertex: %zu removed, %zu refused; %zu dummies left after "
            "remove_dummies; then %zu user vertices removed, %zu refused; %zu vertices left\n",
