@@ -61,41 +61,50 @@ void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<
   // 2. Adjacency: edge i of a new face (c[i+1] -> c[i+2]) meets the reversed
   // edge of another new face, or a boundary edge a -> b with the region (the
   // new face) on its left.
-  for (std::size_t j = 0; j < k; ++j) {
-    const NewFace &nf = created[j];
-    for (int i = 0; i < 3; ++i) {
-      const Corner &a = nf.c[next(i)], &b = nf.c[prev(i)];
-      bool linked = false;
-      // Bowyer-Watson builds face j on boundary edge j: try that first.
-      if (j < boundary.size() && same(boundary[j].a, a) && same(boundary[j].b, b)) {
-        const BoundaryEdge &edge = boundary[j];
-        const TranslationId nt = T.compose(built[j].kappa, edge.outer_frame);
-        built[j].face.n[i] = edge.outer;
-        built[j].face.nt[i] = nt;
-        outer_links.push_back({edge.outer, edge.outer_edge, slot(j), T.inverse(nt)});
-        continue;
+  auto link_outer = [&](std::size_t j, int i, const BoundaryEdge &edge) {
+    const TranslationId nt = T.compose(built[j].kappa, edge.outer_frame);
+    built[j].face.n[i] = edge.outer;
+    built[j].face.nt[i] = nt;
+    outer_links.push_back({edge.outer, edge.outer_edge, slot(j), T.inverse(nt)});
+  };
+  auto link_new = [&](std::size_t j, int i, std::size_t j2) {
+    built[j].face.n[i] = slot(j2);
+    built[j].face.nt[i] = T.compose(built[j].kappa, T.inverse(built[j2].kappa));
+  };
+  // Bowyer-Watson's fan: face j is (a_j, b_j, apex) on boundary edge
+  // a_j -> b_j, and its edge apex -> a_j meets the edge b_j' -> apex of the
+  // face j' with b_j' = a_j. One corner comparison per pair, where the
+  // general search below compares edges with edges.
+  bool fan = k == boundary.size();
+  for (std::size_t j = 0; j < k && fan; ++j)
+    fan = same(created[j].c[0], boundary[j].a) && same(created[j].c[1], boundary[j].b) &&
+          same(created[j].c[2], created[0].c[2]);
+  if (fan) {
+    for (std::size_t j = 0; j < k; ++j) built[j].face.n[0] = kNone;
+    for (std::size_t j = 0; j < k; ++j) {
+      link_outer(j, 2, boundary[j]);
+      std::size_t j2 = 0;
+      while (j2 < k && (j2 == j || !same(created[j2].c[1], created[j].c[0]))) ++j2;
+      if (j2 == k || built[j2].face.n[0] != kNone) throw std::logic_error("replace: the new faces do not close a fan");
+      link_new(j, 1, j2);
+      link_new(j2, 0, j);
+    }
+  } else {
+    for (std::size_t j = 0; j < k; ++j) {
+      const NewFace &nf = created[j];
+      for (int i = 0; i < 3; ++i) {
+        const Corner &a = nf.c[next(i)], &b = nf.c[prev(i)];
+        bool linked = false;
+        for (std::size_t j2 = 0; j2 < k && !linked; ++j2) {
+          if (j2 == j) continue;
+          const NewFace &other = created[j2];
+          for (int i2 = 0; i2 < 3 && !linked; ++i2)
+            if (same(other.c[next(i2)], b) && same(other.c[prev(i2)], a)) link_new(j, i, j2), linked = true;
+        }
+        for (std::size_t e = 0; e < boundary.size() && !linked; ++e)
+          if (same(boundary[e].a, a) && same(boundary[e].b, b)) link_outer(j, i, boundary[e]), linked = true;
+        if (!linked) throw std::logic_error("replace: a new edge has no partner");
       }
-      for (std::size_t j2 = 0; j2 < k && !linked; ++j2) {
-        if (j2 == j) continue;
-        const NewFace &other = created[j2];
-        for (int i2 = 0; i2 < 3; ++i2)
-          if (same(other.c[next(i2)], b) && same(other.c[prev(i2)], a)) {
-            built[j].face.n[i] = slot(j2);
-            built[j].face.nt[i] = T.compose(built[j].kappa, T.inverse(built[j2].kappa));
-            linked = true;
-            break;
-          }
-      }
-      for (std::size_t e = 0; e < boundary.size() && !linked; ++e) {
-        const BoundaryEdge &edge = boundary[e];
-        if (!same(edge.a, a) || !same(edge.b, b)) continue;
-        const TranslationId nt = T.compose(built[j].kappa, edge.outer_frame);
-        built[j].face.n[i] = edge.outer;
-        built[j].face.nt[i] = nt;
-        outer_links.push_back({edge.outer, edge.outer_edge, slot(j), T.inverse(nt)});
-        linked = true;
-      }
-      if (!linked) throw std::logic_error("replace: a new edge has no partner");
     }
   }
   if (outer_links.size() != boundary.size()) throw std::logic_error("replace: a boundary edge has no new face");
