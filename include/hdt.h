@@ -172,9 +172,15 @@ HDT_API hdt_status hdt_neighbour_word(int genus, size_t id, int32_t *out,
    larger ids are given by a triangulation as it meets new elements and are
    valid for that handle only (hdt_translation_word, hdt_translation_matrix).
 
-   A call that fails leaves the triangulation exactly as it was. One handle
-   is used by one thread at a time; distinct handles are independent. */
+   A call that fails leaves the triangulation exactly as it was, with one
+   exception: memory running out (HDT_ENOMEM) part way through
+   hdt_insert_many or hdt_remove_dummies, which then keep the work done so
+   far, in a valid triangulation. One handle is used by one thread at a
+   time; distinct handles are independent. */
 typedef struct hdt_triangulation hdt_triangulation; /* opaque */
+
+/* "No vertex": in hdt_insert_many's output, a point not inserted. */
+#define HDT_NO_VERTEX UINT32_MAX
 
 /* A new triangulation of M_genus holding its dummy points. *out is NULL on
    failure. HDT_EINVAL for genus < 2 or out NULL, HDT_ENOTSUP above
@@ -198,7 +204,11 @@ HDT_API hdt_status hdt_insert(hdt_triangulation *t, double x, double y, uint32_t
    existing vertex; that is not an error here, and a dummy met this way
    becomes a user vertex). Every point is checked first:
    a bad point rejects the whole call (HDT_EDOMAIN naming its index) and
-   nothing is inserted. */
+   nothing is inserted. The memory for all n points is reserved before the
+   first insertion (HDT_ENOMEM, nothing inserted, when that fails); should an
+   allocation still fail later, the call returns HDT_ENOMEM with the points
+   inserted so far in place, and vertices[i] is HDT_NO_VERTEX for each
+   point i not inserted. */
 HDT_API hdt_status hdt_insert_many(hdt_triangulation *t, const double *xy, size_t n,
                                    uint32_t *vertices) HDT_NOEXCEPT;
 /* Removes vertex v (user or dummy). Refused with HDT_ENOTSUP, nothing

@@ -32,6 +32,15 @@ hdt_status fail(hdt_status status, const char *function, const std::string &mess
   }
 }
 
+hdt_status fail(hdt_status status, const char *function, const char *message) noexcept {
+  try {
+    last_error.assign(function).append(": ").append(message);
+  } catch (...) {
+    last_error.clear();
+  }
+  return status;
+}
+
 void check_genus(int genus) {
   if (genus < 2) throw ApiError(HDT_EINVAL, "genus must be at least 2, got " + std::to_string(genus));
   if (genus > HDT_GENUS_MAX)

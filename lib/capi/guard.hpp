@@ -21,6 +21,8 @@ const char *last_error_message() noexcept;
 // Records a failure for hdt_last_error_message and returns its status.
 hdt_status fail(hdt_status status, const std::string &message) noexcept;
 hdt_status fail(hdt_status status, const char *function, const std::string &message) noexcept;
+// The same without building a std::string first: safe when memory is short.
+hdt_status fail(hdt_status status, const char *function, const char *message) noexcept;
 
 // An argument error found inside the core's call tree, with its status.
 struct ApiError : std::runtime_error {
@@ -43,7 +45,11 @@ hdt_status guarded(const char *function, Body &&body) noexcept {
   } catch (const std::length_error &e) {
     return fail(HDT_ENOTSUP, function, e.what());
   } catch (const std::logic_error &e) {
-    return fail(HDT_EINTERNAL, function, std::string("internal error: ") + e.what());
+    try {
+      return fail(HDT_EINTERNAL, function, std::string("internal error: ") + e.what());
+    } catch (...) {
+      return fail(HDT_EINTERNAL, function, e.what());
+    }
   } catch (const std::exception &e) {
     return fail(HDT_ERROR, function, e.what());
   } catch (...) {

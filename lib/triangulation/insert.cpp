@@ -8,6 +8,16 @@
 
 namespace hdt::triangulation {
 
+namespace {
+
+// Makes the next push_back unable to throw, keeping geometric growth.
+template <class Vector>
+void grow_for_one(Vector &v) {
+  if (v.size() == v.capacity()) v.reserve(v.size() < 8 ? 16 : 2 * v.size());
+}
+
+}  // namespace
+
 uint32_t Triangulation::vertex_at(const Walk &at) const {
   // On the lines of two edges means at their common corner, exactly.
   if (at.zero_edges == 0 || (at.zero_edges & (at.zero_edges - 1)) == 0) return kNone;
@@ -80,6 +90,10 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, b
   }
   // Star the hole from q.
   for (const BoundaryEdge &e : boundary_) new_faces_.push_back({{e.a, e.b, Corner{id, at.query}}});
+  // Room first, so that the two push_backs cannot fail halfway: an
+  // allocation failure anywhere leaves the triangulation as it was.
+  grow_for_one(vertices_);
+  grow_for_one(dummy_);
   vertices_.push_back({x, y, home, kNone});
   dummy_.push_back(dummy);
   try {
@@ -147,7 +161,11 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
   auto curve = [](const Item &a) { return a.key & ~kAtHome; };
   std::sort(order.begin(), order.end(), [&](const Item &a, const Item &b) { return curve(a) < curve(b); });
   vertices_.reserve(vertices_.size() + n);
+  dummy_.reserve(dummy_.size() + n);
   faces_.reserve(faces_.size() + 2 * n);
+  // From here on a failure (out of memory) keeps the points inserted so far;
+  // the caller learns which ones from the ids.
+  if (out) std::fill(out, out + n, kNone);
   for (const Item &item : order) {
     const double x = item.x, y = item.y;
     const TranslationId home = (item.key & kAtHome) ? 0 : surface::representative(*kernel_, x, y).translation;
