@@ -23,6 +23,13 @@ TranslationId prepend(predicates::Kernel &kernel, Letter g, TranslationId h) {
 Representative representative(predicates::Kernel &kernel, double x, double y) {
   if (!std::isfinite(x) || !std::isfinite(y) || !exact::inside_unit_disk(x, y))
     throw std::domain_error("the point is not a finite point of the open unit disk");
+  // Most points of F_g lie in its inscribed circle (about 70% of the area),
+  // where no side test is needed. The circle's Euclidean radius r has
+  // r^2 = (c - 1) / (c + 1), c = cot(pi / 4g); shrunk by 1e-9 it bounds
+  // the few roundings here and in x^2 + y^2 with room to spare.
+  const int n = kernel.presentation().letter_count();
+  const double c = 1 / std::tan(M_PI / n);
+  if (x * x + y * y < (c - 1) / (c + 1) * (1 - 1e-9)) return {0, Representative::interior, 0};
   return representative(kernel, predicates::TranslatedPoint{x, y, 0});
 }
 
