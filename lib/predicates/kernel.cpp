@@ -187,6 +187,12 @@ namespace {
 
 bool untranslated(const TranslatedPoint &p) { return p.translation == 0 && p.site < 0; }
 
+// The same description is the same point: a duplicate insertion walks onto
+// its vertex, and these orientations are zero without the exact stage.
+bool same_point(const TranslatedPoint &a, const TranslatedPoint &b) {
+  return a.x == b.x && a.y == b.y && a.translation == b.translation && a.site == b.site;
+}
+
 // Disk rows for untranslated points: N = (1 + s, 2x, 2y) / w with s = |z|^2,
 // so a determinant of hyperboloid vectors is a positive multiple of the one
 // of the rows (1 + s, x, y), and det[N 1] = -8 det[dx, dy, ds] / (w w w w)
@@ -232,6 +238,7 @@ int Kernel::orientation(const TranslatedPoint &p, const TranslatedPoint &q, cons
   const Difference db = difference(b, a), dc = difference(c, a);
   const Det3 d = det3_filtered(a.n, a.error, db.d, db.error, dc.d, dc.error);
   if (const int s = sign_of(d.value, d.bound)) return ++statistics_.filtered, s;
+  if (same_point(p, q) || same_point(q, r) || same_point(r, p)) return ++statistics_.filtered, 0;
   ++statistics_.exact;
   if (const int s = orientation_mid(p, q, r); s != 2) return ++statistics_.refined, s;
   return orientation_exact(p, q, r);
