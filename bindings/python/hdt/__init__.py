@@ -1,6 +1,12 @@
 """Python bindings of libhdt: Delaunay triangulations of the symmetric
 hyperbolic surfaces M_g.
 
+:class:`Triangulation` (module :mod:`hdt.triangulation`) holds a point set on
+M_g and its Delaunay triangulation; :mod:`hdt.picture` draws one (SVG, or
+matplotlib); :mod:`hdt.surface` and :mod:`hdt.group` give the polygon F_g,
+the systole and words in the group Gamma_g. NumPy is optional: with it,
+methods returning many numbers return NumPy arrays, without it lists.
+
 A pure-Python ctypes package over the C ABI of include/hdt.h. The library is
 found through the environment variable HDT_LIBRARY (a file path), else by its
 SONAME libhdt.so.0; importing fails with an ImportError saying what was tried
@@ -17,6 +23,7 @@ from ._errors import (
     AlreadyExists,
     BufferTooSmall,
     Error,
+    HandleClosed,
     InternalError,
     InvalidArgument,
     NotSupported,
@@ -35,6 +42,7 @@ from .group import (
 )
 from .library import abi_version, version
 from .surface import point_representative, polygon_side_midpoint, polygon_vertex, systole
+from .triangulation import Faces, Location, Triangulation, Vertices
 
 #: The version of these bindings (the library's is version()).
 __version__ = "0.1.0"
@@ -43,12 +51,17 @@ __all__ = [
     "AlreadyExists",
     "BufferTooSmall",
     "Error",
+    "Faces",
+    "HandleClosed",
     "InternalError",
     "InvalidArgument",
+    "Location",
     "NotSupported",
     "OutOfDomain",
     "OutOfMemory",
     "Status",
+    "Triangulation",
+    "Vertices",
     "abi_version",
     "neighbour_count",
     "neighbour_word",

@@ -16,6 +16,7 @@ from ._errors import InternalError, InvalidArgument, NotSupported, Status, check
 _INT_BITS = 8 * ctypes.sizeof(ctypes.c_int)
 _INT_MIN, _INT_MAX = -(1 << (_INT_BITS - 1)), (1 << (_INT_BITS - 1)) - 1
 _INT32_MIN, _INT32_MAX = -(1 << 31), (1 << 31) - 1
+_UINT32_MAX = (1 << 32) - 1
 _SIZE_MAX = (1 << (8 * ctypes.sizeof(ctypes.c_size_t))) - 1
 
 
@@ -52,6 +53,22 @@ def c_id(translation_id):
     translation_id = as_int(translation_id, "id")
     if not 0 <= translation_id <= _SIZE_MAX:
         raise InvalidArgument(f"translation id {translation_id} is not in N")
+    return translation_id
+
+
+def c_vertex(vertex):
+    """A vertex id for a uint32_t parameter (an id beyond it is no vertex)."""
+    vertex = as_int(vertex, "vertex")
+    if not 0 <= vertex <= _UINT32_MAX:
+        raise InvalidArgument(f"vertex {vertex} is not a live vertex")
+    return vertex
+
+
+def c_translation(translation_id):
+    """A translation id of a triangulation for an int32_t parameter."""
+    translation_id = as_int(translation_id, "translation id")
+    if not _INT32_MIN <= translation_id <= _INT32_MAX:
+        raise InvalidArgument(f"unknown translation id {translation_id}")
     return translation_id
 
 

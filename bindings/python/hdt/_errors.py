@@ -51,9 +51,15 @@ class OutOfDomain(Error, ValueError):
 
 
 class AlreadyExists(Error):
-    """HDT_EEXISTS: the point is already a vertex."""
+    """HDT_EEXISTS: the point is already a user vertex.
+
+    Attributes:
+        vertex: the id of that vertex when the call reported it
+            (:meth:`hdt.Triangulation.insert` does), else None.
+    """
 
     status = Status.EEXISTS
+    vertex = None
 
 
 class OutOfMemory(Error, MemoryError):
@@ -71,7 +77,9 @@ class BufferTooSmall(Error):
 
 class NotSupported(Error):
     """HDT_ENOTSUP: a valid request beyond what this build supports (genus
-    above HDT_GENUS_MAX, a reduced word too long for the built-in precision)."""
+    above HDT_GENUS_MAX, a reduced word too long for the built-in precision),
+    or a vertex removal refused because the triangulation would lose its
+    circumdiameter guarantee (nothing is changed then)."""
 
     status = Status.ENOTSUP
 
@@ -80,6 +88,12 @@ class InternalError(Error):
     """HDT_EINTERNAL: a broken invariant, a bug in libhdt; please report it."""
 
     status = Status.EINTERNAL
+
+
+class HandleClosed(InvalidArgument):
+    """A :class:`hdt.Triangulation` used after :meth:`~hdt.Triangulation.close`
+    (the Python side of the library's NULL-handle HDT_EINVAL; never passed
+    to the library)."""
 
 
 _CLASS_OF_STATUS = {

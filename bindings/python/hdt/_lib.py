@@ -34,6 +34,12 @@ _double = ctypes.c_double
 _double_p = ctypes.POINTER(ctypes.c_double)
 _size_p = ctypes.POINTER(ctypes.c_size_t)
 _word = ctypes.POINTER(ctypes.c_int32)
+_handle = ctypes.c_void_p  # hdt_triangulation *
+_handle_p = ctypes.POINTER(ctypes.c_void_p)
+_uint32 = ctypes.c_uint32
+_uint32_p = ctypes.POINTER(ctypes.c_uint32)
+_int32 = ctypes.c_int32
+_int32_p = ctypes.POINTER(ctypes.c_int32)
 
 #: Every function of include/hdt.h: name -> (restype, argtypes).
 PROTOTYPES = {
@@ -52,6 +58,25 @@ PROTOTYPES = {
     "hdt_word_apply": (_status, (_int, _word, _size, _double, _double, _double_p, _double_p)),
     "hdt_neighbour_count": (_status, (_int, _size_p)),
     "hdt_neighbour_word": (_status, (_int, _size, _word, _size, _size_p)),
+    "hdt_create": (_status, (_handle_p, _int)),
+    "hdt_destroy": (None, (_handle,)),
+    "hdt_genus": (_int, (_handle,)),
+    "hdt_insert": (_status, (_handle, _double, _double, _uint32_p)),
+    "hdt_insert_many": (_status, (_handle, _double_p, _size, _uint32_p)),
+    "hdt_remove_vertex": (_status, (_handle, _uint32)),
+    "hdt_remove_dummies": (_status, (_handle, _size_p)),
+    "hdt_vertex_count": (_size, (_handle,)),
+    "hdt_dummy_count": (_size, (_handle,)),
+    "hdt_vertex_id_bound": (_size, (_handle,)),
+    "hdt_face_count": (_size, (_handle,)),
+    "hdt_vertex_point": (_status, (_handle, _uint32, _double_p, _double_p)),
+    "hdt_vertex_is_dummy": (_int, (_handle, _uint32)),
+    "hdt_faces": (_status, (_handle, _uint32_p, _int32_p, _size, _size_p)),
+    "hdt_translation_word": (_status, (_handle, _int32, _word, _size, _size_p)),
+    "hdt_translation_matrix": (_status, (_handle, _int32, _double_p)),
+    "hdt_locate": (_status, (_handle, _double, _double, _size_p, _int32_p)),
+    "hdt_nearest_vertex": (_status, (_handle, _double, _double, _uint32_p)),
+    "hdt_validate": (_status, (_handle,)),
 }
 
 

@@ -53,3 +53,18 @@ def test_an_unknown_status_is_a_plain_error():
 def test_errors_made_in_python_default_to_their_class_status():
     assert hdt.InvalidArgument("text").status == hdt.Status.EINVAL
     assert hdt.Error("text").status == hdt.Status.ERROR
+
+
+def test_already_exists_can_carry_the_vertex():
+    assert hdt.AlreadyExists("text").vertex is None
+    with hdt.Triangulation(2) as t:
+        v = t.insert(0.25, 0.125)
+        with pytest.raises(hdt.AlreadyExists) as caught:
+            t.insert(0.25, 0.125)
+    assert caught.value.vertex == v
+
+
+def test_a_closed_handle_is_an_invalid_argument_of_its_own_class():
+    assert issubclass(hdt.HandleClosed, hdt.InvalidArgument) and issubclass(hdt.HandleClosed, ValueError)
+    assert hdt.HandleClosed("text").status == hdt.Status.EINVAL
+    assert type(error_for_status(hdt.Status.EINVAL)) is hdt.InvalidArgument  # never made from a status

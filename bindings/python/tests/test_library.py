@@ -73,3 +73,49 @@ def test_the_soname_is_found_through_the_dynamic_loader():
     code, output = import_hdt(HDT_LIBRARY=None, LD_LIBRARY_PATH=directory)
     assert code == 0, output
     assert output.strip() == f"loaded {hdt.version()}"
+
+
+class FakeFunction:
+    """Stands in for a ctypes function of a fake library."""
+
+    def __init__(self, value=None):
+        self.value = value
+
+    def __call__(self, *args):
+        return self.value
+
+
+class FakeLibrary:
+    """A library that exports hdt_abi_version (returning abi) and the given names."""
+
+    def __init__(self, abi, names):
+        for name in names:
+            setattr(self, name, FakeFunction())
+        self.hdt_abi_version = FakeFunction(abi)
+
+
+def fake_loader(monkeypatch, library):
+    monkeypatch.setattr(_lib.ctypes, "CDLL", lambda name: library)
+    monkeypatch.setenv(_lib.ENVIRONMENT_VARIABLE, "/fake/libhdt.so.0")
+
+
+def test_another_abi_version_is_a_clear_import_error(monkeypatch):
+    fake_loader(monkeypatch, FakeLibrary(1, _lib.PROTOTYPES))
+    with pytest.raises(_lib.LibraryLoadError, match="its ABI version is 1, these bindings need 0") as caught:
+        _lib.load()
+    assert isinstance(caught.value, ImportError) and caught.value.name == "hdt"
+    assert "HDT_LIBRARY=/fake/libhdt.so.0: " in str(caught.value)
+
+
+def test_a_library_without_the_triangulation_functions_is_too_old(monkeypatch):
+    names = [name for name in _lib.PROTOTYPES if name != "hdt_nearest_vertex"]
+    fake_loader(monkeypatch, FakeLibrary(0, names))
+    with pytest.raises(_lib.LibraryLoadError, match="does not export hdt_nearest_vertex: too old for these bindings"):
+        _lib.load()
+
+
+def test_a_complete_library_of_abi_0_is_accepted(monkeypatch):
+    library = FakeLibrary(0, _lib.PROTOTYPES)
+    fake_loader(monkeypatch, library)
+    assert _lib.load() is library
+    assert library.hdt_create.restype is _lib.PROTOTYPES["hdt_create"][0]

@@ -1,0 +1,403 @@
+"""The Delaunay triangulation of a point set on M_g: :class:`Triangulation`.
+
+A triangulation owns one C handle (hdt_triangulation). It is freed by
+:meth:`Triangulation.close`, by leaving a ``with`` block, or when the object
+is garbage collected, whichever comes first; using the object after that
+raises :class:`hdt.HandleClosed` (never a crash). Calls on one object are
+serialised by a lock, so sharing it between threads is safe (but not
+parallel).
+
+Vertex ids are ints, dense and stable: the dummy vertices of a new
+triangulation are 0..d-1, each new distinct point gets the next id, and a
+removed id is never reused. A vertex keeps its point; :meth:`vertex_point`
+gives its representative in the half-open fundamental polygon F_g.
+
+Faces are listed by :meth:`Triangulation.faces` as three vertex ids
+(counterclockwise) and, per corner, a translation id: the element of
+Gamma_g that maps the vertex's representative to that corner of the face's
+canonical copy (the copy in which the face's smallest vertex id has
+translation 0, the identity, so the copy meets F_g). Translation ids
+0..|N|-1 are the neighbour set N (:func:`hdt.neighbour_word`); larger ones
+are given by the triangulation and valid for it only
+(:meth:`Triangulation.translation_word`, :meth:`Triangulation.translation_matrix`).
+Face indices are positions in that list and hold until the next change.
+
+Arrays: with NumPy installed, :meth:`insert_many`, :meth:`vertices` and
+:meth:`faces` return NumPy arrays; without it, lists (see each method).
+"""
+
+import collections
+import ctypes
+import threading
+import weakref
+
+from . import _arrays, picture
+from ._convert import c_coordinate, c_genus, c_translation, c_vertex, call_doubles, call_point, call_word
+from ._errors import HandleClosed, InternalError, InvalidArgument, Status, check, error_for_status
+from ._lib import lib
+
+#: :meth:`Triangulation.vertices`: the live vertices by increasing id.
+Vertices = collections.namedtuple("Vertices", "ids points dummy")
+Vertices.__doc__ = """The live vertices of a triangulation, by increasing id.
+
+ids: the vertex ids (NumPy uint32 array of shape (n,), or a list of ints);
+points: their representatives in F_g (float64 array of shape (n, 2), or a
+list of (x, y) tuples); dummy: whether each is a dummy vertex (bool array of
+shape (n,), or a list of bools)."""
+Vertices.ids.__doc__ = "The vertex ids, increasing."
+Vertices.points.__doc__ = "The representative (x, y) in F_g of each vertex."
+Vertices.dummy.__doc__ = "Whether each vertex is a dummy vertex."
+
+#: :meth:`Triangulation.faces`: vertex ids and translation ids per corner.
+Faces = collections.namedtuple("Faces", "vertices translations")
+Faces.__doc__ = """The faces of a triangulation: row i is face i.
+
+vertices: three vertex ids per face, counterclockwise (NumPy uint32 array of
+shape (F, 3), or a list of 3-tuples); translations: per corner, the
+translation id placing that vertex in the face's canonical copy (int32
+array of shape (F, 3), or a list of 3-tuples)."""
+Faces.vertices.__doc__ = "Three vertex ids per face, counterclockwise."
+Faces.translations.__doc__ = "Per corner, the translation id of the vertex in the face's canonical copy."
+
+#: :meth:`Triangulation.locate`: a face index and the translation of its copy.
+Location = collections.namedtuple("Location", "face translation")
+Location.__doc__ = """Where a point lies: the face (an index into faces()) and
+the translation id h such that the point is in the closed triangle
+h(canonical copy of the face)."""
+Location.face.__doc__ = "The index of the face in the order of faces()."
+Location.translation.__doc__ = "The translation id of the face's copy that contains the point."
+
+
+def _destroy(handle):
+    """Frees a C handle (the finalizer of every Triangulation)."""
+    lib.hdt_destroy(handle)
+
+
+class Triangulation:
+    """The Delaunay triangulation of a point set on the surface M_genus.
+
+    A new triangulation holds the dummy points of its genus, which keep it a
+    simplicial complex whose faces have circumdiameter below half the
+    systole; insert points, then :meth:`remove_dummies`. Points are given in
+    the Poincare disk (any point of the open unit disk stands for its image
+    on M_g).
+
+    Raises :class:`hdt.InvalidArgument` (a ValueError) for genus < 2,
+    :class:`hdt.NotSupported` above HDT_GENUS_MAX and TypeError when genus
+    is not an int.
+
+    Example::
+
+        with hdt.Triangulation(2) as t:
+            ids = t.insert_many([(0.1, 0.2), (-0.3, 0.05)])
+            t.remove_dummies()
+            t.validate()
+            print(len(t), t.face_count)
+    """
+
+    _handle = None  # an hdt_triangulation * as ctypes.c_void_p; None once closed
+
+    def __init__(self, genus):
+        """A new triangulation of M_genus holding the dummy points of its genus."""
+        genus = c_genus(genus)
+        handle = ctypes.c_void_p()
+        check(lib.hdt_create(ctypes.byref(handle), genus))
+        self._genus = genus
+        self._lock = threading.RLock()
+        self._handle = handle
+        self._finalizer = weakref.finalize(self, _destroy, handle)
+
+    # ---- lifetime ----
+
+    def close(self):
+        """Frees the C triangulation now. Closing again does nothing; any
+        other use afterwards raises :class:`hdt.HandleClosed`."""
+        with self._lock:
+            self._handle = None
+            self._finalizer()
+
+    @property
+    def closed(self):
+        """Whether :meth:`close` was called (the handle is freed)."""
+        return self._handle is None
+
+    def __enter__(self):
+        """Returns the triangulation itself; the ``with`` block closes it."""
+        self._live("__enter__")
+        return self
+
+    def __exit__(self, *exception):
+        """Closes the triangulation."""
+        self.close()
+
+    def __copy__(self):
+        """Refused: a Triangulation owns its C handle (build a new one)."""
+        raise TypeError("a Triangulation cannot be copied")
+
+    def __deepcopy__(self, memo):
+        """Refused, as :meth:`__copy__`."""
+        raise TypeError("a Triangulation cannot be copied")
+
+    def __reduce__(self):
+        """Refused: a Triangulation cannot be pickled (its state is the C
+        library's); pickle vertices() and rebuild instead."""
+        raise TypeError("a Triangulation cannot be pickled")
+
+    def _live(self, what):
+        """The handle; HandleClosed when closed (call with the lock held)."""
+        handle = self._handle
+        if handle is None:
+            raise HandleClosed(f"{what}: the triangulation is closed")
+        return handle
+
+    def __repr__(self):
+        """<hdt.Triangulation genus=G vertices=V (D dummies) faces=F>, or closed."""
+        with self._lock:
+            if self._handle is None:
+                return f"<hdt.Triangulation genus={self._genus} closed>"
+            handle = self._handle
+            return (f"<hdt.Triangulation genus={self._genus} vertices={lib.hdt_vertex_count(handle)} "
+                    f"({lib.hdt_dummy_count(handle)} dummies) faces={lib.hdt_face_count(handle)}>")
+
+    # ---- counts ----
+
+    @property
+    def genus(self):
+        """The genus g of the surface M_g (also after close())."""
+        return self._genus
+
+    @property
+    def vertex_count(self):
+        """The number of live vertices, dummies included."""
+        with self._lock:
+            return lib.hdt_vertex_count(self._live("vertex_count"))
+
+    def __len__(self):
+        """The number of live vertices, dummies included (vertex_count)."""
+        return self.vertex_count
+
+    @property
+    def dummy_count(self):
+        """The number of live dummy vertices."""
+        with self._lock:
+            return lib.hdt_dummy_count(self._live("dummy_count"))
+
+    @property
+    def face_count(self):
+        """The number of faces, F = 2 (V + 2g - 2)."""
+        with self._lock:
+            return lib.hdt_face_count(self._live("face_count"))
+
+    @property
+    def vertex_id_bound(self):
+        """One past the largest vertex id ever given: every id below it is
+        live or removed."""
+        with self._lock:
+            return lib.hdt_vertex_id_bound(self._live("vertex_id_bound"))
+
+    # ---- changes ----
+
+    def insert(self, x, y):
+        """Inserts the point (x, y) of the open unit disk; returns its vertex id.
+
+        A point equal to a dummy vertex turns it into a user vertex (its id
+        is returned). A point that already is a user vertex raises
+        :class:`hdt.AlreadyExists` whose ``vertex`` is that vertex's id.
+        Raises :class:`hdt.OutOfDomain` (a ValueError) for NaN, infinities
+        or |z| >= 1, TypeError when x or y is not a real number.
+        """
+        x, y = c_coordinate(x, "x"), c_coordinate(y, "y")
+        vertex = ctypes.c_uint32()
+        with self._lock:
+            status = lib.hdt_insert(self._live("insert"), x, y, ctypes.byref(vertex))
+            if status == Status.EEXISTS:
+                error = error_for_status(status)
+                error.vertex = vertex.value
+                raise error
+            check(status)
+        return vertex.value
+
+    def insert_many(self, points):
+        """Inserts many points at once (in a spatial order, much faster than
+        one by one); returns the vertex id of each point, in input order.
+
+        points is an iterable of pairs (x, y), or (with NumPy) an array of
+        shape (n, 2) of real numbers: a C-contiguous float64 array is read
+        in place, another is converted once. The ids come as a NumPy uint32
+        array of shape (n,) when NumPy is installed, else as a list of ints.
+
+        Repeated points, and points that already are vertices, get the
+        existing vertex's id (no error); a point equal to a dummy vertex
+        turns it into a user vertex. New vertices get their ids in the
+        spatial order, not in input order. Every point is checked first: a
+        point outside the open unit disk raises :class:`hdt.OutOfDomain`
+        naming its index, and nothing is inserted.
+        """
+        xy, count, owner = _arrays.point_buffer(points)
+        ids_pointer, ids = _arrays.output(ctypes.c_uint32, count)
+        with self._lock:
+            check(lib.hdt_insert_many(self._live("insert_many"), xy, count, ids_pointer))
+        del owner  # the points stay alive until here
+        return _arrays.result(ids)
+
+    def remove(self, vertex):
+        """Removes a vertex (user or dummy).
+
+        Raises :class:`hdt.NotSupported`, changing nothing, when the
+        triangulation without it would lose its guarantee (a face of
+        circumdiameter >= half the systole), and :class:`hdt.InvalidArgument`
+        when vertex is not a live vertex id.
+        """
+        vertex = c_vertex(vertex)
+        with self._lock:
+            check(lib.hdt_remove_vertex(self._live("remove"), vertex))
+
+    def remove_dummies(self):
+        """Removes every dummy vertex that can go without breaking the
+        guarantee; returns how many dummies are left."""
+        remaining = ctypes.c_size_t()
+        with self._lock:
+            check(lib.hdt_remove_dummies(self._live("remove_dummies"), ctypes.byref(remaining)))
+        return remaining.value
+
+    # ---- vertices ----
+
+    def is_dummy(self, vertex):
+        """Whether the live vertex is a dummy vertex; :class:`hdt.InvalidArgument`
+        when vertex is not a live vertex id."""
+        vertex = c_vertex(vertex)
+        with self._lock:
+            answer = lib.hdt_vertex_is_dummy(self._live("is_dummy"), vertex)
+        if answer < 0:
+            raise InvalidArgument(f"is_dummy: vertex {vertex} is not a live vertex")
+        return answer == 1
+
+    def vertex_point(self, vertex):
+        """The representative (x, y) of the vertex in the half-open F_g,
+        rounded to floats; :class:`hdt.InvalidArgument` when vertex is not
+        a live vertex id."""
+        vertex = c_vertex(vertex)
+        with self._lock:
+            return call_point(lib.hdt_vertex_point, self._live("vertex_point"), vertex)
+
+    def vertices(self):
+        """The live vertices as a :class:`Vertices` named tuple (ids, points,
+        dummy), by increasing id.
+
+        With NumPy: ids a uint32 array of shape (n,), points a float64 array
+        of shape (n, 2) (the representatives in F_g), dummy a bool array of
+        shape (n,). Without: a list of ints, a list of (x, y) tuples and a
+        list of bools.
+        """
+        ids, points, dummy = [], [], []
+        x, y = ctypes.c_double(), ctypes.c_double()
+        with self._lock:
+            handle = self._live("vertices")
+            for vertex in range(lib.hdt_vertex_id_bound(handle)):
+                answer = lib.hdt_vertex_is_dummy(handle, vertex)
+                if answer < 0:
+                    continue  # a removed id
+                check(lib.hdt_vertex_point(handle, vertex, ctypes.byref(x), ctypes.byref(y)))
+                ids.append(vertex)
+                points.append((x.value, y.value))
+                dummy.append(answer == 1)
+        return Vertices(_arrays.from_values(ids, "uint32"), _arrays.from_values(points, "float64", 2),
+                        _arrays.from_values(dummy, "bool"))
+
+    # ---- faces ----
+
+    def faces(self):
+        """The faces as a :class:`Faces` named tuple (vertices, translations);
+        row i is face i (the index :meth:`locate` gives).
+
+        With NumPy: two arrays of shape (F, 3), vertex ids (uint32) counter-
+        clockwise and the translation id of each corner (int32). Without: two
+        lists of 3-tuples. The corner (vertices[i][c], translations[i][c]) is
+        the point translation_matrix(t) applied to vertex_point(v).
+        """
+        with self._lock:
+            handle = self._live("faces")
+            count = lib.hdt_face_count(handle)
+            found = ctypes.c_size_t()
+            vertices_pointer, vertices = _arrays.output(ctypes.c_uint32, count, 3)
+            translations_pointer, translations = _arrays.output(ctypes.c_int32, count, 3)
+            status = lib.hdt_faces(handle, vertices_pointer, translations_pointer, count, ctypes.byref(found))
+            check(status)
+            if found.value != count:
+                raise InternalError(f"faces: hdt_faces listed {found.value} faces, hdt_face_count says {count}")
+        return Faces(_arrays.result(vertices, 3), _arrays.result(translations, 3))
+
+    def translation_word(self, translation):
+        """The canonical word (a tuple of letters) of a translation id of
+        this triangulation; () for id 0, the identity.
+        :class:`hdt.InvalidArgument` for an id the triangulation does not know."""
+        translation = c_translation(translation)
+        with self._lock:
+            return call_word(lib.hdt_translation_word, self._live("translation_word"), translation, capacity=16)
+
+    def translation_matrix(self, translation):
+        """The SU(1,1) matrix [[a, b], [conj b, conj a]] of a translation id
+        as the pair (a, b) of complex numbers (as :func:`hdt.word_matrix`):
+        it maps z to (a z + b) / (conj(b) z + conj(a)).
+        :class:`hdt.InvalidArgument` for an unknown id."""
+        translation = c_translation(translation)
+        with self._lock:
+            re_a, im_a, re_b, im_b = call_doubles(lib.hdt_translation_matrix, 4, self._live("translation_matrix"),
+                                                  translation)
+        return complex(re_a, im_a), complex(re_b, im_b)
+
+    # ---- queries ----
+
+    def locate(self, x, y):
+        """The face whose copy contains the disk point (x, y), as a
+        :class:`Location` (face, translation): (x, y) lies in the closed
+        triangle h(canonical copy of faces()[face]) for h the translation id.
+        A point on an edge or a vertex gets one of the faces around it.
+        :class:`hdt.OutOfDomain` (a ValueError) outside the open unit disk."""
+        x, y = c_coordinate(x, "x"), c_coordinate(y, "y")
+        face, translation = ctypes.c_size_t(), ctypes.c_int32()
+        with self._lock:
+            check(lib.hdt_locate(self._live("locate"), x, y, ctypes.byref(face), ctypes.byref(translation)))
+        return Location(face.value, translation.value)
+
+    def nearest_vertex(self, x, y):
+        """The id of the vertex nearest to the disk point (x, y) on M_g
+        (hyperbolic distance, decided exactly; ties go to the smaller id),
+        dummies included. :class:`hdt.OutOfDomain` outside the open disk."""
+        x, y = c_coordinate(x, "x"), c_coordinate(y, "y")
+        vertex = ctypes.c_uint32()
+        with self._lock:
+            check(lib.hdt_nearest_vertex(self._live("nearest_vertex"), x, y, ctypes.byref(vertex)))
+        return vertex.value
+
+    def validate(self):
+        """Checks every invariant with exact predicates (combinatorics,
+        orientation, empty circles, the simplicial condition, the
+        circumdiameter guarantee); returns None, or raises
+        :class:`hdt.InternalError` naming the broken invariant."""
+        with self._lock:
+            check(lib.hdt_validate(self._live("validate")))
+
+    # ---- pictures ----
+
+    def to_svg(self, path=None, *, size=800, dummies=True, neighbours=False, title=None):
+        """The picture of the triangulation as SVG text, also written to path
+        (a file name) when given; needs no third-party package.
+
+        Every face's canonical copy is drawn with geodesic edges in the
+        Poincare disk, F_g outlined, user vertices dark and (when dummies is
+        true) dummy vertices red and larger. neighbours also draws F_g and
+        the faces translated by the 4g generators. size is the width in
+        pixels; title replaces the caption. See :mod:`hdt.picture`.
+        """
+        text = picture.svg(self, size=size, dummies=dummies, neighbours=neighbours, title=title)
+        if path is not None:
+            with open(path, "w", encoding="utf-8") as file:
+                file.write(text)
+        return text
+
+    def plot(self, ax=None, *, dummies=True, neighbours=False):
+        """Draws the triangulation on a matplotlib Axes (a new figure's when
+        ax is None) and returns the Axes; the picture of :meth:`to_svg`.
+        Raises ImportError when matplotlib is not installed."""
+        return picture.plot(self, ax, dummies=dummies, neighbours=neighbours)
