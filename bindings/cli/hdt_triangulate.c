@@ -1,0 +1,439 @@
+/* hdt-triangulate: the Delaunay triangulation of a point set on M_g.
+ *
+ *   hdt-triangulate [OPTIONS] [FILE]
+ *
+ * Reads points (or draws random ones), triangulates them with libhdt's
+ * public C API, and writes the faces as text or JSON, optionally an SVG
+ * picture. Outputs appear whole or not at all. See usage() below and the
+ * README's section on the tool.
+ *
+ * This file: the options and the run. point_reader.c parses the input,
+ * random_points.c samples, snapshot.c fetches the triangulation,
+ * face_writer.c and svg_picture.c write it, output_file.c makes the writes
+ * all-or-nothing.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include "cli_util.h"
+#include "face_writer.h"
+#include "output_file.h"
+#include "point_reader.h"
+#include "random_points.h"
+#include "snapshot.h"
+#include "svg_picture.h"
+
+#include <hdt.h>
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#define MAX_RANDOM_POINTS 100000000ULL
+#define MAX_REPORTED_LINES 20
+
+static void usage(FILE *f) {
+  fprintf(f,
+          "usage: " CLI_NAME " [OPTIONS] [FILE]\n"
+          "\n"
+          "Delaunay triangulation of points on the symmetric hyperbolic surface M_g\n"
+          "(libhdt). Reads points \"x y\" or \"x,y\" of the open unit disk (Poincare\n"
+          "disk), one per line, from FILE or standard input (FILE absent or \"-\");\n"
+          "blank lines and '#' comments are ignored. Writes the vertices, faces and\n"
+          "translation words; nothing is written when anything fails.\n"
+          "\n"
+          "  -g, --genus G       genus of M_g, 2..%d (default 2)\n"
+          "      --random N      triangulate N random points, uniform for hyperbolic\n"
+          "                      area in F_g, instead of reading points\n"
+          "      --seed S        seed of --random (default 1)\n"
+          "  -f, --format FMT    text (default) or json\n"
+          "  -o, --output FILE   write the triangulation to FILE (default standard output)\n"
+          "      --svg FILE      also draw it in the Poincare disk, as SVG\n"
+          "      --neighbours    with --svg: also the copies across the 4g sides of F_g\n"
+          "      --keep-dummies  keep the dummy points (default: remove those that can go)\n"
+          "      --validate      check every invariant with exact predicates first\n"
+          "      --stats         counts and timings on standard error\n"
+          "  -h, --help          this text\n"
+          "  -V, --version       versions of the tool and of libhdt\n"
+          "\n"
+          "Exit status: 0 success, 1 bad input data or a failure (reported as\n"
+          "FILE:LINE: message for a bad line), 2 bad usage.\n",
+          HDT_GENUS_MAX);
+}
+
+/* ---- Options ---- */
+
+typedef struct options {
+  int genus;
+  int random;
+  unsigned long long n_random;
+  int seed_given;
+  unsigned long long seed;
+  face_format format;
+  const char *output;
+  const char *svg;
+  const char *input;
+  int keep_dummies, neighbours, validate, stats, help, version;
+} options;
+
+enum { OPT_GENUS, OPT_RANDOM, OPT_SEED, OPT_FORMAT, OPT_OUTPUT, OPT_SVG, OPT_NEIGHBOURS, OPT_KEEP,
+       OPT_VALIDATE, OPT_STATS, OPT_HELP, OPT_VERSION };
+
+typedef struct option_spec {
+  const char *long_name; /* without "--" */
+  char short_name;       /* 0: none */
+  int takes_value;
+  int id;
+} option_spec;
+
+static const option_spec option_table[] = {
+    {"genus", 'g', 1, OPT_GENUS},        {"random", 0, 1, OPT_RANDOM},
+    {"seed", 0, 1, OPT_SEED},            {"format", 'f', 1, OPT_FORMAT},
+    {"output", 'o', 1, OPT_OUTPUT},      {"svg", 0, 1, OPT_SVG},
+    {"neighbours", 0, 0, OPT_NEIGHBOURS}, {"neighbors", 0, 0, OPT_NEIGHBOURS},
+    {"keep-dummies", 0, 0, OPT_KEEP},    {"validate", 0, 0, OPT_VALIDATE},
+    {"stats", 0, 0, OPT_STATS},          {"help", 'h', 0, OPT_HELP},
+    {"version", 'V', 0, OPT_VERSION},
+};
+#define N_OPTIONS (sizeof option_table / sizeof option_table[0])
+
+/* Reports a usage error; returns 0 (for "return usage_error(...)"). */
+static int usage_error(const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+static int usage_error(const char *format, ...) {
+  va_list args;
+  va_start(args, format);
+  fflush(stdout);
+  fputs(CLI_NAME ": ", stderr);
+  vfprintf(stderr, format, args);
+  fputs("\nTry '" CLI_NAME " --help'.\n", stderr);
+  va_end(args);
+  return 0;
+}
+
+/* A decimal number in [min, max], nothing else. */
+static int parse_number(const char *text, unsigned long long min, unsigned long long max,
+                        unsigned long long *out) {
+  if (!text || *text < '0' || *text > '9') return 0;
+  errno = 0;
+  char *end = NULL;
+  const unsigned long long value = strtoull(text, &end, 10);
+  if (errno != 0 || *end != '\0' || value < min || value > max) return 0;
+  *out = value;
+  return 1;
+}
+
+static int apply_option(options *o, const option_spec *spec, const char *shown, const char *value) {
+  unsigned long long number = 0;
+  switch (spec->id) {
+    case OPT_GENUS:
+      if (!parse_number(value, 2, HDT_GENUS_MAX, &number))
+        return usage_error("%s needs an integer from 2 to %d", shown, HDT_GENUS_MAX);
+      o->genus = (int)number;
+      return 1;
+    case OPT_RANDOM:
+      if (!parse_number(value, 0, MAX_RANDOM_POINTS, &number))
+        return usage_error("%s needs a count from 0 to %llu", shown, MAX_RANDOM_POINTS);
+      o->random = 1;
+      o->n_random = number;
+      return 1;
+    case OPT_SEED:
+      if (!parse_number(value, 0, UINT64_MAX, &number))
+        return usage_error("%s needs an integer from 0 to 2^64 - 1", shown);
+      o->seed_given = 1;
+      o->seed = number;
+      return 1;
+    case OPT_FORMAT:
+      if (strcmp(value, "text") == 0) o->format = FACE_FORMAT_TEXT;
+      else if (strcmp(value, "json") == 0) o->format = FACE_FORMAT_JSON;
+      else return usage_error("unknown format '%s' (text or json)", value);
+      return 1;
+    case OPT_OUTPUT: o->output = value; return 1;
+    case OPT_SVG: o->svg = value; return 1;
+    case OPT_NEIGHBOURS: o->neighbours = 1; return 1;
+    case OPT_KEEP: o->keep_dummies = 1; return 1;
+    case OPT_VALIDATE: o->validate = 1; return 1;
+    case OPT_STATS: o->stats = 1; return 1;
+    case OPT_HELP: o->help = 1; return 1;
+    case OPT_VERSION: o->version = 1; return 1;
+  }
+  return 0;
+}
+
+static int parse_options(int argc, char **argv, options *o) {
+  memset(o, 0, sizeof *o);
+  o->genus = 2;
+  o->seed = 1;
+  o->format = FACE_FORMAT_TEXT;
+  int only_files = 0;
+  for (int i = 1; i < argc; ++i) {
+    const char *a = argv[i];
+    if (only_files || a[0] != '-' || strcmp(a, "-") == 0) {
+      if (o->input) return usage_error("more than one input file ('%s' and '%s')", o->input, a);
+      o->input = a;
+      continue;
+    }
+    if (strcmp(a, "--") == 0) {
+      only_files = 1;
+      continue;
+    }
+    const option_spec *spec = NULL;
+    const char *value = NULL;
+    char shown[64];
+    if (a[1] == '-') {
+      const char *name = a + 2, *eq = strchr(name, '=');
+      const size_t length = eq ? (size_t)(eq - name) : strlen(name);
+      for (size_t k = 0; k < N_OPTIONS && !spec; ++k)
+        if (strlen(option_table[k].long_name) == length && strncmp(option_table[k].long_name, name, length) == 0)
+          spec = &option_table[k];
+      if (!spec) return usage_error("unknown option '%s'", a);
+      snprintf(shown, sizeof shown, "--%s", spec->long_name);
+      if (eq && !spec->takes_value) return usage_error("%s takes no value", shown);
+      if (eq) value = eq + 1;
+    } else {
+      for (size_t k = 0; k < N_OPTIONS && !spec; ++k)
+        if (option_table[k].short_name == a[1]) spec = &option_table[k];
+      if (!spec || (a[2] != '\0' && !spec->takes_value)) return usage_error("unknown option '%s'", a);
+      snprintf(shown, sizeof shown, "-%c", a[1]);
+      if (a[2] != '\0') value = a + 2; /* -g3, -ofile */
+    }
+    if (spec->takes_value && !value) {
+      if (i + 1 >= argc) return usage_error("%s needs a value", shown);
+      value = argv[++i];
+    }
+    if (!apply_option(o, spec, shown, value)) return 0;
+  }
+  if (o->help || o->version) return 1;
+  if (o->random && o->input) return usage_error("--random and an input file ('%s') exclude each other", o->input);
+  if (o->seed_given && !o->random) return usage_error("--seed needs --random");
+  if (o->neighbours && !o->svg) return usage_error("--neighbours needs --svg");
+  if (o->svg && strcmp(o->svg, "-") == 0 && (!o->output || strcmp(o->output, "-") == 0))
+    return usage_error("--svg - and the triangulation would both go to standard output");
+  if (o->svg && o->output && strcmp(o->svg, o->output) == 0)
+    return usage_error("-o and --svg name the same file ('%s')", o->svg);
+  if (o->svg && o->output) {
+    struct stat a, b;
+    if (stat(o->svg, &a) == 0 && stat(o->output, &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino &&
+        S_ISREG(a.st_mode))
+      return usage_error("-o '%s' and --svg '%s' are the same file", o->output, o->svg);
+  }
+  return 1;
+}
+
+/* ---- The run ---- */
+
+typedef struct timings {
+  double input, create, insert, remove, validate, output;
+} timings;
+
+typedef struct counts {
+  size_t points, tried, duplicates, dummies_created, dummies_after_insert, dummies_left;
+} counts;
+
+static const char *input_name(const options *o) {
+  return (!o->input || strcmp(o->input, "-") == 0) ? "<stdin>" : o->input;
+}
+
+/* The points: drawn, or read and checked line by line. 0 on failure
+   (reported). */
+static int get_points(const options *o, point_list *points, counts *c) {
+  if (o->random) {
+    const size_t n = (size_t)o->n_random;
+    points->xy = cli_alloc(n, 2 * sizeof *points->xy);
+    points->lines = cli_alloc(n, sizeof *points->lines);
+    if (!points->xy || !points->lines) return 0;
+    if (!random_points(o->genus, (uint64_t)o->seed, n, points->xy, &c->tried)) return 0;
+    memset(points->lines, 0, n * sizeof *points->lines);
+    points->count = points->capacity = n;
+    return 1;
+  }
+  const char *name = input_name(o);
+  FILE *f = stdin;
+  if (o->input && strcmp(o->input, "-") != 0) {
+    f = fopen(o->input, "r");
+    if (!f) {
+      cli_error("cannot open %s: %s", o->input, strerror(errno));
+      return 0;
+    }
+  }
+  diagnostics d = {0};
+  int ok = point_reader_read(f, name, points, &d);
+  if (f != stdin) fclose(f);
+  /* With bad lines, the points that did parse get the domain check too, so
+     that every bad line is reported at once. */
+  if (ok && d.count > 0) ok = point_reader_check_domain(o->genus, points, &d);
+  if (d.count > 0) {
+    diagnostics_print(&d, name, MAX_REPORTED_LINES);
+    ok = 0;
+  }
+  diagnostics_free(&d);
+  return ok;
+}
+
+/* hdt_insert_many refuses the whole batch when one point is outside the
+   disk; its index is only in the message, so every point is checked again
+   with hdt_point_representative to name all the bad lines. */
+static void report_domain_errors(const options *o, const point_list *points) {
+  if (o->random) {
+    cli_error("a random point was refused: %s", hdt_last_error_message());
+    return;
+  }
+  char detail[256];
+  snprintf(detail, sizeof detail, "%s", hdt_last_error_message()); /* the next call replaces it */
+  diagnostics d = {0};
+  if (point_reader_check_domain(o->genus, points, &d)) {
+    if (d.count == 0) cli_error("hdt_insert_many: %s (%s)", hdt_status_string(HDT_EDOMAIN), detail);
+    diagnostics_print(&d, input_name(o), MAX_REPORTED_LINES);
+  }
+  diagnostics_free(&d);
+}
+
+static void picture_title(const options *o, const counts *c, char *title, size_t size) {
+  if (c->points == 0)
+    snprintf(title, size, "The dummy point set of M_%d%s and its Delaunay triangulation", o->genus,
+             o->keep_dummies ? ", before any insertion," : "");
+  else if (o->random)
+    snprintf(title, size, "Delaunay triangulation of %zu random point%s on M_%d (seed %llu)", c->points,
+             c->points == 1 ? "" : "s", o->genus, o->seed);
+  else if (o->input && strcmp(o->input, "-") != 0) {
+    const char *slash = strrchr(o->input, '/');
+    snprintf(title, size, "Delaunay triangulation of the %zu point%s of %s on M_%d", c->points,
+             c->points == 1 ? "" : "s", slash ? slash + 1 : o->input, o->genus);
+  }
+  else
+    snprintf(title, size, "Delaunay triangulation of %zu point%s on M_%d", c->points, c->points == 1 ? "" : "s",
+             o->genus);
+}
+
+static void print_stats(const options *o, const snapshot *s, const counts *c, const timings *t) {
+  const size_t V = s->vertex_count, F = s->face_count, E = 3 * F / 2;
+  const long euler = (long)V - (long)E + (long)F;
+  fflush(stdout);
+  fprintf(stderr, CLI_NAME " %s (libhdt %s): M_%d\n", HDT_CLI_VERSION, hdt_version_string(), o->genus);
+  if (o->random)
+    fprintf(stderr, "  points       : %zu random, uniform for area in F_%d (seed %llu; %zu drawn, %.1f%% kept)\n",
+            c->points, o->genus, o->seed, c->tried, c->tried ? 100.0 * (double)c->points / (double)c->tried : 0.0);
+  else
+    fprintf(stderr, "  points       : %zu read from %s (%zu repeat an earlier point)\n", c->points, input_name(o),
+            c->duplicates);
+  fprintf(stderr, "  dummies      : %zu at creation, %zu after insertion, %zu left%s\n", c->dummies_created,
+          c->dummies_after_insert, c->dummies_left, o->keep_dummies ? " (--keep-dummies)" : "");
+  fprintf(stderr, "  counts       : %zu vertices, %zu edges, %zu faces; V - E + F = %ld (2 - 2g = %d)\n", V, E, F,
+          euler, 2 - 2 * o->genus);
+  if (o->validate) fprintf(stderr, "  validate     : ok\n");
+  fprintf(stderr, "  timings (ms) : %s %.2f, create %.2f, insert %.2f, remove dummies %.2f", o->random ? "sample" : "read",
+          t->input, t->create, t->insert, t->remove);
+  if (o->validate) fprintf(stderr, ", validate %.2f", t->validate);
+  fprintf(stderr, ", output %.2f\n", t->output);
+}
+
+static int run(const options *o) {
+  int status = CLI_EXIT_FAILURE;
+  point_list points = {0};
+  hdt_triangulation *t = NULL;
+  uint32_t *point_vertex = NULL;
+  unsigned char *seen = NULL;
+  snapshot s = {0};
+  output_file out = {0}, svg = {0};
+  counts c = {0};
+  timings tm = {0};
+
+  double t0 = cli_now_ms();
+  if (!get_points(o, &points, &c)) goto done;
+  tm.input = cli_now_ms() - t0;
+  c.points = points.count;
+
+  /* The outputs before the work, so that an unwritable destination fails
+     fast; nothing appears there before the commit. */
+  if (!output_open(&out, o->output)) goto done;
+  if (o->svg && !output_open(&svg, o->svg)) goto done;
+
+  t0 = cli_now_ms();
+  if (!cli_check(hdt_create(&t, o->genus), "hdt_create")) goto done;
+  tm.create = cli_now_ms() - t0;
+  c.dummies_created = hdt_dummy_count(t);
+
+  point_vertex = cli_alloc(points.count, sizeof *point_vertex);
+  if (!point_vertex) goto done;
+  t0 = cli_now_ms();
+  const hdt_status inserted = hdt_insert_many(t, points.xy, points.count, point_vertex);
+  if (inserted == HDT_EDOMAIN) {
+    report_domain_errors(o, &points);
+    goto done;
+  }
+  if (!cli_check(inserted, "hdt_insert_many")) goto done;
+  tm.insert = cli_now_ms() - t0;
+  c.dummies_after_insert = hdt_dummy_count(t);
+
+  t0 = cli_now_ms();
+  if (!o->keep_dummies && !cli_check(hdt_remove_dummies(t, NULL), "hdt_remove_dummies")) goto done;
+  tm.remove = cli_now_ms() - t0;
+  c.dummies_left = hdt_dummy_count(t);
+
+  if (o->validate) {
+    t0 = cli_now_ms();
+    if (!cli_check(hdt_validate(t), "hdt_validate")) goto done;
+    tm.validate = cli_now_ms() - t0;
+  }
+
+  /* Input points that landed on a vertex an earlier point made. */
+  const size_t bound = hdt_vertex_id_bound(t);
+  seen = cli_alloc(bound, 1);
+  if (!seen) goto done;
+  memset(seen, 0, bound);
+  for (size_t i = 0; i < points.count; ++i) {
+    if (point_vertex[i] < bound && seen[point_vertex[i]]) ++c.duplicates;
+    if (point_vertex[i] < bound) seen[point_vertex[i]] = 1;
+  }
+
+  t0 = cli_now_ms();
+  if (!snapshot_take(t, &s)) goto done;
+  face_writer_write(out.f, o->format, &s, point_vertex, points.count);
+  if (o->svg) {
+    char title[256];
+    picture_title(o, &c, title, sizeof title);
+    const svg_options picture = {title, o->neighbours};
+    if (!svg_picture_write(svg.f, &s, &picture)) goto done;
+  }
+  /* Everything written and checked before anything is put in place. */
+  if (!output_finish(&out) || (o->svg && !output_finish(&svg))) goto done;
+  /* The picture first: when it cannot be put in place, the triangulation
+     is not written either. */
+  if (o->svg && !output_commit(&svg)) goto done;
+  if (!output_commit(&out)) goto done;
+  tm.output = cli_now_ms() - t0;
+
+  if (o->stats) print_stats(o, &s, &c, &tm);
+  status = CLI_EXIT_OK;
+
+done:
+  output_discard(&svg);
+  output_discard(&out);
+  snapshot_free(&s);
+  free(seen);
+  free(point_vertex);
+  hdt_destroy(t);
+  point_list_free(&points);
+  return status;
+}
+
+int main(int argc, char **argv) {
+  options o;
+  if (!parse_options(argc, argv, &o)) return CLI_EXIT_USAGE;
+  if (o.help) {
+    usage(stdout);
+    return fflush(stdout) == 0 ? CLI_EXIT_OK : CLI_EXIT_FAILURE;
+  }
+  if (o.version) {
+    printf(CLI_NAME " %s\nlibhdt %s (ABI %d)\n", HDT_CLI_VERSION, hdt_version_string(), hdt_abi_version());
+    return fflush(stdout) == 0 ? CLI_EXIT_OK : CLI_EXIT_FAILURE;
+  }
+  return run(&o);
+}

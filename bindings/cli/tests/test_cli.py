@@ -1,0 +1,360 @@
+#!/usr/bin/env python3
+"""Tests of hdt-triangulate, run as a user runs it.
+
+    python3 test_cli.py PATH/TO/hdt-triangulate
+
+Checks: --help/--version; random points in text and JSON (they parse, agree,
+and satisfy Euler's relation with the edges identified geometrically through
+the faces' translation words; every face's canonical copy has sides shorter
+than sys/2); the dummy point set; CSV and whitespace input give
+the same output, from a file, "-" and standard input; coordinates round-trip;
+bad lines are reported as FILE:LINE with a nonzero status and nothing written
+(no -o/--svg file, an existing one untouched, no temporary left, empty
+standard output); usage errors exit 2; the SVG is well-formed XML.
+Standard library only.
+"""
+import cmath
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+TOOL = None
+FAILURES = []
+
+
+def run(*args, stdin=None, cwd=None):
+    p = subprocess.run([TOOL, *map(str, args)], input=stdin, capture_output=True, text=True, cwd=cwd,
+                       timeout=60)
+    return p.returncode, p.stdout, p.stderr
+
+
+def check(condition, what):
+    if not condition:
+        FAILURES.append(what)
+        print("FAIL:", what)
+
+
+# ---- The formats ----
+
+def parse_text(text):
+    """The text format as the dict the JSON format gives."""
+    lines = [l for l in text.splitlines() if l and not l.startswith("#")]
+    out = {"vertices": [], "faces": [], "translations": {}, "points": []}
+    i = 0
+    key, value = lines[i].split()
+    assert key == "genus"
+    out["genus"] = int(value)
+    i += 1
+    while i < len(lines):
+        name, count = lines[i].split()
+        count = int(count)
+        rows = [l.split() for l in lines[i + 1:i + 1 + count]]
+        assert len(rows) == count, f"section {name}: {len(rows)} rows, header says {count}"
+        i += 1 + count
+        if name == "vertices":
+            for r in rows:
+                assert len(r) == 4 and r[3] in ("0", "1"), r
+                out["vertices"].append({"id": int(r[0]), "x": float(r[1]), "y": float(r[2]), "dummy": r[3] == "1"})
+        elif name == "faces":
+            for r in rows:
+                assert len(r) == 6, r
+                out["faces"].append({"vertices": [int(v) for v in r[:3]], "translations": [int(t) for t in r[3:]]})
+        elif name == "translations":
+            for r in rows:
+                assert int(r[1]) == len(r) - 2, r
+                out["translations"][r[0]] = [int(k) for k in r[2:]]
+        elif name == "points":
+            for j, r in enumerate(rows):
+                assert int(r[0]) == j, r
+                out["points"].append(int(r[1]))
+        else:
+            raise AssertionError(f"unknown section {name}")
+    return out
+
+
+# ---- Geometry, from the documented conventions ----
+
+def generators(g):
+    a = 1 / math.tan(math.pi / (4 * g))
+    b = math.sqrt(a * a - 1)
+    return [(complex(a), b * cmath.exp(1j * k * math.pi / (2 * g))) for k in range(4 * g)]
+
+
+def multiply(m, n):
+    """The product of SU(1,1) matrices [[a, b], [conj b, conj a]] given as (a, b)."""
+    (a, b), (c, d) = m, n
+    return a * c + b * d.conjugate(), a * d + b * c.conjugate()
+
+
+def word_matrix(gens, word):
+    """SU(1,1) matrix (a, b) of g_k1 ... g_km."""
+    m = (complex(1), complex(0))
+    for k in word:
+        m = multiply(m, gens[k])
+    return m
+
+
+def apply(m, z):
+    a, b = m
+    return (a * z + b) / (b.conjugate() * z + a.conjugate())
+
+
+def distance(p, q):
+    """Hyperbolic distance in the Poincare disk."""
+    return math.acosh(1 + 2 * abs(p - q) ** 2 / ((1 - abs(p) ** 2) * (1 - abs(q) ** 2)))
+
+
+def inverse(m):
+    a, b = m
+    return a.conjugate(), -b
+
+
+def check_triangulation(data, genus, what, dummies_removed=True):
+    """Euler's relation with edges identified geometrically, and the
+    documented face conventions."""
+    check(data["genus"] == genus, f"{what}: genus")
+    V, F = len(data["vertices"]), len(data["faces"])
+    ids = {v["id"]: complex(v["x"], v["y"]) for v in data["vertices"]}
+    check(len(ids) == V, f"{what}: vertex ids are distinct")
+    check(all(abs(z) < 1 for z in ids.values()), f"{what}: vertices in the disk")
+    check(F == 2 * (V + 2 * genus - 2), f"{what}: F = 2 (V + 2g - 2)")
+    gens = generators(genus)
+    words = data["translations"]
+    check(words.get("0") == [], f"{what}: translation 0 is the identity")
+    mats = {int(k): word_matrix(gens, w) for k, w in words.items()}
+    half_systole = math.acosh(1 + 2 * math.cos(math.pi / (2 * genus)))
+    edges = {}  # (u, v) -> list of [position of v seen from u at its representative, times seen]
+    for f in data["faces"]:
+        vs, ts = f["vertices"], f["translations"]
+        check(len(set(vs)) == 3, f"{what}: a face with three distinct vertices")
+        check(all(t in mats for t in ts), f"{what}: every translation id has a word")
+        check(ts[vs.index(min(vs))] == 0, f"{what}: the smallest vertex id sits at its representative")
+        # The canonical copy is a small triangle: its sides are shorter than
+        # its circumdiameter, < sys/2 (this checks the words and the points).
+        corners = [apply(mats[t], ids[v]) for v, t in zip(vs, ts)]
+        for p, q in ((0, 1), (1, 2), (2, 0)):
+            check(distance(corners[p], corners[q]) < half_systole + 1e-9,
+                  f"{what}: face {vs} side {p}{q} shorter than sys/2")
+        for a, b in ((0, 1), (1, 2), (2, 0)):
+            if vs[a] > vs[b]:
+                a, b = b, a
+            # Map the copy so that corner a sits at its representative.
+            q = apply(multiply(inverse(mats[ts[a]]), mats[ts[b]]), ids[vs[b]])
+            bucket = edges.setdefault((vs[a], vs[b]), [])
+            for entry in bucket:
+                if abs(entry[0] - q) < 1e-7:
+                    entry[1] += 1
+                    break
+            else:
+                bucket.append([q, 1])
+    E = sum(len(b) for b in edges.values())
+    check(all(n == 2 for b in edges.values() for _, n in b), f"{what}: every edge in exactly two faces")
+    check(2 * E == 3 * F, f"{what}: E = 3F/2 ({E}, {F})")
+    check(V - E + F == 2 - 2 * genus, f"{what}: V - E + F = 2 - 2g ({V} - {E} + {F})")
+    dummies = sum(v["dummy"] for v in data["vertices"])
+    if not dummies_removed:
+        check(dummies > 0, f"{what}: dummies kept")
+    return V, E, F
+
+
+# ---- The tests ----
+
+def test_help_and_version():
+    code, out, err = run("--help")
+    check(code == 0 and "usage: hdt-triangulate" in out and err == "", "--help exits 0 with the usage")
+    code, out, _ = run("-V")
+    check(code == 0 and out.startswith("hdt-triangulate ") and "libhdt" in out, "--version")
+
+
+def test_random_text_and_json(tmp):
+    code, text, err = run("--genus", 2, "--random", 80, "--seed", 5)
+    check(code == 0 and err == "", f"random text run: {err}")
+    t = parse_text(text)
+    check(len(t["points"]) == 80, "text: one vertex per input point")
+    check(sum(not v["dummy"] for v in t["vertices"]) == 80, "text: 80 user vertices")
+    check_triangulation(t, 2, "genus 2 text")
+    code, js, err = run("--genus", 2, "--random", 80, "--seed", 5, "--format", "json")
+    check(code == 0, f"random json run: {err}")
+    j = json.loads(js)
+    j.pop("libhdt", None)
+    check(t == j, "text and JSON hold the same triangulation")
+    # Same seed, same points; another seed, other points.
+    check(run("--genus", 2, "--random", 80, "--seed", 5)[1] == text, "--seed is reproducible")
+    check(run("--genus", 2, "--random", 80, "--seed", 6)[1] != text, "another seed, other points")
+    # Genus 3, dummies kept.
+    code, js, err = run("-g3", "--random", 40, "--seed", 2, "-f", "json", "--keep-dummies", "--validate")
+    check(code == 0, f"genus 3 keep-dummies: {err}")
+    check_triangulation(json.loads(js), 3, "genus 3 with dummies", dummies_removed=False)
+    # The file is the same as standard output.
+    out = os.path.join(tmp, "g4.json")
+    code, stdout, err = run("--genus=4", "--random=30", "--format=json", "-o", out, "--stats")
+    check(code == 0 and stdout == "" and "V - E + F = -6" in err, f"-o and --stats: {err}")
+    with open(out) as f:
+        check_triangulation(json.load(f), 4, "genus 4 from -o")
+    # Standard tools accept the JSON.
+    p = subprocess.run([sys.executable, "-m", "json.tool", out], capture_output=True)
+    check(p.returncode == 0, "python3 -m json.tool accepts the output")
+
+
+def test_dummies(tmp):
+    for genus in (2, 5):
+        code, js, err = run("--genus", genus, "--random", 0, "--keep-dummies", "--format", "json")
+        check(code == 0, f"dummy set of genus {genus}: {err}")
+        d = json.loads(js)
+        check(len(d["vertices"]) > 0 and all(v["dummy"] for v in d["vertices"]), f"genus {genus}: only dummies")
+        check(d["points"] == [], f"genus {genus}: no input points")
+        check_triangulation(d, genus, f"dummy set of genus {genus}", dummies_removed=False)
+    # Empty input: the same as --random 0.
+    code, text, _ = run("--keep-dummies", "-", stdin="# nothing\n\n")
+    check(code == 0 and text == run("--random", 0, "--keep-dummies")[1], "empty input is the dummy set")
+
+
+def sample_points(genus, n, seed):
+    """User vertices of a random run: points of F_g, as the tool printed them."""
+    d = json.loads(run("--genus", genus, "--random", n, "--seed", seed, "--format", "json")[1])
+    return [(v["x"], v["y"]) for v in d["vertices"] if not v["dummy"]]
+
+
+def test_input_forms(tmp):
+    pts = sample_points(2, 50, 11)
+    plain = "".join(f"{x!r} {y!r}\n" for x, y in pts)
+    forms = ["{x},{y}", "{x}, {y}", "{x} {y}", "\t{x}\t{y}  ", "{x} ,  {y}", "{x},{y}\r"]
+    mixed = "# a comment line\n\n"
+    for i, (x, y) in enumerate(pts):
+        mixed += forms[i % len(forms)].format(x=repr(x), y=repr(y)) + ("  # trailing comment" if i % 7 == 3 else "") + "\n"
+        if i % 10 == 0:
+            mixed += "   \n#\n"
+    files = {}
+    for name, content in (("plain.txt", plain), ("mixed.csv", mixed)):
+        files[name] = os.path.join(tmp, name)
+        with open(files[name], "w", newline="") as f:
+            f.write(content)
+    ref = run(files["plain.txt"], "-f", "json")
+    check(ref[0] == 0, f"plain file: {ref[2]}")
+    check(run(files["mixed.csv"], "-f", "json")[1] == ref[1], "CSV/mixed lines give the same output as plain")
+    check(run("-f", "json", stdin=mixed)[1] == ref[1], "standard input (no file) gives the same output")
+    check(run("-", "-f", "json", stdin=plain)[1] == ref[1], "'-' reads standard input")
+    d = json.loads(ref[1])
+    by_id = {v["id"]: (v["x"], v["y"]) for v in d["vertices"]}
+    check(len(d["points"]) == len(pts) and all(by_id[v] == p for v, p in zip(d["points"], pts)),
+          "points of F_g come back exactly, in input order through \"points\"")
+    check_triangulation(d, 2, "points from a file")
+    # A repeated point is not an error; it maps to the same vertex.
+    code, js, err = run("-f", "json", "--stats", stdin=plain + plain.splitlines()[0] + "\n")
+    d2 = json.loads(js) if code == 0 else {"points": [0, 1]}
+    check(code == 0 and d2["points"][-1] == d2["points"][0] and "1 repeat" in err, "a repeated point")
+
+
+def listing(directory):
+    return sorted(os.listdir(directory))
+
+
+def test_bad_input(tmp):
+    good = sample_points(2, 6, 3)
+    lines = [f"{x!r} {y!r}" for x, y in good]
+    cases = [
+        ("third column", 4, "0.1 0.2 0.3", "more than two"),
+        ("not a number", 3, "0.1 abc", "not a number: 'abc'"),
+        ("one number", 5, "0.25", "only one number"),
+        ("outside the disk", 2, "0.8,0.8", "not inside the open unit disk"),
+        ("on the circle", 6, "1 0", "not inside the open unit disk"),
+        ("NaN", 7, "nan 0.1", "not finite"),
+        ("trailing comma", 3, "0.1,0.2,", "more than two"),
+    ]
+    for what, line, bad, message in cases:
+        content = lines[:line - 1] + [bad] + lines[line - 1:]
+        path = os.path.join(tmp, "bad.txt")
+        with open(path, "w") as f:
+            f.write("\n".join(content) + "\n")
+        outdir = os.path.join(tmp, "out-" + what.replace(" ", "-"))
+        os.mkdir(outdir)
+        out, svg = os.path.join(outdir, "faces.txt"), os.path.join(outdir, "picture.svg")
+        code, stdout, err = run(path, "-o", out, "--svg", svg)
+        check(code == 1, f"{what}: exit status 1 (got {code})")
+        check(f"{path}:{line}: " in err and message in err, f"{what}: '{path}:{line}: ...{message}' in {err!r}")
+        check(listing(outdir) == [], f"{what}: no -o, no --svg, no temporary file: {listing(outdir)}")
+        # An existing destination is left as it was.
+        with open(out, "w") as f:
+            f.write("keep me\n")
+        code, stdout, err = run(path, "-o", out, "--svg", svg)
+        check(code == 1 and open(out).read() == "keep me\n", f"{what}: an existing -o file is untouched")
+        check(listing(outdir) == ["faces.txt"], f"{what}: no --svg, no temporary: {listing(outdir)}")
+        # Standard output gets nothing.
+        code, stdout, err = run("-", stdin="\n".join(content) + "\n")
+        check(code == 1 and stdout == "" and f"<stdin>:{line}: " in err, f"{what}: stdin, nothing on stdout")
+    # Several bad lines are all reported, in line order.
+    code, _, err = run("-", stdin="0.1 0.1\n2 0\nx y\n0.2 0.2\n0.3 0.1 9\n")
+    reported = [l.split(":")[1] for l in err.splitlines() if l.startswith("<stdin>:")]
+    check(code == 1 and reported == ["2", "3", "5"], f"all bad lines, in order: {err!r}")
+    # A header line gets a hint.
+    code, _, err = run("-", stdin="x,y\n0.1,0.1\n")
+    check(code == 1 and "<stdin>:1: not a number: 'x'" in err and "header" in err, f"header hint: {err!r}")
+    # A missing input file.
+    code, stdout, err = run(os.path.join(tmp, "missing.txt"))
+    check(code == 1 and stdout == "" and "missing.txt" in err, "missing input file: status 1")
+
+
+def test_usage_errors(tmp):
+    for args in (["--bogus"], ["--genus", "1"], ["--genus", "x"], ["-g"], ["--format", "xml"],
+                 ["--random", "5", "file.txt"], ["--seed", "3"], ["--neighbours"], ["--random", "-1"],
+                 ["a.txt", "b.txt"], ["--random", "3", "-o", "same.svg", "--svg", "same.svg"],
+                 ["--keep-dummies=yes"]):
+        code, stdout, err = run(*args, cwd=tmp)
+        check(code == 2 and stdout == "" and "hdt-triangulate:" in err and "--help" in err,
+              f"usage error {args}: status 2 (got {code}, {err!r})")
+
+
+def test_outputs(tmp):
+    svg = os.path.join(tmp, "t.svg")
+    out = os.path.join(tmp, "t.txt")
+    with open(out, "w") as f:
+        f.write("old\n")
+    os.chmod(out, 0o640)
+    code, stdout, err = run("--genus", 3, "--random", 60, "--svg", svg, "--neighbours", "-o", out)
+    check(code == 0 and stdout == "", f"--svg --neighbours run: {err}")
+    root = ET.parse(svg).getroot()
+    check(root.tag == "{http://www.w3.org/2000/svg}svg", "the SVG parses as XML, root <svg>")
+    check(len(root.findall(".//{http://www.w3.org/2000/svg}path")) >= 4, "the SVG has its paths")
+    check(parse_text(open(out).read())["genus"] == 3, "an existing -o file is replaced")
+    check(os.stat(out).st_mode & 0o777 == 0o640, "a replaced file keeps its permissions")
+    check(sorted(os.listdir(tmp)).count("t.svg") == 1 and not any(n.startswith(".t.") for n in os.listdir(tmp)),
+          "no temporary files left")
+    # The dummy picture; a name that needs escaping in the caption.
+    weird = os.path.join(tmp, "a<b&c.txt")
+    with open(weird, "w") as f:
+        f.write("0.1 0.2\n")
+    code, _, err = run(weird, "--svg", svg, "-o", os.devnull)
+    check(code == 0, f"-o /dev/null: {err}")
+    ET.parse(svg)
+    check(os.path.exists(os.devnull) and not os.path.isfile(os.devnull), "/dev/null is still a device")
+    code, _, err = run("--random", 0, "--keep-dummies", "--svg", svg, "-o", os.devnull)
+    check(code == 0 and "dummy point set" in open(svg).read(), f"dummy picture: {err}")
+
+
+def main():
+    global TOOL
+    TOOL = os.path.abspath(sys.argv[1])
+    with tempfile.TemporaryDirectory(prefix="hdt-cli-") as tmp:
+        for test in (test_help_and_version, test_random_text_and_json, test_dummies, test_input_forms,
+                     test_bad_input, test_usage_errors, test_outputs):
+            sub = os.path.join(tmp, test.__name__)
+            os.mkdir(sub)
+            try:
+                test(sub) if test.__code__.co_argcount else test()
+            except Exception as e:  # a crash of one test is a failure, the others still run
+                FAILURES.append(f"{test.__name__}: {e!r}")
+                print(f"FAIL: {test.__name__} raised {e!r}")
+            print(f"{test.__name__}: done")
+    if FAILURES:
+        print(f"{len(FAILURES)} failure(s)")
+        return 1
+    print("all passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
