@@ -1,5 +1,6 @@
 // Bowyer-Watson insertion on the surface, and insertion in Hilbert order.
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -148,8 +149,9 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
     try {
       home = surface::representative(*kernel_, x, y).translation;
     } catch (const std::domain_error &) {
-      throw std::domain_error("point " + std::to_string(i) + " (" + std::to_string(x) + ", " + std::to_string(y) +
-                              ") is not a finite point of the open unit disk");
+      char text[128];  // %.17g: the coordinates read back as the same doubles
+      std::snprintf(text, sizeof text, "point %zu (%.17g, %.17g) is not a finite point of the open unit disk", i, x, y);
+      throw std::domain_error(text);
     }
     double rx = x, ry = y;
     if (home != 0) {
