@@ -1,0 +1,176 @@
+/* Allocation failure: under a tight address-space limit (in a forked child,
+ * so the limit never reaches the test runner), insertions fail with
+ * HDT_ENOMEM and leave a valid triangulation, one that the failing call did
+ * not change; once memory is back, work goes on.
+ *
+ * Skipped under AddressSanitizer, ThreadSanitizer and valgrind: they reserve
+ * address space of their own, so RLIMIT_AS means nothing there.
+ */
+#define _DEFAULT_SOURCE
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "hdt_test.h"
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define UNDER_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define UNDER_SANITIZER 1
+#endif
+#endif
+#ifndef UNDER_SANITIZER
+#define UNDER_SANITIZER 0
+#endif
+
+static int under_valgrind(void) {
+  const char *preload = getenv("LD_PRELOAD");
+  return preload && strstr(preload, "vgpreload");
+}
+
+/* The child reports a broken expectation on stderr and exits with 1. */
+#define require(cond, ...)                          \
+  do {                                              \
+    if (!(cond)) {                                  \
+      fprintf(stderr, "enomem child: " __VA_ARGS__); \
+      fputc('\n', stderr);                          \
+      _exit(1);                                     \
+    }                                               \
+  } while (0)
+
+/* The process's address space now, in bytes (first field of statm). */
+static size_t address_space_bytes(void) {
+  FILE *f = fopen("/proc/self/statm", "r");
+  unsigned long pages = 0;
+  if (f) {
+    if (fscanf(f, "%lu", &pages) != 1) pages = 0;
+    fclose(f);
+  }
+  return (size_t)pages * (size_t)sysconf(_SC_PAGESIZE);
+}
+
+/* n random points of the disk of radius 0.95. */
+static double *random_points(uint64_t *rng, size_t n) {
+  double *xy = malloc(2 * n * sizeof *xy);
+  for (size_t i = 0; i < n;) {
+    const double x = 2.0 * (double)(rng_next(rng) >> 11) * 0x1.0p-53 - 1.0;
+    const double y = 2.0 * (double)(rng_next(rng) >> 11) * 0x1.0p-53 - 1.0;
+    if (x * x + y * y >= 0.95 * 0.95) continue;
+    xy[2 * i] = x, xy[2 * i + 1] = y;
+    ++i;
+  }
+  return xy;
+}
+
+typedef struct {
+  size_t vertices, faces, dummies, id_bound;
+} counts_t;
+
+static counts_t counts(const hdt_triangulation *t) {
+  counts_t c = {hdt_vertex_count(t), hdt_face_count(t), hdt_dummy_count(t), hdt_vertex_id_bound(t)};
+  return c;
+}
+
+static int same_counts(counts_t a, counts_t b) {
+  return a.vertices == b.vertices && a.faces == b.faces && a.dummies == b.dummies && a.id_bound == b.id_bound;
+}
+
+static void expect_out_of_memory(hdt_status s, const char *function) {
+  const char *msg = hdt_last_error_message();
+  require(s == HDT_ENOMEM, "%s returned %s, expected HDT_ENOMEM", function, hdt_status_string(s));
+  require(strstr(msg, function) && strstr(msg, "memory"), "message \"%s\"", msg);
+}
+
+/* The child: grows a triangulation until memory runs out, three ways. */
+static void child(int genus) {
+  const size_t start = 2000, many = 1000000;
+  uint64_t rng = 0xE40E3 + (uint64_t)genus;
+  double *first = random_points(&rng, start);
+  double *rest = random_points(&rng, many); /* allocated before the limit */
+  require(first && rest, "no memory for the points");
+  hdt_triangulation *t = NULL;
+  require(hdt_create(&t, genus) == HDT_OK, "hdt_create: %s", hdt_last_error_message());
+  require(hdt_insert_many(t, first, start, NULL) == HDT_OK, "hdt_insert_many: %s", hdt_last_error_message());
+  require(hdt_remove_dummies(t, NULL) == HDT_OK, "hdt_remove_dummies: %s", hdt_last_error_message());
+
+  struct rlimit old;
+  require(getrlimit(RLIMIT_AS, &old) == 0, "getrlimit: %s", strerror(errno));
+  const size_t headroom = (size_t)4 << 20;
+  struct rlimit tight = {(rlim_t)(address_space_bytes() + headroom), old.rlim_max};
+  require(old.rlim_cur == RLIM_INFINITY || tight.rlim_cur < old.rlim_cur, "the limit is already tight");
+  require(setrlimit(RLIMIT_AS, &tight) == 0, "setrlimit: %s", strerror(errno));
+
+  /* 1. A batch too large to reserve for: refused whole, nothing changed. */
+  counts_t before = counts(t);
+  expect_out_of_memory(hdt_insert_many(t, rest, many, NULL), "hdt_insert_many");
+  require(same_counts(before, counts(t)), "a refused hdt_insert_many changed the counts");
+
+  /* 2. One by one until the face array cannot grow: the failing insertion
+     changes nothing. */
+  size_t i = 0, inserted = 0;
+  hdt_status s = HDT_OK;
+  for (; i < many; ++i) {
+    before = counts(t);
+    s = hdt_insert(t, rest[2 * i], rest[2 * i + 1], NULL);
+    if (s != HDT_OK) break;
+    ++inserted;
+  }
+  require(i < many, "%zu insertions under a %zu MiB headroom never ran out of memory", inserted, headroom >> 20);
+  expect_out_of_memory(s, "hdt_insert");
+  require(same_counts(before, counts(t)), "a failed hdt_insert changed the counts");
+
+  /* 3. Memory back: the triangulation is valid, and the point that failed
+     goes in (it was not half inserted). */
+  require(setrlimit(RLIMIT_AS, &old) == 0, "setrlimit back: %s", strerror(errno));
+  require(hdt_validate(t) == HDT_OK, "after ENOMEM: %s", hdt_last_error_message());
+  uint32_t v = 0;
+  require(hdt_insert(t, rest[2 * i], rest[2 * i + 1], &v) == HDT_OK, "the failed point, again: %s",
+          hdt_last_error_message());
+  require(hdt_vertex_count(t) == before.vertices + 1, "one more vertex after the retry");
+  require(hdt_validate(t) == HDT_OK, "after the retry: %s", hdt_last_error_message());
+  printf("enomem g=%d: %zu vertices at the limit (%zu inserted one by one), then the failed point went in\n", genus,
+         before.vertices, inserted);
+  fflush(stdout);
+  hdt_destroy(t);
+  free(first);
+  free(rest);
+  _exit(0);
+}
+
+static void run_in_child(int genus) {
+  fflush(stdout);
+  fflush(stderr);
+  const pid_t pid = fork();
+  ck_assert_msg(pid >= 0, "fork: %s", strerror(errno));
+  if (pid == 0) child(genus);
+  int status = 0;
+  ck_assert_msg(waitpid(pid, &status, 0) == pid, "waitpid: %s", strerror(errno));
+  ck_assert_msg(WIFEXITED(status), "the child died of signal %d", WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  ck_assert_msg(WEXITSTATUS(status) == 0, "the child failed (its message is on stderr)");
+}
+
+START_TEST(insert_out_of_memory_genus2) {
+  if (UNDER_SANITIZER || under_valgrind()) {
+    printf("enomem: skipped under a sanitizer or valgrind (RLIMIT_AS does not apply)\n");
+    return;
+  }
+  run_in_child(2);
+}
+END_TEST
+
+START_TEST(insert_out_of_memory_genus4) {
+  if (UNDER_SANITIZER || under_valgrind()) return;
+  run_in_child(4);
+}
+END_TEST
+
+int main(void) {
+  const TTest *const tests[] = {insert_out_of_memory_genus2, insert_out_of_memory_genus4};
+  return run_tests("enomem", tests, sizeof tests / sizeof tests[0]);
+}
