@@ -29,6 +29,7 @@ uint32_t Triangulation::vertex_at(const Walk &at) const {
 
 Triangulation::Inserted Triangulation::insert(double x, double y) {
   const surface::Representative r = surface::representative(*kernel_, x, y);
+  jump_near(x, y, r.translation);
   const Walk at = walk_from_hint({x, y, r.translation, -1});
   const uint32_t existing = vertex_at(at);
   if (existing != kNone) {

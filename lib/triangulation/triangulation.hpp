@@ -124,6 +124,10 @@ class Triangulation {
     TranslationId frame_inverse;
   };
   Hint hint();
+  // Before a walk to a point in no particular order: makes last_vertex_ the
+  // nearest of it and a few random vertices to (x, y), whose representative
+  // is home(x + iy).
+  void jump_near(double x, double y, TranslationId home);
   Walk walk_from_hint(const TranslatedPoint &q) {
     const Hint h = hint();
     return walk(q, h.face, h.frame_inverse);
