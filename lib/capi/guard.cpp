@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include <mpfr.h>
+
 #include "exact/unit_disk.hpp"
 
 namespace hdt::capi {
@@ -14,6 +16,20 @@ thread_local std::string last_error;
 }  // namespace
 
 const char *last_error_message() noexcept { return last_error.c_str(); }
+
+namespace {
+// MPFR keeps constants (pi, ...) and cos/sin tables per thread; a thread that
+// ends without freeing them leaks them. One of these per thread that called
+// libhdt frees them at its exit.
+struct MpfrCacheRelease {
+  ~MpfrCacheRelease() { mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE); }
+};
+}  // namespace
+
+void release_caches_at_thread_exit() noexcept {
+  static thread_local MpfrCacheRelease release;
+  (void)release;
+}
 
 hdt_status fail(hdt_status status, const std::string &message) noexcept {
   try {

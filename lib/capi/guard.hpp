@@ -30,8 +30,12 @@ struct ApiError : std::runtime_error {
   hdt_status status;
 };
 
+// Makes sure this thread frees MPFR's per-thread caches when it exits.
+void release_caches_at_thread_exit() noexcept;
+
 template <class Body>
 hdt_status guarded(const char *function, Body &&body) noexcept {
+  release_caches_at_thread_exit();
   try {
     return body();
   } catch (const ApiError &e) {

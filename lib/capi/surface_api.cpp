@@ -42,7 +42,10 @@ hdt::predicates::Kernel &thread_kernel(int genus) {
 
 extern "C" {
 
-HDT_API double hdt_systole(int genus) HDT_NOEXCEPT { return hdt::surface::systole_or_nan(genus); }
+HDT_API double hdt_systole(int genus) HDT_NOEXCEPT {
+  hdt::capi::release_caches_at_thread_exit();
+  return hdt::surface::systole_or_nan(genus);
+}
 
 HDT_API hdt_status hdt_polygon_vertex(int genus, int k, double *x, double *y) HDT_NOEXCEPT {
   return polygon_point("hdt_polygon_vertex", genus, k, x, y,
