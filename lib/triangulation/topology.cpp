@@ -13,16 +13,12 @@ int Triangulation::corner_of(const Face &f, uint32_t v) const {
   throw std::logic_error("a face does not hold the vertex it should");
 }
 
-int Triangulation::twin(uint32_t f, int i) const {
+int Triangulation::twin_by_translations(uint32_t f, int i) const {
+  // Two edges of N join the same vertices to f (a non-simplicial stage of
+  // the dummy construction): the translations tell them apart.
   const Face &F = faces_[f];
   const Face &N = faces_.at(F.n[i]);
   const uint32_t a = F.v[next(i)], b = F.v[prev(i)];
-  int found = -1, matches = 0;
-  for (int k = 0; k < 3; ++k)
-    if (N.n[k] == f && N.v[next(k)] == b && N.v[prev(k)] == a) found = k, ++matches;
-  if (matches <= 1) return found;
-  // Two edges of N join the same vertices to f (a non-simplicial stage of
-  // the dummy construction): the translations tell them apart.
   group::TranslationTable &T = kernel_->table();
   for (int k = 0; k < 3; ++k)
     if (N.n[k] == f && N.v[next(k)] == b && N.v[prev(k)] == a && T.compose(F.nt[i], N.t[prev(k)]) == F.t[next(i)] &&

@@ -102,7 +102,17 @@ class Triangulation {
   void replace(const std::vector<uint32_t> &old, const std::vector<NewFace> &created,
                const std::vector<BoundaryEdge> &boundary, std::vector<uint32_t> *ids);
   // The edge of f.n[i] that is edge i of f seen from the other side.
-  int twin(uint32_t f, int i) const;
+  // Inline: insertion asks it for every edge of the hole's boundary.
+  int twin(uint32_t f, int i) const {
+    const Face &F = faces_[f];
+    const Face &N = faces_[F.n[i]];
+    const uint32_t a = F.v[next(i)], b = F.v[prev(i)];
+    int found = -1, matches = 0;
+    for (int k = 0; k < 3; ++k)
+      if (N.n[k] == f && N.v[next(k)] == b && N.v[prev(k)] == a) found = k, ++matches;
+    return matches <= 1 ? found : twin_by_translations(f, i);
+  }
+  int twin_by_translations(uint32_t f, int i) const;
   int corner_of(const Face &f, uint32_t v) const;
 
   // Walks from `start` (its canonical copy) to a face whose copy contains q.
