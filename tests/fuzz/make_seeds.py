@@ -1,0 +1,252 @@
+#!/usr/bin/env python3
+"""Writes the seed corpus of fuzz_api (tests/fuzz/corpus/) from readable
+operation lists, in the byte format fuzz_api.c decodes. Re-run after a
+change of that format:
+
+    python3 tests/fuzz/make_seeds.py [OUTPUT_DIR]
+
+Each seed is a short program: byte 0 picks the first triangulation's genus
+(2 + b % 5), then one byte per operation kind followed by its arguments.
+The seeds only need to reach the interesting paths quickly; the fuzzer
+mutates them from there. HDT_FUZZ_TRACE=1 build-fuzz/tests/fuzz/fuzz_replay
+SEED prints the C calls a seed makes.
+"""
+import os
+import struct
+import sys
+
+# Operation kinds: indices into the ops[] table of fuzz_api.c.
+CREATE, INSERT, INSERT_MANY, REMOVE, REMOVE_DUMMIES, LOCATE, FACES, TRANSLATION, VERTEX, WORDS, NULL = (
+    0, 1, 5, 7, 10, 11, 13, 14, 15, 16, 17)
+
+
+def u8(b):
+    return bytes([b & 0xFF])
+
+
+def u16(v):
+    return struct.pack("<H", v & 0xFFFF)
+
+
+def u32(v):
+    return struct.pack("<I", v & 0xFFFFFFFF)
+
+
+def f64(x):
+    return struct.pack("<d", x)
+
+
+NO_PERTURB = 0x80
+
+
+def ulps(dx, dy):
+    """Perturbation byte: dx, dy in -4..3 ulps."""
+    return u8(((dx + 4) & 7) | (((dy + 4) & 7) << 3))
+
+
+# ---- Points (gen_point) ----
+def raw(x, y):
+    return u8(0) + f64(x) + f64(y)
+
+
+def special(i, j):
+    return u8(1) + u8(i) + u8(j)
+
+
+def polygon_vertex(k, perturb=NO_PERTURB):
+    return u8(2) + u8(k) + (perturb if isinstance(perturb, bytes) else u8(perturb))
+
+
+def side_midpoint(k, perturb=NO_PERTURB):
+    return u8(3) + u8(k) + (perturb if isinstance(perturb, bytes) else u8(perturb))
+
+
+def on_side(k, t, perturb=NO_PERTURB):
+    return u8(4) + u8(k) + u16(int(t * 65535)) + (perturb if isinstance(perturb, bytes) else u8(perturb))
+
+
+def near_circle(angle16, radius_index, perturb=NO_PERTURB):
+    return u8(5) + u16(angle16) + u8(radius_index) + (perturb if isinstance(perturb, bytes) else u8(perturb))
+
+
+def previous(i, perturb=NO_PERTURB):
+    """Needs a remembered point (else it is (0, 0) and reads nothing more)."""
+    return u8(6) + u8(i) + (perturb if isinstance(perturb, bytes) else u8(perturb))
+
+
+def vertex_point(v, perturb=NO_PERTURB):
+    return u8(8) + u16(v) + (perturb if isinstance(perturb, bytes) else u8(perturb))
+
+
+def coarse(x, y):
+    return u8(9) + u16(int(x / 1.2 * 32768)) + u16(int(y / 1.2 * 32768))
+
+
+def image(i, letters):
+    """An image of remembered point i (needs one) under a short word."""
+    return u8(10) + u8(i) + word(letters)
+
+
+def dyadic(x, y):
+    return u8(11) + u8(int(x * 128)) + u8(int(y * 128))
+
+
+def tiny(mx, my, e):
+    return u8(12) + u8(mx) + u8(my) + u16(e)
+
+
+def raw_x_special_y(x, j):
+    return u8(13) + u8(1) + f64(x) + u8(j)
+
+
+def word(letters, wild=False):
+    n = len(letters)
+    b = n | (0xE0 if wild else 0)
+    assert b % 25 == n
+    return u8(b) + b"".join(u32(k) if wild else u8(k) for k in letters)
+
+
+# ---- Operations ----
+def create(slot, genus):
+    return u8(CREATE) + u8(slot) + u8(genus - 2)
+
+
+def create_bad(i):
+    return u8(CREATE) + u8(0) + u8(0xF0 + i)
+
+
+def insert(point, slot=0, null_out=False):
+    return u8(INSERT) + u8(slot) + point + u8(0x10 if null_out else 0)
+
+
+def insert_many(points, slot=0, null_out=False):
+    assert len(points) <= 48
+    return u8(INSERT_MANY) + u8(slot) + u8(len(points) | (0x40 if null_out else 0)) + b"".join(points)
+
+
+def remove(v, slot=0):
+    return u8(REMOVE) + u8(slot) + u8(2) + u16(v)  # v mod the id bound
+
+
+def remove_raw(v, slot=0):
+    return u8(REMOVE) + u8(slot) + u8(0) + u32(v)
+
+
+def remove_dummies(slot=0):
+    return u8(REMOVE_DUMMIES) + u8(slot) + u8(1)
+
+
+def locate(point, slot=0, flags=1):
+    return u8(LOCATE) + u8(slot) + point + u8(flags)
+
+
+def nearest(point, slot=0):
+    return u8(LOCATE) + u8(slot) + point + u8(0)
+
+
+def faces(mode, slot=0, null_v=False, null_t=False, null_count=False, all_ones=False, extra=b""):
+    """hdt_faces with capacity mode (op_faces: 0 none, 1 F-1, 2 F, 3 more,
+    4 extra=u16 mod 2F+2, 5 huge) and the NULL arguments asked for."""
+    for b in range(256):
+        if (b % 6 == mode and bool(b & 0x40) == null_v and bool(b & 0x20) == null_t
+                and ((b & 0x18) == 0x18) == null_count and bool(b & 0x80) == all_ones):
+            return u8(FACES) + u8(slot) + u8(b) + extra + (u8(1) if null_count else b"")
+    raise ValueError("no byte for that faces call")
+
+
+def translation(id16, cap, slot=0):
+    return u8(TRANSLATION) + u8(slot) + u8(2 | (1 << 2)) + u16(id16) + u8(cap)
+
+
+def translation_raw(id32, slot=0):
+    return u8(TRANSLATION) + u8(slot) + u8(0) + u32(id32)
+
+
+def vertex(v, slot=0, flags=0):
+    return u8(VERTEX) + u8(slot) + u8(2) + u16(v) + u8(flags)
+
+
+def words(genus_byte, letters, what, point, k, nid=0, cap=None):
+    out = u8(WORDS) + u8(genus_byte) + word(letters) + u8(what)
+    if not what & 1:
+        out += u8(cap if cap is not None else len(letters))
+    out += point + u32(k)
+    return out + (u32(nid) if genus_byte < 0xF0 else b"")
+
+
+def null():
+    return u8(NULL)
+
+
+def genus(g):
+    return u8(g - 2)
+
+
+def grid(n, r=0.6):
+    pts = []
+    for i in range(n):
+        for j in range(n):
+            x = -r + 2 * r * (i + 0.5) / n
+            y = -r + 2 * r * (j + 0.5) / n
+            pts.append(dyadic(x, y))
+    return pts
+
+
+SEEDS = {
+    "insert-basic": genus(2) + insert(dyadic(0.1, 0.2)) + insert(dyadic(-0.3, 0.25)) + insert(coarse(0.5, -0.1))
+    + faces(2) + locate(dyadic(0.1, 0.2)) + nearest(dyadic(0.4, 0.4)),
+    "insert-polygon": genus(2) + b"".join(insert(polygon_vertex(k, ulps(k % 3 - 1, 0))) for k in range(4))
+    + b"".join(insert(side_midpoint(k, ulps(0, k % 3 - 1))) for k in range(4))
+    + b"".join(insert(on_side(k, 0.3)) for k in range(8)),
+    "insert-sides-g3": genus(3) + b"".join(insert(on_side(k, t)) for k in range(12) for t in (0.001, 0.5, 0.999)),
+    "near-circle": genus(2) + b"".join(insert(near_circle(a * 4099, r)) for a in range(3) for r in range(9)),
+    "domain-errors": genus(2) + insert(special(27, 0)) + insert(special(28, 1)) + insert(special(29, 2))
+    + insert(special(2, 0)) + insert(special(6, 6)) + insert(special(19, 19)) + insert(special(18, 18))
+    + insert(raw_x_special_y(1e308, 3)) + insert(tiny(3, 5, 1074)),
+    "duplicates": genus(2) + insert(dyadic(0.25, 0.125)) + insert(previous(0)) + insert(previous(0, ulps(1, 0)))
+    + insert(image(0, [0])) + insert(image(0, [3, 5])) + insert_many([previous(0), previous(0), dyadic(0.5, 0)]),
+    "dummy-to-user": genus(2) + insert(vertex_point(0)) + insert(vertex_point(3)) + insert(vertex_point(5, ulps(1, 1)))
+    + remove_dummies() + vertex(0) + vertex(3),
+    "many-g2": genus(2) + insert_many(grid(5)) + remove_dummies() + b"".join(remove(7 * i) for i in range(6)),
+    "many-g3": genus(3) + insert_many(grid(6)) + remove_dummies() + faces(3),
+    "many-g4": genus(4) + insert_many(grid(4, 0.8)) + remove_dummies() + remove(2) + remove(40),
+    "many-g5": genus(5) + insert_many(grid(4, 0.9)) + remove_dummies(),
+    "many-g6": genus(6) + insert_many(grid(3, 0.9)) + insert_many(grid(3, 0.5), null_out=True) + remove_dummies(),
+    "many-bad-point": genus(2) + insert_many([dyadic(0.1, 0.1), special(27, 0), dyadic(0.2, 0.1)])
+    + insert_many([dyadic(0.1, 0.1), near_circle(0, 1)]),
+    "remove": genus(2) + insert_many(grid(3)) + b"".join(remove(v) for v in range(0, 24, 2)) + remove_raw(0xFFFFFFFF)
+    + remove_raw(5) + remove_raw(5),
+    "faces-capacities": genus(2) + insert(dyadic(0.1, 0.2)) + faces(0) + faces(1) + faces(2) + faces(3, null_t=True)
+    + faces(4, extra=u16(17)) + faces(5) + faces(5, all_ones=True) + faces(2, null_v=True)
+    + faces(2, null_count=True) + faces(0, null_v=True, null_t=True),
+    "translations": genus(3) + insert_many(grid(3)) + b"".join(translation(i, 9) for i in (0, 1, 13, 120, 121, 150))
+    + translation_raw(-5) + translation_raw(0x7FFFFFFF),
+    "vertices": genus(2) + insert(dyadic(0.1, 0.2)) + vertex(0) + vertex(14) + vertex(200) + vertex(1, flags=1)
+    + vertex(1, flags=2),
+    "words": genus(2) + words(0, [0, 5, 2, 7, 4, 1, 6, 3], 1, dyadic(0.1, 0.1), 3, 10)
+    + words(1, [0, 6, 0, 6, 11], 0, polygon_vertex(1), 7, 120, cap=2)
+    + words(4, list(range(24)), 4, near_circle(100, 0), -1, 5) + words(0xF2, [1, 2], 1, dyadic(0, 0), 0)
+    + words(6, [3] * 20, 1, raw(0.5, 0.5), 1 << 31, 999),
+    "null-and-bad-create": genus(2) + null() + b"".join(create_bad(i) for i in range(6)),
+    "two-triangulations": genus(2) + create(1, 4) + insert(dyadic(0.1, 0.2), slot=1) + insert(dyadic(0.1, 0.2))
+    + insert_many(grid(2), slot=1) + create(0, 5) + insert(polygon_vertex(0), slot=0) + remove_dummies(slot=1)
+    + faces(2, slot=1),
+    "locate-nasty": genus(2) + locate(polygon_vertex(0)) + locate(on_side(1, 0.5)) + locate(near_circle(7, 0))
+    + locate(special(27, 0)) + nearest(polygon_vertex(2, ulps(-1, 1))) + nearest(near_circle(123, 2))
+    + locate(tiny(1, 1, 1074), flags=7),
+    "subnormals": genus(2) + insert(tiny(1, 0, 0)) + insert(tiny(0, 1, 1074)) + insert(tiny(-1, 1, 1070))
+    + insert(special(11, 12)) + insert(special(13, 0)) + insert(special(9, 10)),
+}
+
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus")
+    os.makedirs(out, exist_ok=True)
+    for name, data in SEEDS.items():
+        with open(os.path.join(out, name), "wb") as f:
+            f.write(data)
+    print(f"{len(SEEDS)} seeds in {out}")
+
+
+if __name__ == "__main__":
+    main()
