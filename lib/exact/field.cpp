@@ -14,7 +14,7 @@ template <class T>
 struct Field::Evaluator {
   std::vector<T> cosines;
   T sigma;
-  double unit;  // 2^-p: the relative rounding unit of T
+  T unit;  // 2^-p: the relative rounding unit of T (a double underflows to 0 beyond 1074 bits)
 
   Evaluator(const CyclotomicField &base, int genus) {
     using std::cos;
@@ -22,7 +22,8 @@ struct Field::Evaluator {
     const T two_pi = T(2) * exact::pi<T>();
     for (int j = 0; j < base.degree(); ++j) cosines.push_back(cos(two_pi * T(j) / T(base.order())));
     sigma = sqrt(cos(exact::pi<T>() / T(2 * genus)));
-    unit = std::ldexp(1.0, -int(std::numeric_limits<T>::digits));
+    using std::ldexp;
+    unit = ldexp(T(1), -int(std::numeric_limits<T>::digits));
   }
 
   // sum c_j cos(2 pi j/n), unscaled by 2^exponent, and sum |c_j|.
@@ -123,7 +124,7 @@ int Field::sign_at(const FieldElement &a) const {
   // Rounding of the coefficients, the cosines (argument rounding included),
   // sigma, the products and the sums: far below (d + 64) units per unit of
   // magnitude (sigma < 1, counted as 2).
-  const T bound = (Um + T(2) * Vm) * T(double(ev.cosines.size() + 64) * ev.unit);
+  const T bound = (Um + T(2) * Vm) * (T(double(ev.cosines.size() + 64)) * ev.unit);
   using std::isfinite;
   if constexpr (std::is_same_v<T, double>)
     if (!std::isfinite(value) || !std::isfinite(bound)) return 2;
