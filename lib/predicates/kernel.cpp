@@ -87,7 +87,7 @@ int32_t Kernel::add_site(const ExactSite &site, double *x, double *y, const grou
   if (field_.sign(w) <= 0) throw std::domain_error("add_site: the point is not inside the open unit disk");
   // Quotients in 132-bit MPFR, then rounded: within u |.| + 2^-120 of exact.
   const double z = field_.approximate(site.Z);
-  SiteData data{site, field_.approximate(site.X) / z, field_.approximate(site.Y) / z, 0, {0, 0, 0}, false, {}};
+  SiteData data{site, field_.approximate(site.X) / z, field_.approximate(site.Y) / z, 0, {0, 0, 0}, false, {}, {}};
   data.rounding = 4 * kUnit * std::max(std::abs(data.x), std::abs(data.y)) + 0x1p-100;
   // N = (Z^2 + X^2 + Y^2, 2XZ, 2YZ) / w, each part exact before rounding.
   const FieldElement r2 = field_.add(field_.mul(site.X, site.X), field_.mul(site.Y, site.Y));
@@ -96,7 +96,10 @@ int32_t Kernel::add_site(const ExactSite &site, double *x, double *y, const grou
   data.n[0] = field_.approximate(field_.add(zz, r2)) / den;
   data.n[1] = field_.approximate(field_.mul(site.X, two_z)) / den;
   data.n[2] = field_.approximate(field_.mul(site.Y, two_z)) / den;
-  if (approximation) data.has_mid = true, data.mid = *approximation;
+  if (approximation) {
+    data.has_mid = true, data.mid = *approximation;
+    data.fast = {round_to_fast(data.mid.re), round_to_fast(data.mid.im)};
+  }
   sites_.push_back(data);
   *x = data.x;
   *y = data.y;
@@ -189,7 +192,7 @@ bool untranslated(const TranslatedPoint &p) { return p.translation == 0 && p.sit
 
 // The same description is the same point: a duplicate insertion walks onto
 // its vertex, and these orientations are zero without the exact stage.
-bool same_point(const TranslatedPoint &a, const TranslatedPoint &b) {
+bool identical(const TranslatedPoint &a, const TranslatedPoint &b) {
   return a.x == b.x && a.y == b.y && a.translation == b.translation && a.site == b.site;
 }
 
@@ -238,9 +241,9 @@ int Kernel::orientation(const TranslatedPoint &p, const TranslatedPoint &q, cons
   const Difference db = difference(b, a), dc = difference(c, a);
   const Det3 d = det3_filtered(a.n, a.error, db.d, db.error, dc.d, dc.error);
   if (const int s = sign_of(d.value, d.bound)) return ++statistics_.filtered, s;
-  if (same_point(p, q) || same_point(q, r) || same_point(r, p)) return ++statistics_.filtered, 0;
+  if (identical(p, q) || identical(q, r) || identical(r, p)) return ++statistics_.filtered, 0;
   ++statistics_.exact;
-  if (const int s = orientation_mid(p, q, r); s != 2) return ++statistics_.refined, s;
+  if (const int s = orientation_refined(p, q, r); s != 2) return s;
   return orientation_exact(p, q, r);
 }
 
@@ -258,8 +261,7 @@ int Kernel::in_circle_filter(const TranslatedPoint &p, const TranslatedPoint &q,
   const Det3 d = det3_filtered(db.d, db.error, dc.d, dc.error, de.d, de.error);
   if (const int sg = sign_of(d.value, d.bound)) return ++statistics_.filtered, -sg;
   ++statistics_.exact;
-  if (const int sg = in_circle_mid(p, q, r, s); sg != 2) return ++statistics_.refined, sg;
-  return 2;
+  return in_circle_refined(p, q, r, s);
 }
 
 int Kernel::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
@@ -402,7 +404,7 @@ int Kernel::large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q,
   if (mm < -bound_mm) return ++statistics_.filtered, 1;
   if (mm > bound_mm && std::abs(Q) > bound_Q) return ++statistics_.filtered, Q > 0 ? 1 : -1;
   ++statistics_.exact;
-  if (const int s = large_circumdisk_mid(p, q, r); s != 2) return ++statistics_.refined, s;
+  if (const int s = large_circumdisk_refined(p, q, r); s != 2) return s;
   return large_circumdisk_exact(p, q, r);
 }
 

@@ -37,6 +37,7 @@
 #include "exact/multiprecision.hpp"
 #include "group/exact_lorentz.hpp"
 #include "group/translation_table.hpp"
+#include "predicates/double_double.hpp"
 #include "predicates/filtered_point.hpp"
 
 namespace hdt::predicates {
@@ -56,17 +57,29 @@ struct TranslatedPoint {
   int32_t site = -1;  // >= 0: the point is kernel site `site`, (x, y) its rounding
 };
 
-// A point of the second filter stage (133-bit reals).
-using MidReal = exact::mp_real<40>;
-struct MidPoint {
-  MidReal n[3];
+// A point of a refined filter stage: the hyperboloid vector in the stage's
+// reals and a certified bound on each coordinate's error.
+template <class Real>
+struct RefinedPoint {
+  Real n[3];
   double error;  // on each coordinate
 };
+// Stage 2a: double-double reals (about 106 bits in plain double operations).
+using FastReal = DoubleDouble;
+using FastPoint = RefinedPoint<FastReal>;
+// Stage 2b: 133-bit MPFR reals.
+using MidReal = exact::mp_real<40>;
+using MidPoint = RefinedPoint<MidReal>;
+
+// x rounded to double-double (hi = RN(x), lo = RN(x - hi)): within
+// u^2 |x| = 2^-106 |x|.
+FastReal round_to_fast(const MidReal &x);
 
 // Counts of the filter's successes and failures, for tests and benchmarks.
 struct FilterStatistics {
   unsigned long filtered = 0;
   unsigned long exact = 0;
+  unsigned long fast = 0;     // decided by the double-double stage (counted in exact too)
   unsigned long refined = 0;  // decided by the 133-bit stage (counted in exact too)
 };
 
@@ -137,10 +150,20 @@ class Kernel {
     std::array<exact::FieldElement, 4> v;
   };
   ExactRow exact_row(const TranslatedPoint &p);
-  // The second filter stage, in 133-bit arithmetic with a certified bound:
-  // it decides what double precision cannot near the polygon's corners,
-  // where translations of N have entries up to cosh(2R) and cancel against
-  // the point; 2 when it cannot decide either (sites go straight to exact).
+  // The refined filter stages (refined_filter.cpp): the double filter's
+  // determinants with a certified bound in more precise arithmetic. They
+  // decide what double precision cannot near the polygon's corners, where
+  // translations of N have entries up to cosh(2R) and cancel against the
+  // point. Stage 2a (fast) in double-double, stage 2b (mid) in 133-bit MPFR
+  // when 2a cannot decide; each returns 2 when it cannot decide (sites
+  // without an approximation go straight to exact).
+  //
+  // Stage 2a, then 2b, statistics counted. Out of line (refined_filter.cpp)
+  // so that the double filters' code stays as tight as without them.
+  int orientation_refined(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+  int in_circle_refined(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                        const TranslatedPoint &s);
+  int large_circumdisk_refined(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   using Mid = MidReal;
   bool mid_point(const TranslatedPoint &p, MidPoint *out);
   const group::Lorentz<Mid> &mid_matrix(TranslationId id);
@@ -149,6 +172,15 @@ class Kernel {
                     const TranslatedPoint &s);
   int large_circumdisk_mid(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   std::vector<std::unique_ptr<group::Lorentz<Mid>>> mid_matrices_;  // by translation id, lazily
+  bool fast_point(const TranslatedPoint &p, FastPoint *out);
+  const group::Lorentz<FastReal> &fast_matrix(TranslationId id);
+  int orientation_fast(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+  int in_circle_fast(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                     const TranslatedPoint &s);
+  int large_circumdisk_fast(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+  // Each entry within 2^-106 |L_ij| + 2^-121 L_00, by translation id, lazily.
+  std::vector<std::unique_ptr<group::Lorentz<FastReal>>> fast_matrices_;
+  FastReal fast_circumdisk_k_{0};  // 1 + cos(pi/2g), within (u^2 + 2^-132) relative; 0: not yet
 
   int beyond_side_filtered(const FilteredPoint &a, int side, const TranslatedPoint &p);
   // The filtered in-circle sign, or 2 when the filter cannot decide.
@@ -179,6 +211,7 @@ class Kernel {
     double n[3];            // the hyperboloid vector, each entry within 4u relative
     bool has_mid = false;   // mid: the coordinates within 2^-128
     group::Complex<MidReal> mid;
+    group::Complex<FastReal> fast;  // mid rounded: within 2^-128 + 2^-106 (has_mid only)
   };
   std::vector<SiteData> sites_;
   const exact::Field &field_;

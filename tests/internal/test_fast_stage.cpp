@@ -1,0 +1,228 @@
+// Internal tests of the kernel's double-double filter stage (stage 2a).
+//
+// 1. The double-double operations meet the error bounds that the stage's
+//    analysis assumes (predicates/double_double.hpp), against MPFR at 400
+//    bits, on random inputs with random low parts, wide exponent spreads and
+//    heavy cancellation.
+// 2. Configurations the double filter cannot decide at genus 16 and 32
+//    (clusters of translated points at the corner v_0 of F_g, where the
+//    translations' entries reach 1e5 and more): the kernel's answers, which
+//    now pass through stage 2a, equal those of an independent 2126-bit
+//    evaluation, and stage 2a decides nearly all of them.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <initializer_list>
+#include <random>
+#include <vector>
+
+#include "exact/multiprecision.hpp"
+#include "group/generators.hpp"
+#include "group/lorentz.hpp"
+#include "group/presentation.hpp"
+#include "predicates/double_double.hpp"
+#include "predicates/kernel.hpp"
+#include "surface/polygon.hpp"
+
+// Last: check.h defines a macro named fail that breaks <iostream>.
+#include <check.h>
+
+#include "run_suite.hpp"
+
+using namespace hdt;
+using predicates::DoubleDouble;
+using predicates::Kernel;
+using predicates::TranslatedPoint;
+
+namespace {
+
+using Big = exact::mp_real<120>;  // about 400 bits
+using Rng = std::mt19937_64;
+
+constexpr double kU2 = 0x1p-106;  // u^2
+
+Big big(const DoubleDouble &x) { return Big(x.hi) + Big(x.lo); }
+
+bool normalised(const DoubleDouble &x) { return x.hi + x.lo == x.hi && std::abs(x.lo) <= 0x1p-53 * std::abs(x.hi); }
+
+// A random normalised double-double of magnitude about 2^e.
+DoubleDouble random_dd(Rng &rng, int e) {
+  std::uniform_real_distribution<double> unit(0.5, 1.0);
+  std::uniform_int_distribution<int> sign(0, 1);
+  const double hi = std::ldexp(unit(rng), e) * (sign(rng) ? 1 : -1);
+  const double lo = std::ldexp(unit(rng), e - 53 - int(rng() % 4)) * (sign(rng) ? 1 : -1);
+  return DoubleDouble::fast_two_sum(hi, lo);
+}
+
+double relative_error(const DoubleDouble &computed, const Big &exact) {
+  if (exact == 0) return big(computed) == 0 ? 0 : INFINITY;
+  return static_cast<double>(abs((big(computed) - exact) / exact));
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+START_TEST(double_double_error_bounds) {
+  Rng rng(7001);
+  double worst_add = 0, worst_mul = 0, worst_div = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const int ex = int(rng() % 80) - 40, ey = int(rng() % 80) - 40;
+    const DoubleDouble x = random_dd(rng, ex);
+    DoubleDouble y = random_dd(rng, ey);
+    if (i % 4 == 0) {
+      // Heavy cancellation in x + y: y = -x + a few last places of x.
+      const DoubleDouble d = random_dd(rng, ex - 40 - int(rng() % 60));
+      y = -(x + d);
+    }
+    const DoubleDouble s = x + y, p = x * y, q = x / y, t = x - y;
+    ck_assert(normalised(s) && normalised(p) && normalised(q) && normalised(t));
+    worst_add = std::max({worst_add, relative_error(s, big(x) + big(y)), relative_error(t, big(x) - big(y))});
+    worst_mul = std::max(worst_mul, relative_error(p, big(x) * big(y)));
+    worst_div = std::max(worst_div, relative_error(q, big(x) / big(y)));
+  }
+  // Products and quotients by plain doubles too (lo = 0).
+  for (int i = 0; i < 50000; ++i) {
+    const DoubleDouble x = random_dd(rng, int(rng() % 40) - 20), y(random_dd(rng, int(rng() % 40) - 20).hi);
+    worst_mul = std::max(worst_mul, relative_error(x * y, big(x) * big(y)));
+    worst_div = std::max(worst_div, relative_error(y / x, big(y) / big(x)));
+  }
+  std::printf("double-double: worst relative errors add %.3f u^2, mul %.3f u^2, div %.3f u^2\n", worst_add / kU2,
+              worst_mul / kU2, worst_div / kU2);
+  ck_assert_msg(worst_add <= 3.01 * kU2, "add: %g u^2", worst_add / kU2);
+  ck_assert_msg(worst_mul <= 8.01 * kU2, "mul: %g u^2", worst_mul / kU2);
+  ck_assert_msg(worst_div <= 12.2 * kU2, "div: %g u^2", worst_div / kU2);
+}
+END_TEST
+
+namespace {
+
+// The reference: hyperboloid vectors from generator products in MPFR at
+// 2126 bits (a word of genus 32 loses at most 64 * 14.3 bits), and the
+// determinants from them; each sign is asserted to be far above the
+// reference's own error (absolute, about 2^-1100 of the points' size).
+using Ref = exact::mp_real<640>;
+struct RefPoint {
+  Ref n[3];
+};
+
+RefPoint reference_point(Kernel &kernel, const TranslatedPoint &p) {
+  const group::Word &word = kernel.table().word(p.translation);
+  const group::Lorentz<Ref> L = group::shared_generators<Ref>(kernel.presentation()).lorentz(word);
+  const Ref x(p.x), y(p.y), s = x * x + y * y, w = Ref(1) - s;
+  const Ref hat[3] = {Ref(1) + s, x + x, y + y};
+  RefPoint r;
+  for (int i = 0; i < 3; ++i) r.n[i] = (L.m[i][0] * hat[0] + L.m[i][1] * hat[1] + L.m[i][2] * hat[2]) / w;
+  return r;
+}
+
+Ref det3(const Ref *a, const Ref *b, const Ref *c) {
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+// The sign of v, asserted decisive: |v| > 2^-900 scale.
+int decisive_sign(const Ref &v, const Ref &scale) {
+  ck_assert_msg(abs(v) > scale * Ref(0x1p-900), "the reference cannot decide");
+  return v > 0 ? 1 : -1;
+}
+
+Ref size_of(std::initializer_list<const RefPoint *> points) {
+  Ref m(1);
+  for (const RefPoint *p : points)
+    for (const Ref &x : p->n) m = std::max(m, Ref(abs(x)));
+  return m;
+}
+
+int reference_orientation(const RefPoint &a, const RefPoint &b, const RefPoint &c) {
+  const Ref m = size_of({&a, &b, &c});
+  return decisive_sign(det3(a.n, b.n, c.n), m * m * m);
+}
+
+int reference_in_circle(const RefPoint &a, const RefPoint &b, const RefPoint &c, const RefPoint &e) {
+  Ref d[3][3];
+  const RefPoint *q[3] = {&b, &c, &e};
+  for (int r = 0; r < 3; ++r)
+    for (int i = 0; i < 3; ++i) d[r][i] = q[r]->n[i] - a.n[i];
+  const Ref m = size_of({&a, &b, &c, &e});
+  return -decisive_sign(det3(d[0], d[1], d[2]), m * m * m);
+}
+
+int reference_large_circumdisk(const RefPoint &a, const RefPoint &b, const RefPoint &e, int genus) {
+  Ref d2[3], d3[3];
+  for (int i = 0; i < 3; ++i) d2[i] = b.n[i] - a.n[i], d3[i] = e.n[i] - a.n[i];
+  const Ref c[3] = {d2[1] * d3[2] - d2[2] * d3[1], d2[2] * d3[0] - d2[0] * d3[2], d2[0] * d3[1] - d2[1] * d3[0]};
+  const Ref c3 = -(c[0] * a.n[0] + c[1] * a.n[1] + c[2] * a.n[2]);
+  const Ref mm = c[0] * c[0] - c[1] * c[1] - c[2] * c[2];
+  const Ref m = size_of({&a, &b, &e}), m4 = m * m * m * m;
+  if (decisive_sign(mm, m4) < 0) return 1;
+  const Ref k = Ref(1) + cos(exact::pi<Ref>() / Ref(2 * genus));
+  return decisive_sign(c3 * c3 - k * mm, m4 * m * m);
+}
+
+}  // namespace
+
+START_TEST(corner_clusters_agree_with_reference) {
+  const int g = _i == 0 ? 16 : 32;
+  const auto t0 = std::chrono::steady_clock::now();
+  Kernel kernel{group::Presentation(g)};
+  const int n = 4 * g;
+  // The copies of F_g around v_0: h(v_j) = v_0 for a neighbour h (in double
+  // the Minkowski product may be off by 1e-2 at genus 32; other vertices of
+  // the tiling are much farther).
+  const group::HyperboloidPoint<double> v0 = group::to_hyperboloid(surface::polygon_vertex<double>(g, 0));
+  struct Copy {
+    int j;
+    group::TranslationId h;
+  };
+  std::vector<Copy> copies;
+  for (group::TranslationId h = 0; std::size_t(h) < kernel.table().neighbour_count(); ++h)
+    for (int j = 0; j < n; ++j) {
+      const auto image = kernel.table().lorentz(h).apply(group::to_hyperboloid(surface::polygon_vertex<double>(g, j)));
+      if (group::minkowski(image, v0) < 1.5) copies.push_back({j, h});
+    }
+  ck_assert_int_eq(int(copies.size()), n);
+  Rng rng(7100 + g);
+  // A point of copy c: v_j moved towards 0 by a relative gap in [1e-9, 1e-5]
+  // and a small sideways step, then mapped by h close to v_0.
+  auto corner_point = [&](const Copy &c) {
+    const auto v = surface::polygon_vertex<double>(g, c.j);
+    const double gap = std::pow(10.0, std::uniform_real_distribution<double>(-9, -5)(rng));
+    const double side = std::uniform_real_distribution<double>(-0.2, 0.2)(rng) * gap;
+    return TranslatedPoint{v.re * (1 - gap) - v.im * side, v.im * (1 - gap) + v.re * side, c.h};
+  };
+  int calls = 0;
+  kernel.reset_statistics();
+  const int configurations = 150;
+  for (int i = 0; i < configurations; ++i) {
+    std::array<TranslatedPoint, 4> t;
+    for (auto &p : t) p = corner_point(copies[rng() % copies.size()]);
+    std::array<RefPoint, 4> r;
+    for (int k = 0; k < 4; ++k) r[k] = reference_point(kernel, t[k]);
+    const int o = reference_orientation(r[0], r[1], r[2]);
+    ck_assert_int_eq(kernel.orientation(t[0], t[1], t[2]), o);
+    // in_circle wants a counterclockwise triangle.
+    if (o < 0) std::swap(t[1], t[2]), std::swap(r[1], r[2]);
+    ck_assert_int_eq(kernel.in_circle(t[0], t[1], t[2], t[3]), reference_in_circle(r[0], r[1], r[2], r[3]));
+    ck_assert_int_eq(kernel.large_circumdisk(t[0], t[1], t[2]), reference_large_circumdisk(r[0], r[1], r[2], g));
+    calls += 3;
+  }
+  const auto s = kernel.statistics();
+  std::printf("corner clusters g=%d: %d calls: filter %lu, double-double %lu, 133-bit %lu, exact %lu (%.1f s)\n", g,
+              calls, s.filtered, s.fast, s.refined, s.exact - s.fast - s.refined, seconds_since(t0));
+  // The double filter fails on most of these; the double-double stage takes
+  // nearly all of those.
+  ck_assert_uint_gt(s.exact, calls / 2);
+  ck_assert_uint_gt(s.fast, s.exact * 9 / 10);
+}
+END_TEST
+
+int main(void) {
+  return run_suite("fast_stage", 600, [](TCase *tc) {
+    tcase_add_test(tc, double_double_error_bounds);
+    tcase_add_loop_test(tc, corner_clusters_agree_with_reference, 0, 2);
+  });
+}
