@@ -4,6 +4,7 @@
 #include <cstring>
 #include <functional>
 #include <stdexcept>
+#include <string>
 
 #include "group/word_matrix.hpp"
 #include "predicates/filtered_point.hpp"
@@ -16,6 +17,20 @@ using exact::FieldElement;
 namespace {
 
 int sign_of(double value, double bound) { return value > bound ? 1 : value < -bound ? -1 : 0; }
+
+// A filter's decision, compared with the exact evaluation when the library
+// is built with -Dcheck_predicates=true (HDT_CHECK_PREDICATES): a wrong sign
+// then throws (HDT_EINTERNAL at the C API) instead of corrupting a
+// triangulation. Slow; for debugging and fuzzing.
+template <class Exact>
+int checked([[maybe_unused]] const char *predicate, int decided, [[maybe_unused]] Exact &&exact) {
+#ifdef HDT_CHECK_PREDICATES
+  if (const int e = int(exact()); e != decided)
+    throw std::logic_error(std::string("check_predicates: ") + predicate + " decided " + std::to_string(decided) +
+                           ", the exact evaluation says " + std::to_string(e));
+#endif
+  return decided;
+}
 
 // The difference a - b of filtered points and its error bound.
 struct Difference {
@@ -233,6 +248,10 @@ int disk_in_circle(const DiskPoint &a, const DiskPoint &b, const DiskPoint &c, c
 }  // namespace
 
 int Kernel::orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
+  return checked("orientation", orientation_staged(p, q, r), [&] { return orientation_exact(p, q, r); });
+}
+
+int Kernel::orientation_staged(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
   if (untranslated(p) && untranslated(q) && untranslated(r))
     if (const int s = disk_orientation(disk_point(p), disk_point(q), disk_point(r))) return ++statistics_.filtered, s;
   const FilteredPoint a = filtered(p);
@@ -267,11 +286,13 @@ int Kernel::in_circle_filter(const TranslatedPoint &p, const TranslatedPoint &q,
 int Kernel::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                       const TranslatedPoint &s) {
   const int sg = in_circle_filter(p, q, r, s);
-  return sg != 2 ? sg : in_circle_exact(p, q, r, s);
+  if (sg == 2) return in_circle_exact(p, q, r, s);
+  return checked("in_circle", sg, [&] { return in_circle_exact(p, q, r, s); });
 }
 
 int Kernel::in_circle_perturbed(const std::array<TranslatedPoint, 4> &pt, const std::array<uint32_t, 4> &vertex) {
-  if (const int s = in_circle_filter(pt[0], pt[1], pt[2], pt[3]); s != 2) return s;
+  if (const int s = in_circle_filter(pt[0], pt[1], pt[2], pt[3]); s != 2)
+    return checked("in_circle_perturbed", s, [&] { return in_circle_exact(pt[0], pt[1], pt[2], pt[3]); });
   const std::array<ExactRow, 4> rows{exact_row(pt[0]), exact_row(pt[1]), exact_row(pt[2]), exact_row(pt[3])};
   if (const int s = field_.sign(det4(rows))) return s;
   // Cocircular: the coefficient of eps_v is sum over v's rows r of
@@ -311,7 +332,8 @@ int Kernel::beyond_side_filtered(const FilteredPoint &a, int side, const Transla
   const double norm = std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]);
   // n is rounded (u per entry, 1 - Q0 one more), the sum rounds 3u.
   const double bound = (8 * kUnit * size + a.error * norm * (1 + 4 * kUnit)) * 1.01;
-  if (const int s = sign_of(value, bound)) return ++statistics_.filtered, s;
+  if (const int s = sign_of(value, bound))
+    return ++statistics_.filtered, checked("beyond_side", s, [&] { return beyond_side_exact(p, side); });
   ++statistics_.exact;
   return beyond_side_exact(p, side);
 }
@@ -334,7 +356,8 @@ int Kernel::compare_distance(const TranslatedPoint &p, const TranslatedPoint &a,
   const double size = std::abs(fp.n[0] * d.d[0]) + std::abs(fp.n[1] * d.d[1]) + std::abs(fp.n[2] * d.d[2]);
   const double bound = (3 * (fp.error * (max_abs3(d.d) + d.error) + (max_abs3(fp.n) + fp.error) * d.error) +
                         4 * kUnit * size) * 1.01;
-  if (const int s = sign_of(value, bound)) return ++statistics_.filtered, s;
+  if (const int s = sign_of(value, bound))
+    return ++statistics_.filtered, checked("compare_distance", s, [&] { return compare_distance_exact(p, a, b); });
   ++statistics_.exact;
   return compare_distance_exact(p, a, b);
 }
@@ -353,7 +376,7 @@ bool Kernel::same_point(const TranslatedPoint &p, const TranslatedPoint &q) {
   const FilteredPoint a = filtered(p), b = filtered(q);
   for (int i = 0; i < 3; ++i)
     if (std::abs(a.n[i] - b.n[i]) > (a.error + b.error) * (1 + 4 * kUnit) + kUnit * std::abs(a.n[i] - b.n[i]))
-      return ++statistics_.filtered, false;
+      return ++statistics_.filtered, checked("same_point", false, [&] { return same_point_exact(p, q); });
   ++statistics_.exact;
   return same_point_exact(p, q);
 }
@@ -381,6 +404,11 @@ int Kernel::large_circumdisk_exact(const TranslatedPoint &p, const TranslatedPoi
 }
 
 int Kernel::large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
+  return checked("large_circumdisk", large_circumdisk_staged(p, q, r),
+                 [&] { return large_circumdisk_exact(p, q, r); });
+}
+
+int Kernel::large_circumdisk_staged(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
   const FilteredPoint a = filtered(p), b = filtered(q), e = filtered(r);
   const Difference d2 = difference(b, a), d3 = difference(e, a);
   const double m2 = max_abs3(d2.d) + d2.error, m3 = max_abs3(d3.d) + d3.error;

@@ -182,6 +182,10 @@ class Kernel {
   std::vector<std::unique_ptr<group::Lorentz<FastReal>>> fast_matrices_;
   FastReal fast_circumdisk_k_{0};  // 1 + cos(pi/2g), within (u^2 + 2^-132) relative; 0: not yet
 
+  // The public predicates' stages (filters, then exact), before the check of
+  // -Dcheck_predicates.
+  int orientation_staged(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+  int large_circumdisk_staged(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int beyond_side_filtered(const FilteredPoint &a, int side, const TranslatedPoint &p);
   // The filtered in-circle sign, or 2 when the filter cannot decide.
   int in_circle_filter(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
