@@ -609,6 +609,63 @@ START_TEST(points_near_the_circle) {
 }
 END_TEST
 
+/* (h) Extreme coordinates: subnormal and tiny ones beside the origin (their
+ * squares underflow), and clusters of points a few ulps apart near the
+ * circle, where the translated copies nearly coincide. The first two
+ * sequences are the fuzzer's findings (tests/fuzz/crashes/): an in_circle
+ * filter decided on an underflowed determinant, and hdt_validate summed
+ * angles in double around vertices 4 ulps apart. */
+START_TEST(extreme_coordinates) {
+  {
+    hdt_triangulation *t = create(5);
+    ck_assert_int_eq(hdt_insert(t, 0, 0, NULL), HDT_OK);
+    ck_assert_int_eq(hdt_insert(t, 0x0.0000000000003p-1022, -0x0.0000000000004p-1022, NULL), HDT_OK);
+    expect_valid(t, "g=5: the origin and a subnormal point");
+    hdt_destroy(t);
+  }
+  {
+    hdt_triangulation *t = create(2);
+    const double xy[][2] = {{0x1.fffffff768fa1p-2, 0},
+                            {0x1.ff7ced916872bp-1, 0},
+                            {0x1.d8f84e5e8a648p-2, 0x1.8823d20068ea9p-3},
+                            {0x1.ff7ced9168727p-1, 0}};
+    for (int i = 0; i < 4; ++i) ck_assert_int_eq(hdt_insert(t, xy[i][0], xy[i][1], NULL), HDT_OK);
+    expect_valid(t, "g=2: two points 4 ulps apart at |z| = 0.999");
+    hdt_destroy(t);
+  }
+  const double tiny[] = {0x1p-1074, 0x3p-1074, 0x1p-1030, 0x1p-1022, 0x1p-700, 0x1p-511, 0x1p-300};
+  for (int g = 2; g <= 4; ++g) {
+    hdt_triangulation *t = create(g);
+    char what[96];
+    ck_assert_int_eq(hdt_insert(t, 0, 0, NULL), HDT_OK);
+    for (size_t i = 0; i < sizeof tiny / sizeof tiny[0]; ++i)
+      for (int k = 0; k < 4; ++k) {
+        const double x = (k & 1) ? -tiny[i] : tiny[i], y = (k & 2) ? tiny[i] / 2 : -tiny[i] * 3;
+        const hdt_status s = hdt_insert(t, x, y, NULL);
+        expect(s == HDT_OK, "g=%d: insert (%a, %a): %s (%s)", g, x, y, hdt_status_string(s), hdt_last_error_message());
+      }
+    /* Clusters a few ulps apart at 1 - |z| = 2^-10 and 2^-30, on an axis and
+     * on a diagonal. */
+    const double radius[] = {1 - 0x1p-10, 1 - 0x1p-30};
+    for (int r = 0; r < 2; ++r)
+      for (int d = 0; d < 2; ++d) {
+        double x = d ? radius[r] * sqrt(0.5) : radius[r], y = d ? x : 0;
+        for (int k = 0; k < 4; ++k) {
+          const hdt_status s = hdt_insert(t, x, y, NULL);
+          expect(s == HDT_OK, "g=%d: insert (%a, %a): %s (%s)", g, x, y, hdt_status_string(s),
+                 hdt_last_error_message());
+          x = nextafter(nextafter(x, 0), 0);
+          if (k == 1) y = nextafter(y, 1);
+        }
+      }
+    snprintf(what, sizeof what, "g=%d, tiny coordinates and ulp clusters near the circle", g);
+    expect_valid(t, what);
+    expect_structure(t, what);
+    hdt_destroy(t);
+  }
+}
+END_TEST
+
 /* ---- Bad input ---- */
 
 /* Case-insensitive: does msg contain one of the '|'-separated keywords? */
@@ -1151,6 +1208,7 @@ int main(void) {
       dummy_coordinates_reinserted,
       duplicates_and_close_points,
       points_near_the_circle,
+      extreme_coordinates,
       bad_input_is_rejected,
       dummies_go_after_many_points,
       dummy_removal_statistics,

@@ -16,7 +16,20 @@ using exact::FieldElement;
 
 namespace {
 
-int sign_of(double value, double bound) { return value > bound ? 1 : value < -bound ? -1 : 0; }
+// The error bounds assume no underflow. Where a filter's bound is relative
+// only (the disk rows of disk_in_circle, built from the exact inputs), a
+// square or product that underflows errs by up to 2^-1075 absolutely
+// instead; with entries below 2 the few dozen such errors of a determinant
+// stay far below kUnderflowAllowance, which every decision also requires.
+// (Points with subnormal coordinates near the origin decided in_circle
+// wrongly without it; found by fuzzing.) Elsewhere the bounds are above
+// 2^-150 and the allowance changes nothing.
+constexpr double kUnderflowAllowance = 0x1p-1000;
+
+int sign_of(double value, double bound) {
+  bound += kUnderflowAllowance;
+  return value > bound ? 1 : value < -bound ? -1 : 0;
+}
 
 // A filter's decision, compared with the exact evaluation when the library
 // is built with -Dcheck_predicates=true (HDT_CHECK_PREDICATES): a wrong sign
