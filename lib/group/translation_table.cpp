@@ -1,5 +1,7 @@
 #include "group/translation_table.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "group/canonical.hpp"
@@ -14,7 +16,7 @@ std::size_t TranslationTable::WordHash::operator()(const Word &w) const noexcept
   return std::size_t(h);
 }
 
-TranslationTable::TranslationTable(const Presentation &p) : presentation_(p) {
+TranslationTable::TranslationTable(const Presentation &p) : presentation_(p), centres_(p) {
   for (const Word &w : neighbour_words(p)) add_canonical(w);
   neighbour_count_ = words_.size();
 }
@@ -36,6 +38,9 @@ void TranslationTable::compute_matrices(TranslationId id) {
   moebius_[id] = accurate_moebius(presentation_, words_[id]);
   lorentz_[id] = accurate_lorentz(presentation_, words_[id]);
   has_matrices_[id] = true;
+  // Column 0 is the centre h(O), each entry correctly rounded.
+  const Lorentz<double> &L = lorentz_[id];
+  centres_.add(id, L.m[1][0], L.m[2][0], 0x1p-53 * std::max(std::abs(L.m[1][0]), std::abs(L.m[2][0])));
 }
 
 TranslationId TranslationTable::intern(const Word &w) { return add_canonical(canonical_word(presentation_, w)); }
@@ -44,18 +49,48 @@ TranslationId TranslationTable::compose_cached(TranslationId a, TranslationId b)
   const uint64_t key = (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
   auto it = products_.find(key);
   if (it != products_.end()) return it->second;
-  Word w = word(a);
-  const Word &wb = word(b);
-  w.insert(w.end(), wb.begin(), wb.end());
-  const TranslationId id = intern(w);
+  double p1, p2, error;
+  product_centre(a, b, &p1, &p2, &error);
+  TranslationId id = centres_.find(p1, p2, error);
+  if (id < 0) {
+    Word w = word(a);
+    const Word &wb = word(b);
+    w.insert(w.end(), wb.begin(), wb.end());
+    id = intern(w);
+    centres_.add(id, p1, p2, error);
+  }
   products_.emplace(key, id);
   return id;
+}
+
+void TranslationTable::product_centre(TranslationId a, TranslationId b, double *p1, double *p2, double *error) {
+  // (a b)(O) = L_a (L_b e_0). Entries of L_a, L_b within u = 2^-53 relative;
+  // each coordinate sums three products: within (2u + 3u) S_i (1 + 6u) of
+  // S_i = sum_j |L_a,ij| |L_b,j0|; 6u S_i covers it.
+  const Lorentz<double> &A = lorentz(a);
+  const Lorentz<double> &B = lorentz(b);
+  double value[3], size[3];
+  for (int i = 1; i < 3; ++i) {
+    value[i] = A.m[i][0] * B.m[0][0] + A.m[i][1] * B.m[1][0] + A.m[i][2] * B.m[2][0];
+    size[i] = std::abs(A.m[i][0] * B.m[0][0]) + std::abs(A.m[i][1] * B.m[1][0]) + std::abs(A.m[i][2] * B.m[2][0]);
+  }
+  *p1 = value[1], *p2 = value[2];
+  *error = 6 * 0x1p-53 * std::max(size[1], size[2]);
 }
 
 TranslationId TranslationTable::inverse_interned(TranslationId a) {
   if (std::size_t(a) >= inverses_.size()) inverses_.resize(words_.size(), -1);
   if (inverses_.at(a) < 0) {
-    const TranslationId b = intern(presentation_.inverse(word(a)));
+    // The centre of a^-1 is L_a^-1 e_0 = (L_00, -L_01, -L_02) (L^-1 = J L^T J,
+    // J = diag(1, -1, -1)): entries of L_a, each within u relative.
+    const Lorentz<double> &L = lorentz(a);
+    const double p1 = -L.m[0][1], p2 = -L.m[0][2];
+    const double error = 0x1p-53 * std::max(std::abs(p1), std::abs(p2));
+    TranslationId b = centres_.find(p1, p2, error);
+    if (b < 0) {
+      b = intern(presentation_.inverse(word(a)));
+      centres_.add(b, p1, p2, error);
+    }
     if (std::size_t(b) >= inverses_.size()) inverses_.resize(words_.size(), -1);
     inverses_[a] = b;
     inverses_[b] = a;

@@ -5,13 +5,17 @@
 // the same for every table of a genus; elements outside N get the next ids as
 // they are first met. Each id caches its canonical word and its double
 // matrices, and products of ids are cached, so the hot path never touches
-// words or multiprecision.
+// words or multiprecision. A product or inverse not cached yet is named by
+// its tile centre, computed from the factors' double matrices, when the
+// centre index knows it (centre_index.hpp); only the others have their word
+// canonicalised.
 #pragma once
 
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
 
+#include "group/centre_index.hpp"
 #include "group/lorentz.hpp"
 #include "group/moebius.hpp"
 #include "group/presentation.hpp"
@@ -73,6 +77,9 @@ class TranslationTable {
   TranslationId compose_cached(TranslationId a, TranslationId b);
   TranslationId inverse_interned(TranslationId a);
   void compute_matrices(TranslationId id);
+  // The centre of a * b from the factors' matrices, and its error in each
+  // coordinate.
+  void product_centre(TranslationId a, TranslationId b, double *p1, double *p2, double *error);
 
   Presentation presentation_;
   std::size_t neighbour_count_ = 0;
@@ -83,6 +90,7 @@ class TranslationTable {
   std::unordered_map<Word, TranslationId, WordHash> ids_;
   std::unordered_map<uint64_t, TranslationId> products_;
   std::vector<TranslationId> inverses_;  // -1: not known yet
+  CentreIndex centres_;  // the ids whose matrices are computed, and products named by word
 };
 
 }  // namespace hdt::group

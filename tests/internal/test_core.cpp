@@ -7,6 +7,7 @@
 #include "exact/multiprecision.hpp"
 #include "exact/unit_disk.hpp"
 #include "group/canonical.hpp"
+#include "group/centre_index.hpp"
 #include "group/dehn.hpp"
 #include "group/exact_lorentz.hpp"
 #include "group/generators.hpp"
@@ -207,6 +208,46 @@ START_TEST(neighbour_ids_are_fixed_and_tables_agree) {
 }
 END_TEST
 
+// Products and inverses named through the centre index (most of them, once
+// the factors' matrices are known) are the elements of the concatenated
+// words, checked against canonical_word; products of products reach
+// elements outside N. A centre away from every element finds nothing.
+START_TEST(products_named_by_centre_are_canonical) {
+  for (int g : {2, 3, 4, 8}) {
+    const Presentation p(g);
+    group::TranslationTable table(p);
+    std::mt19937 rng(100 + g);
+    std::vector<group::TranslationId> pool;
+    for (std::size_t id = 0; id < table.neighbour_count(); ++id) pool.push_back(group::TranslationId(id));
+    for (int trial = 0; trial < 1500; ++trial) {
+      std::uniform_int_distribution<std::size_t> pick(0, pool.size() - 1);
+      const auto a = pool[pick(rng)], b = pool[pick(rng)];
+      const auto ab = table.compose(a, b);
+      Word w = table.word(a);
+      w.insert(w.end(), table.word(b).begin(), table.word(b).end());
+      ck_assert_msg(table.word(ab) == group::canonical_word(p, w), "g=%d: product %d * %d misnamed", g, a, b);
+      const auto inv = table.inverse(ab);
+      ck_assert_msg(table.word(inv) == group::canonical_word(p, p.inverse(table.word(ab))), "g=%d: inverse misnamed", g);
+      if (trial % 50 == 0 && table.word(ab).size() <= std::size_t(3 * g)) pool.push_back(ab);
+    }
+    group::CentreIndex index(p);
+    for (std::size_t id = 0; id < table.neighbour_count(); ++id) {
+      const auto &L = table.lorentz(group::TranslationId(id));
+      index.add(int32_t(id), L.m[1][0], L.m[2][0], 0);
+    }
+    const double K = 16 * index.max_error();
+    for (std::size_t id = 0; id < table.neighbour_count(); ++id) {
+      const auto &L = table.lorentz(group::TranslationId(id));
+      const double e = index.max_error();
+      ck_assert_int_eq(index.find(L.m[1][0] + e / 2, L.m[2][0] - e / 2, e), int32_t(id));
+      // Half way to the nearest other centre (>= K away) is nobody's.
+      ck_assert_int_eq(index.find(L.m[1][0] + K / 2, L.m[2][0], e), -1);
+      ck_assert_int_eq(index.find(L.m[1][0], L.m[2][0] - K / 2, e), -1);
+    }
+  }
+}
+END_TEST
+
 START_TEST(side_pairing_maps_paired_sides) {
   // g_k maps side s_{paired_side(k)} onto s_k: midpoint to midpoint, and the
   // endpoints v_{k+2g-1}, v_{k+2g} to v_k, v_{k-1}.
@@ -264,6 +305,7 @@ int main(void) {
     tcase_add_test(tc, dehn_output_is_reduced_and_equal);
     tcase_add_test(tc, dehn_is_not_geodesic_but_canonical_is);
     tcase_add_test(tc, neighbour_ids_are_fixed_and_tables_agree);
+    tcase_add_test(tc, products_named_by_centre_are_canonical);
     tcase_add_test(tc, side_pairing_maps_paired_sides);
     tcase_add_test(tc, systole_formula_in_mpfr);
     tcase_add_test(tc, unit_disk_test_is_exact);

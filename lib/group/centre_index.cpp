@@ -1,0 +1,72 @@
+#include "group/centre_index.hpp"
+
+#include <cmath>
+
+namespace hdt::group {
+
+namespace {
+
+// Cell coordinates stay well inside int32 (the key packs two of them).
+constexpr double kMaxCell = 0x1p30;
+
+}  // namespace
+
+CentreIndex::CentreIndex(const Presentation &p) {
+  // K = 2 sqrt(A^2 - 1), rounded down with room for the few roundings of
+  // cot and sqrt (a few u, against the 1e-9 taken off).
+  const double A = 1 / std::tan(M_PI / (4.0 * p.genus()));
+  const double K = 2 * std::sqrt(A * A - 1) * (1 - 1e-9);
+  cell_ = K / 2;
+  max_error_ = K / 16;
+}
+
+bool CentreIndex::cell_of(double p1, double p2, int64_t *i, int64_t *j) const {
+  const double x = std::floor(p1 / cell_), y = std::floor(p2 / cell_);
+  if (!(std::abs(x) < kMaxCell && std::abs(y) < kMaxCell)) return false;  // also NaN
+  *i = int64_t(x), *j = int64_t(y);
+  return true;
+}
+
+void CentreIndex::add(int32_t id, double p1, double p2, double error) {
+  if (id < 0 || !(error >= 0 && error <= max_error_)) return;
+  int64_t i, j;
+  if (!cell_of(p1, p2, &i, &j)) return;
+  if (std::size_t(id) >= entries_.size()) entries_.resize(std::size_t(id) + 1);
+  Entry &e = entries_[id];
+  if (e.error >= 0) {
+    if (e.error <= error) return;
+    int64_t oi = 0, oj = 0;
+    if (cell_of(e.p1, e.p2, &oi, &oj)) cells_.erase(key(oi, oj));
+  }
+  // Another element in the cell would be closer than 0.8 K to this one: not
+  // possible for correct centres, so a clash leaves the index as it was.
+  auto [it, inserted] = cells_.emplace(key(i, j), id);
+  if (!inserted && it->second != id) {
+    e.error = -1;
+    return;
+  }
+  e = Entry{p1, p2, error};
+}
+
+int32_t CentreIndex::find(double p1, double p2, double error) const {
+  if (!(error >= 0 && error <= max_error_)) return -1;
+  // An indexed centre of the same element is within error + its own error
+  // (<= 2 max_error = K/8, a quarter cell) in each coordinate: in one of the
+  // cells this square meets (rounding is monotone, so the computed corners
+  // still bracket it). For a different element both differences cannot be
+  // within that sum: they would put the exact centres less than
+  // 2 sqrt2 K/8 < K apart.
+  const double reach = error + max_error_;
+  int64_t i0, j0, i1, j1;
+  if (!cell_of(p1 - reach, p2 - reach, &i0, &j0) || !cell_of(p1 + reach, p2 + reach, &i1, &j1)) return -1;
+  for (int64_t i = i0; i <= i1; ++i)
+    for (int64_t j = j0; j <= j1; ++j) {
+      auto it = cells_.find(key(i, j));
+      if (it == cells_.end()) continue;
+      const Entry &e = entries_[it->second];
+      if (std::abs(p1 - e.p1) <= error + e.error && std::abs(p2 - e.p2) <= error + e.error) return it->second;
+    }
+  return -1;
+}
+
+}  // namespace hdt::group
