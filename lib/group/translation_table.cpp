@@ -35,12 +35,13 @@ TranslationId TranslationTable::add_canonical(const Word &canonical) {
 }
 
 void TranslationTable::compute_matrices(TranslationId id) {
-  moebius_[id] = accurate_moebius(presentation_, words_[id]);
-  lorentz_[id] = accurate_lorentz(presentation_, words_[id]);
+  accurate_matrices(presentation_, words_[id], &moebius_[id], &lorentz_[id]);
   has_matrices_[id] = true;
-  // Column 0 is the centre h(O), each entry correctly rounded.
+  // Column 0 is the centre h(O), each entry within 2^-66 L_00 before its
+  // rounding (u relative).
   const Lorentz<double> &L = lorentz_[id];
-  centres_.add(id, L.m[1][0], L.m[2][0], 0x1p-53 * std::max(std::abs(L.m[1][0]), std::abs(L.m[2][0])));
+  centres_.add(id, L.m[1][0], L.m[2][0],
+               0x1p-53 * std::max(std::abs(L.m[1][0]), std::abs(L.m[2][0])) + 0x1p-64 * L.m[0][0]);
 }
 
 TranslationId TranslationTable::intern(const Word &w) { return add_canonical(canonical_word(presentation_, w)); }
@@ -64,9 +65,11 @@ TranslationId TranslationTable::compose_cached(TranslationId a, TranslationId b)
 }
 
 void TranslationTable::product_centre(TranslationId a, TranslationId b, double *p1, double *p2, double *error) {
-  // (a b)(O) = L_a (L_b e_0). Entries of L_a, L_b within u = 2^-53 relative;
-  // each coordinate sums three products: within (2u + 3u) S_i (1 + 6u) of
-  // S_i = sum_j |L_a,ij| |L_b,j0|; 6u S_i covers it.
+  // (a b)(O) = L_a (L_b e_0). Entries of L_a, L_b within u |L_ij| + 2^-66 L_00
+  // (u = 2^-53, accurate_matrices); each coordinate sums three products:
+  // within (2u + 3u) S_i (1 + 6u) of S_i = sum_j |L_a,ij| |L_b,j0|, plus the
+  // absolute parts, at most 2^-66 (3 A_00 B_00 + 3 A_00 B_00) (1 + 2^-60)
+  // (|L_ij| <= L_00 for Lorentz matrices): 6u S_i + 2^-62 A_00 B_00 covers it.
   const Lorentz<double> &A = lorentz(a);
   const Lorentz<double> &B = lorentz(b);
   double value[3], size[3];
@@ -75,17 +78,18 @@ void TranslationTable::product_centre(TranslationId a, TranslationId b, double *
     size[i] = std::abs(A.m[i][0] * B.m[0][0]) + std::abs(A.m[i][1] * B.m[1][0]) + std::abs(A.m[i][2] * B.m[2][0]);
   }
   *p1 = value[1], *p2 = value[2];
-  *error = 6 * 0x1p-53 * std::max(size[1], size[2]);
+  *error = 6 * 0x1p-53 * std::max(size[1], size[2]) + 0x1p-62 * A.m[0][0] * B.m[0][0];
 }
 
 TranslationId TranslationTable::inverse_interned(TranslationId a) {
   if (std::size_t(a) >= inverses_.size()) inverses_.resize(words_.size(), -1);
   if (inverses_.at(a) < 0) {
     // The centre of a^-1 is L_a^-1 e_0 = (L_00, -L_01, -L_02) (L^-1 = J L^T J,
-    // J = diag(1, -1, -1)): entries of L_a, each within u relative.
+    // J = diag(1, -1, -1)): entries of L_a, each within u relative plus
+    // 2^-66 L_00.
     const Lorentz<double> &L = lorentz(a);
     const double p1 = -L.m[0][1], p2 = -L.m[0][2];
-    const double error = 0x1p-53 * std::max(std::abs(p1), std::abs(p2));
+    const double error = 0x1p-53 * std::max(std::abs(p1), std::abs(p2)) + 0x1p-64 * L.m[0][0];
     TranslationId b = centres_.find(p1, p2, error);
     if (b < 0) {
       b = intern(presentation_.inverse(word(a)));

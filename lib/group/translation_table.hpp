@@ -58,8 +58,9 @@ class TranslationTable {
   }
 
   const Word &word(TranslationId id) const { return words_.at(id); }
-  // Correctly rounded matrices, computed on first use (building them for all
-  // of N up front would cost seconds at large genus).
+  // Matrices accurate to the last bit (accurate_matrices: Lorentz entries
+  // within u |L_ij| + 2^-66 L_00), computed on first use (building them for
+  // all of N up front would cost seconds at large genus).
   const Moebius<double> &moebius(TranslationId id) {
     if (!has_matrices_.at(id)) compute_matrices(id);
     return moebius_[id];

@@ -27,6 +27,17 @@ inline Lorentz<double> accurate_lorentz(const Presentation &p, const Word &w) {
   return accurate_lorentz(p, w.data(), w.size());
 }
 
+// Bits for the Moebius product of m letters from which
+// Lorentz<T>::from_moebius gives every entry within 2^-target L_00, and a, b
+// within 2^-target (|a| >= 1); the analysis is in word_matrix.cpp.
+double moebius_precision_bits(const Presentation &p, std::size_t m, double target);
+
+// Both matrices of a word from one Moebius product at
+// moebius_precision_bits(66) (half the bits of a Lorentz product, with
+// cheaper steps): a, b within 2^-66 and each Lorentz entry within
+// 2^-66 L_00 before the rounding to double.
+void accurate_matrices(const Presentation &p, const Word &w, Moebius<double> *moebius, Lorentz<double> *lorentz);
+
 // The word's Lorentz matrix rounded once to the type T = mp_real<D>: the
 // product runs at a rung with enough bits for the word and for T.
 template <class T>

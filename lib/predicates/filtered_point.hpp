@@ -25,8 +25,8 @@ inline double square_error(double x, double xx) {
   return ((hi * hi - xx) + 2 * hi * lo) + lo * lo;
 }
 
-// N = L p^ / w for the disk point (x, y), L the correctly rounded Lorentz
-// matrix of the translation. w = 1 - x^2 - y^2 is computed with error-free
+// N = L p^ / w for the disk point (x, y), L the translation's Lorentz
+// matrix with each entry within u |L_ij| + 2^-64 L_00 (TranslationTable). w = 1 - x^2 - y^2 is computed with error-free
 // products and sums, so it keeps full relative precision near the circle.
 inline FilteredPoint filtered_point(double x, double y, const group::Lorentz<double> &L) {
   const double xx = x * x, exx = square_error(x, xx);
@@ -45,7 +45,9 @@ inline FilteredPoint filtered_point(double x, double y, const group::Lorentz<dou
     worst = std::max(worst, S);
   }
   // Each product sum: u (L rounded) + 2u (p0) + 3u (arithmetic) per unit of
-  // S; the division and w add 5u of |P| <= S; 16u covers all with room.
+  // S; the division and w add 5u of |P| <= S; 16u of the worst S covers all
+  // with room, also the absolute part of L's error: 2^-64 L_00 (p0 + |p1| +
+  // |p2|) <= 2^-62.4 L_00 p0 <= 2^-62.4 S_0 (|p1|, |p2| <= p0).
   r.error = 16 * kUnit * worst / w;
   return r;
 }

@@ -255,26 +255,13 @@ const group::Lorentz<Fast> &Kernel::fast_matrix(TranslationId id) {
   // sum_j |L_ij| |hat_j| >= L_00 hat_0 for row 0, entries within
   // 2^-106 |L_ij| + 2^-121 L_00 suffice (2^-106 + 3 * 2^-121 < U).
   //
-  // The word's Moebius matrix [[a, b], [b~, a~]] at a rung of p bits (eps =
-  // 2^-p), then L = from_moebius(a, b), rounded to double-double (2^-106
-  // relative). Generators g = [[A, B], [B~, A]], |B| < A = cot(pi/4g):
-  // A within 4.5 eps (pi, the quotient, tan, 1/tan), |B| within 7.6 eps
-  // (A^2 - 1 cancels at most a factor 1.21 for A >= cot(pi/8)), cos and sin
-  // of angles up to 2 pi within 20 eps absolute: each real part of g within
-  // 29 eps A. The exact partial products P_k have |a_k|, |b_k| <= (2A)^k;
-  // a step's error is 2A (1 + 30 eps) E_{k-1} (propagated) + 46 eps A
-  // (2A)^{k-1} (g's error) + 8.5 eps A (2A)^{k-1} (two complex products and
-  // a sum), so E_m <= 32 m eps (2A)^m on |a|, |b| for m letters.
-  // from_moebius's entries are quadratic in a, b: within
-  // 4 (|a| + |b|) E + 8 eps (|a|^2 + |b|^2) <= (4 sqrt2 E + 8 eps) L_00
-  // (L_00 = |a|^2 + |b|^2 >= 1). With p >= 135 + log2(m + 1) + m log2(2A):
-  // eps (182 m (2A)^m + 8) <= 2^-127 L_00, well within 2^-121 L_00.
-  // (The Lorentz product of accurate_lorentz_as loses about twice as many
-  // bits per letter: this puts most words of N on a lower rung.)
+  // The word's Moebius matrix at group::moebius_precision_bits(127) (every
+  // entry of L = from_moebius(a, b) within 2^-127 L_00, well within
+  // 2^-121 L_00), then rounded to double-double (2^-106 relative). (The
+  // Lorentz product of accurate_lorentz_as loses about twice as many bits
+  // per letter: this puts most words of N on a lower rung.)
   const group::Word &word = table_.word(id);
-  const double m = double(word.size());
-  const double A = 1 / std::tan(M_PI / (4.0 * presentation().genus()));
-  const double bits = 135 + std::log2(m + 1) + m * std::log2(2 * A * (1 + 1e-9));
+  const double bits = group::moebius_precision_bits(presentation(), word.size(), 127);
   if (bits > exact::ladder_top_bits()) {
     // The mid matrix (within 2^-133 |L_ij| + 2^-197 of the exact one, see
     // word_matrix.hpp) rounded to double-double (2^-106 relative).

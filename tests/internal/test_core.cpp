@@ -248,6 +248,28 @@ START_TEST(products_named_by_centre_are_canonical) {
 }
 END_TEST
 
+// The table's matrices (one Moebius product, accurate_matrices) agree with
+// the separately computed Lorentz and Moebius products to 2^-60 of L_00.
+START_TEST(table_matrices_match_word_products) {
+  for (int g : {2, 3, 5, 16}) {
+    const Presentation p(g);
+    group::TranslationTable table(p);
+    const std::size_t step = g == 16 ? 97 : 1;
+    for (std::size_t id = 0; id < table.neighbour_count(); id += step) {
+      const auto t = group::TranslationId(id);
+      const auto L = group::accurate_lorentz(p, table.word(t));
+      const auto M = group::accurate_moebius(p, table.word(t));
+      const double tol = 0x1p-60 * L.m[0][0];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          ck_assert_msg(std::abs(table.lorentz(t).m[i][j] - L.m[i][j]) <= tol, "g=%d id %zu L[%d][%d]", g, id, i, j);
+      ck_assert(std::abs(table.moebius(t).a.re - M.a.re) <= tol && std::abs(table.moebius(t).a.im - M.a.im) <= tol);
+      ck_assert(std::abs(table.moebius(t).b.re - M.b.re) <= tol && std::abs(table.moebius(t).b.im - M.b.im) <= tol);
+    }
+  }
+}
+END_TEST
+
 START_TEST(side_pairing_maps_paired_sides) {
   // g_k maps side s_{paired_side(k)} onto s_k: midpoint to midpoint, and the
   // endpoints v_{k+2g-1}, v_{k+2g} to v_k, v_{k-1}.
@@ -306,6 +328,7 @@ int main(void) {
     tcase_add_test(tc, dehn_is_not_geodesic_but_canonical_is);
     tcase_add_test(tc, neighbour_ids_are_fixed_and_tables_agree);
     tcase_add_test(tc, products_named_by_centre_are_canonical);
+    tcase_add_test(tc, table_matrices_match_word_products);
     tcase_add_test(tc, side_pairing_maps_paired_sides);
     tcase_add_test(tc, systole_formula_in_mpfr);
     tcase_add_test(tc, unit_disk_test_is_exact);
