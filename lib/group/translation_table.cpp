@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "group/canonical.hpp"
+#include "group/dehn.hpp"
 #include "group/neighbours.hpp"
 #include "group/word_matrix.hpp"
 
@@ -44,7 +45,14 @@ void TranslationTable::compute_matrices(TranslationId id) {
                0x1p-53 * std::max(std::abs(L.m[1][0]), std::abs(L.m[2][0])) + 0x1p-64 * L.m[0][0]);
 }
 
-TranslationId TranslationTable::intern(const Word &w) { return add_canonical(canonical_word(presentation_, w)); }
+TranslationId TranslationTable::intern(const Word &w) {
+  // A word spelled like a known canonical word is that element: the
+  // Dehn-reduced word often is (most elements met lie in N, whose runs are
+  // their own geodesic words), and reducing costs no arithmetic.
+  const Word reduced = dehn_reduce(presentation_, w);
+  if (const TranslationId id = find_canonical(reduced); id >= 0) return id;
+  return add_canonical(canonical_word(presentation_, reduced));
+}
 
 TranslationId TranslationTable::compose_cached(TranslationId a, TranslationId b) {
   const uint64_t key = (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
