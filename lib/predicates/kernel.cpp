@@ -69,6 +69,28 @@ Kernel::Kernel(const group::Presentation &p) : table_(p), field_(exact::field_of
   const exact::CyclotomicField &K = field_.cyclotomic();
   const Cyclotomic s = K.sin_2pi(1);
   sin2_ = K.mul(s, s);
+  // Side k's line is the bisector of O and g_k(O), at distance r (the
+  // inradius) from O across the direction theta_k of g_k(O); its ends lie at
+  // theta_k +- beta on the circle, cos beta = tanh r, and the line and all
+  // beyond it lie in the sector |arg z - theta_k| < beta. Each side is listed
+  // in the sectors (2 per side, of 2 pi / 8g) meeting that sector widened by
+  // 1e-6 radians, far more than the roundings of atan2 and of theta_k.
+  const int n = p.letter_count(), sectors = 2 * n;
+  sides_by_sector_.assign(std::size_t(sectors), {});
+  for (int k = 0; k < n; ++k) {
+    const double L00 = 1 - side_normals_[k][0];  // cosh 2r
+    const double beta = std::acos(std::sqrt((L00 - 1) / (L00 + 1))) + 1e-6;
+    const double theta = std::atan2(side_normals_[k][2], side_normals_[k][1]);
+    const double width = 2 * M_PI / sectors;
+    const long first = long(std::floor((theta - beta + M_PI) / width)), last = long(std::floor((theta + beta + M_PI) / width));
+    for (long j = first; j <= last; ++j) sides_by_sector_[std::size_t(((j % sectors) + sectors) % sectors)].push_back(k);
+  }
+}
+
+const std::vector<int> &Kernel::sides_near(double angle) const {
+  const int sectors = int(sides_by_sector_.size());
+  const long j = long(std::floor((angle + M_PI) / (2 * M_PI / sectors)));
+  return sides_by_sector_[std::size_t(((j % sectors) + sectors) % sectors)];
 }
 
 const group::ExactLorentz &Kernel::exact_matrix(TranslationId id) {

@@ -102,6 +102,11 @@ class Kernel {
   // point i.
   int in_circle_perturbed(const std::array<TranslatedPoint, 4> &points, const std::array<uint32_t, 4> &vertex);
   int beyond_side(const TranslatedPoint &p, int side);
+  // The sides whose line may hold or have beyond it a disk point of
+  // argument `angle` (radians, atan2's): every other side has
+  // beyond_side = -1 there. Half the sides of F_g at genus 2, one or two at
+  // large genus.
+  const std::vector<int> &sides_near(double angle) const;
   // beyond_side for every side k = 0..4g-1 into signs[k], the point's
   // filtered vector computed once.
   void beyond_sides(const TranslatedPoint &p, int *signs);
@@ -221,6 +226,7 @@ class Kernel {
   const exact::Field &field_;
   std::vector<std::unique_ptr<group::ExactLorentz>> exact_matrices_;  // by translation id, lazily
   std::vector<std::array<double, 3>> side_normals_;  // O - g_k(O), rounded
+  std::vector<std::vector<int>> sides_by_sector_;     // sides_near, by sector of angle
   std::vector<std::unique_ptr<group::ExactLorentz>> exact_generators_;
   // sin(pi/4g)^(2 letters): the positive factor of an exact matrix's rows.
   const exact::Cyclotomic &scale(int letters);

@@ -30,7 +30,17 @@ Representative representative(predicates::Kernel &kernel, double x, double y) {
   const int n = kernel.presentation().letter_count();
   const double c = 1 / std::tan(M_PI / n);
   if (x * x + y * y < (c - 1) / (c + 1) * (1 - 1e-9)) return {0, Representative::interior, 0};
-  return representative(kernel, predicates::TranslatedPoint{x, y, 0});
+  // Outside it, only the sides near the point's direction can hold it or
+  // have it beyond them (one or two at large genus instead of 4g).
+  const predicates::TranslatedPoint point{x, y, 0};
+  bool inside = true;
+  for (int k : kernel.sides_near(std::atan2(y, x)))
+    if (kernel.beyond_side(point, k) >= 0) {
+      inside = false;
+      break;
+    }
+  if (inside) return {0, Representative::interior, 0};
+  return representative(kernel, point);
 }
 
 Representative representative(predicates::Kernel &kernel, const predicates::TranslatedPoint &point) {
