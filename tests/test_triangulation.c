@@ -633,6 +633,16 @@ START_TEST(extreme_coordinates) {
     expect_valid(t, "g=2: two points 4 ulps apart at |z| = 0.999");
     hdt_destroy(t);
   }
+  {
+    /* Within 1e-16 of the circle: the double image that orders
+     * hdt_insert_many's points was 0/0 (NaN) here, converted to an integer
+     * (undefined; the sanitizer build catches it). Fuzzer finding. */
+    hdt_triangulation *t = create(2);
+    const double xy[2] = {0x1.69d491f1dfa19p-1, 0x1.6a3f33041e288p-1};
+    ck_assert_int_eq(hdt_insert_many(t, xy, 1, NULL), HDT_OK);
+    expect_valid(t, "g=2: insert_many of a point 1e-16 from the circle");
+    hdt_destroy(t);
+  }
   const double tiny[] = {0x1p-1074, 0x3p-1074, 0x1p-1030, 0x1p-1022, 0x1p-700, 0x1p-511, 0x1p-300};
   for (int g = 2; g <= 4; ++g) {
     hdt_triangulation *t = create(g);

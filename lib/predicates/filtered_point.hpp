@@ -33,7 +33,9 @@ inline FilteredPoint filtered_point(double x, double y, const group::Lorentz<dou
   const double yy = y * y, eyy = square_error(y, yy);
   const double s = xx + yy, b = s - xx, es = (xx - (s - b)) + (yy - b);  // s + es = xx + yy exactly
   const double tail = es + exx + eyy;
-  // Relative errors: w <= 4u (1 - s is exact for s in [1/2, 2]), p0 <= 2u.
+  // Relative errors: w <= 4u (1 - s is exact for s in [1/2, 2]), p0 <= 2u;
+  // and w absolutely up to 2^-103 more, the rounding of tail (|tail| <=
+  // 2^-51), which matters only within about 2^-50 of the circle.
   const double w = (1.0 - s) - tail;
   const double p[3] = {(1.0 + s) + tail, 2 * x, 2 * y};
   FilteredPoint r;
@@ -47,8 +49,9 @@ inline FilteredPoint filtered_point(double x, double y, const group::Lorentz<dou
   // Each product sum: u (L rounded) + 2u (p0) + 3u (arithmetic) per unit of
   // S; the division and w add 5u of |P| <= S; 16u of the worst S covers all
   // with room, also the absolute part of L's error: 2^-64 L_00 (p0 + |p1| +
-  // |p2|) <= 2^-62.4 L_00 p0 <= 2^-62.4 S_0 (|p1|, |p2| <= p0).
-  r.error = 16 * kUnit * worst / w;
+  // |p2|) <= 2^-62.4 L_00 p0 <= 2^-62.4 S_0 (|p1|, |p2| <= p0). w's absolute
+  // error adds 2^-103 / w relative (2^-102 / w with the roundings here).
+  r.error = (16 * kUnit + 0x1p-102 / w) * worst / w;
   return r;
 }
 
@@ -64,8 +67,9 @@ inline FilteredPoint filtered_point(double x, double y) {
   r.n[0] = p0 / w;
   r.n[1] = 2 * x / w;
   r.n[2] = 2 * y / w;
-  // Relative errors: w 4u, p0 2u, the division u: 8u of p0 / w covers all.
-  r.error = 8 * kUnit * r.n[0];
+  // Relative errors: w 4u (and 2^-103 / w, as above), p0 2u, the division u:
+  // 8u + 2^-102 / w of p0 / w covers all.
+  r.error = (8 * kUnit + 0x1p-102 / w) * r.n[0];
   return r;
 }
 

@@ -1,5 +1,6 @@
 // Bowyer-Watson insertion on the surface, and insertion in Hilbert order.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -127,7 +128,10 @@ uint32_t hilbert_index(uint32_t x, uint32_t y) {
   return d;
 }
 
-uint32_t grid(double c) { return uint32_t(std::clamp((c + 1) * 16384.0, 0.0, 32767.0)); }
+// The image under a representative's translation is computed in double for
+// the sort key only; within ulps of the circle it can be NaN (0/0: found by
+// fuzzing), which std::clamp would pass on to an undefined conversion.
+uint32_t grid(double c) { return std::isfinite(c) ? uint32_t(std::clamp((c + 1) * 16384.0, 0.0, 32767.0)) : 0; }
 
 constexpr uint32_t kAtHome = 1u << 31;  // in a sort key: the point is its own representative
 
