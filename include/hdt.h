@@ -234,6 +234,13 @@ HDT_API size_t hdt_face_count(const hdt_triangulation *t) HDT_NOEXCEPT;
 HDT_API hdt_status hdt_vertex_point(const hdt_triangulation *t, uint32_t v, double *x, double *y) HDT_NOEXCEPT;
 /* 1 for a dummy vertex, 0 for a user vertex, -1 for no live vertex v. */
 HDT_API int hdt_vertex_is_dummy(const hdt_triangulation *t, uint32_t v) HDT_NOEXCEPT;
+/* Every live vertex in one call, by increasing id (symbol version HDT_0.2).
+   Two-call pattern as in hdt_faces, capacity in vertices: capacity 0 asks
+   for *count (= hdt_vertex_count); HDT_EBUFS, with *count set and nothing
+   written, when too small. Each output may be NULL: ids, xy (2 per vertex:
+   the representative, as hdt_vertex_point), dummy (1 dummy, 0 user). */
+HDT_API hdt_status hdt_vertices(const hdt_triangulation *t, uint32_t *ids, double *xy, uint8_t *dummy,
+                                size_t capacity, size_t *count) HDT_NOEXCEPT;
 
 /* The faces, two-call pattern: capacity (in faces) 0 asks for *count
    (vertices may then be NULL); HDT_EBUFS, with *count set, when too small.

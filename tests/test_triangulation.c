@@ -989,6 +989,62 @@ static int remove_or_refuse(hdt_triangulation *t, uint32_t v, const char *what, 
   return s == HDT_OK;
 }
 
+/* hdt_vertices gives, in one call, what hdt_vertex_is_dummy and
+ * hdt_vertex_point give per id, for the live ids only; the two-call pattern
+ * writes nothing when the buffer is short. */
+START_TEST(vertices_in_one_call) {
+  uint64_t rng = 31;
+  hdt_triangulation *t = create(3);
+  enum { N = 300 };
+  double xy[2 * N];
+  const double rin = inradius(3);
+  for (int i = 0; i < N; ++i) {
+    const double r = 1.3 * rin * sqrt(uniform01(&rng)), a = 2 * PI * uniform01(&rng);
+    xy[2 * i] = r * cos(a), xy[2 * i + 1] = r * sin(a);
+  }
+  ck_assert_int_eq(hdt_insert_many(t, xy, N, NULL), HDT_OK);
+  for (int k = 0; k < 40; ++k) hdt_remove_vertex(t, (uint32_t)rng_below(&rng, (int)hdt_vertex_id_bound(t)));
+  size_t count = 0;
+  ck_assert_int_eq(hdt_vertices(t, NULL, NULL, NULL, 0, &count), HDT_OK);
+  ck_assert_uint_eq(count, hdt_vertex_count(t));
+  uint32_t *ids = malloc(count * sizeof *ids);
+  double *points = malloc(2 * count * sizeof *points);
+  uint8_t *dummy = malloc(count);
+  ck_assert(ids && points && dummy);
+  /* Too small: HDT_EBUFS, the count, nothing written. */
+  memset(ids, 0xAB, count * sizeof *ids);
+  size_t got = 0;
+  ck_assert_int_eq(hdt_vertices(t, ids, points, dummy, count - 1, &got), HDT_EBUFS);
+  ck_assert_uint_eq(got, count);
+  for (size_t i = 0; i < count; ++i) ck_assert_uint_eq(ids[i], 0xABABABABu);
+  ck_assert_int_eq(hdt_vertices(t, ids, points, dummy, count, &got), HDT_OK);
+  ck_assert_uint_eq(got, count);
+  size_t i = 0;
+  for (uint32_t v = 0; v < hdt_vertex_id_bound(t); ++v) {
+    const int d = hdt_vertex_is_dummy(t, v);
+    if (d < 0) continue;
+    ck_assert_uint_lt(i, count);
+    ck_assert_uint_eq(ids[i], v);
+    ck_assert_int_eq(dummy[i], d);
+    double x, y;
+    ck_assert_int_eq(hdt_vertex_point(t, v, &x, &y), HDT_OK);
+    ck_assert(x == points[2 * i] && y == points[2 * i + 1]);
+    ++i;
+  }
+  ck_assert_uint_eq(i, count);
+  /* Any output may be NULL. */
+  uint32_t *again = malloc(count * sizeof *again);
+  ck_assert(again != NULL);
+  ck_assert_int_eq(hdt_vertices(t, again, NULL, NULL, count, &got), HDT_OK);
+  ck_assert(memcmp(again, ids, count * sizeof *ids) == 0);
+  /* Bad calls. */
+  ck_assert_int_eq(hdt_vertices(t, ids, points, dummy, count, NULL), HDT_EINVAL);
+  ck_assert_int_eq(hdt_vertices(NULL, ids, points, dummy, count, &got), HDT_EINVAL);
+  free(again), free(ids), free(points), free(dummy);
+  hdt_destroy(t);
+}
+END_TEST
+
 START_TEST(vertex_removal) {
   for (int g = 2; g <= 3; ++g) {
     uint64_t rng = 0x12345 + (uint64_t)g;
@@ -1223,6 +1279,7 @@ int main(void) {
       dummies_go_after_many_points,
       dummy_removal_statistics,
       vertex_removal,
+      vertices_in_one_call,
       locate_and_nearest_vertex,
   };
   return run_tests("triangulation", tests, sizeof tests / sizeof tests[0]);

@@ -1,4 +1,5 @@
 // The triangulation handle: lifecycle, insertion, removal, queries, output.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -110,6 +111,48 @@ HDT_API hdt_status hdt_vertex_point(const hdt_triangulation *t, uint32_t v, doub
 HDT_API int hdt_vertex_is_dummy(const hdt_triangulation *t, uint32_t v) HDT_NOEXCEPT {
   if (!t || v >= t->tri.vertices().size() || !t->tri.vertices()[v].alive()) return -1;
   return t->tri.is_dummy(v) ? 1 : 0;
+}
+
+HDT_API hdt_status hdt_vertices(const hdt_triangulation *t, uint32_t *ids, double *xy, uint8_t *dummy, size_t capacity,
+                                size_t *count) HDT_NOEXCEPT {
+  return guarded("hdt_vertices", [&] {
+    Triangulation &tri = of(t);
+    if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
+    const std::size_t V = tri.vertex_count();
+    if (capacity == 0) {
+      *count = V;
+      return HDT_OK;
+    }
+    if (capacity < V) {
+      *count = V;
+      return fail(HDT_EBUFS, "hdt_vertices",
+                  "capacity " + std::to_string(capacity) + " is too small for " + std::to_string(V) + " vertices");
+    }
+    // The points first: vertex_point may allocate (and fail) before anything
+    // is written.
+    std::vector<double> points;
+    if (xy) points.reserve(2 * V);
+    std::size_t n = 0;
+    for (uint32_t v = 0; v < tri.vertices().size(); ++v) {
+      if (!tri.vertices()[v].alive()) continue;
+      if (xy) {
+        double px, py;
+        tri.vertex_point(v, &px, &py);
+        points.push_back(px), points.push_back(py);
+      }
+      ++n;
+    }
+    if (n != V) throw std::logic_error("hdt_vertices: the live vertex count is out of date");
+    for (uint32_t v = 0, i = 0; v < tri.vertices().size(); ++v) {
+      if (!tri.vertices()[v].alive()) continue;
+      if (ids) ids[i] = v;
+      if (dummy) dummy[i] = tri.is_dummy(v) ? 1 : 0;
+      ++i;
+    }
+    if (xy) std::copy(points.begin(), points.end(), xy);
+    *count = V;
+    return HDT_OK;
+  });
 }
 
 HDT_API hdt_status hdt_faces(const hdt_triangulation *t, uint32_t *vertices, int32_t *translations, size_t capacity,

@@ -21,7 +21,7 @@ try:
 except ImportError:  # pragma: no cover - depends on the installation
     numpy = None
 
-_NUMPY_TYPES = {ctypes.c_double: "float64", ctypes.c_uint32: "uint32", ctypes.c_int32: "int32"}
+_NUMPY_TYPES = {ctypes.c_double: "float64", ctypes.c_uint32: "uint32", ctypes.c_int32: "int32", ctypes.c_uint8: "uint8"}
 
 
 def point_buffer(points):
@@ -81,17 +81,12 @@ def result(owner, columns=None):
     return [tuple(values[i : i + columns]) for i in range(0, len(values), columns)]
 
 
-def from_values(values, kind, columns=None):
-    """A public value built from a Python list: a NumPy array of the dtype
-    named by kind ("uint32", "float64", "bool"; shape (n, columns) when
-    columns is given) when NumPy is in use, else the list itself."""
-    np = numpy
-    if np is None:
-        return values
-    array = np.array(values, dtype=kind)
-    if columns:
-        array = array.reshape(len(values), columns)
-    return array
+def flags(owner):
+    """The public value of an :func:`output` buffer of 0/1 bytes: a NumPy
+    bool array, or a list of bools."""
+    if not isinstance(owner, ctypes.Array):
+        return owner.astype(bool)
+    return [bool(value) for value in owner]
 
 
 def as_lists(value):

@@ -40,6 +40,7 @@ _uint32 = ctypes.c_uint32
 _uint32_p = ctypes.POINTER(ctypes.c_uint32)
 _int32 = ctypes.c_int32
 _int32_p = ctypes.POINTER(ctypes.c_int32)
+_uint8_p = ctypes.POINTER(ctypes.c_uint8)
 
 #: Every function of include/hdt.h: name -> (restype, argtypes).
 PROTOTYPES = {
@@ -71,6 +72,7 @@ PROTOTYPES = {
     "hdt_face_count": (_size, (_handle,)),
     "hdt_vertex_point": (_status, (_handle, _uint32, _double_p, _double_p)),
     "hdt_vertex_is_dummy": (_int, (_handle, _uint32)),
+    "hdt_vertices": (_status, (_handle, _uint32_p, _double_p, _uint8_p, _size, _size_p)),
     "hdt_faces": (_status, (_handle, _uint32_p, _int32_p, _size, _size_p)),
     "hdt_translation_word": (_status, (_handle, _int32, _word, _size, _size_p)),
     "hdt_translation_matrix": (_status, (_handle, _int32, _double_p)),

@@ -289,20 +289,17 @@ class Triangulation:
         shape (n,). Without: a list of ints, a list of (x, y) tuples and a
         list of bools.
         """
-        ids, points, dummy = [], [], []
-        x, y = ctypes.c_double(), ctypes.c_double()
         with self._lock:
             handle = self._live("vertices")
-            for vertex in range(lib.hdt_vertex_id_bound(handle)):
-                answer = lib.hdt_vertex_is_dummy(handle, vertex)
-                if answer < 0:
-                    continue  # a removed id
-                check(lib.hdt_vertex_point(handle, vertex, ctypes.byref(x), ctypes.byref(y)))
-                ids.append(vertex)
-                points.append((x.value, y.value))
-                dummy.append(answer == 1)
-        return Vertices(_arrays.from_values(ids, "uint32"), _arrays.from_values(points, "float64", 2),
-                        _arrays.from_values(dummy, "bool"))
+            count = lib.hdt_vertex_count(handle)
+            found = ctypes.c_size_t()
+            ids_pointer, ids = _arrays.output(ctypes.c_uint32, count)
+            points_pointer, points = _arrays.output(ctypes.c_double, count, 2)
+            dummy_pointer, dummy = _arrays.output(ctypes.c_uint8, count)
+            check(lib.hdt_vertices(handle, ids_pointer, points_pointer, dummy_pointer, count, ctypes.byref(found)))
+            if found.value != count:
+                raise InternalError(f"vertices: hdt_vertices listed {found.value}, hdt_vertex_count says {count}")
+        return Vertices(_arrays.result(ids), _arrays.result(points, 2), _arrays.flags(dummy))
 
     # ---- faces ----
 
