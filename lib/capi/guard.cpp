@@ -64,6 +64,16 @@ void check_genus(int genus) {
                    "genus " + std::to_string(genus) + " exceeds HDT_GENUS_MAX = " + std::to_string(HDT_GENUS_MAX));
 }
 
+bool list_fits(std::size_t size, size_t capacity, size_t *count, const char *items) {
+  if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
+  *count = size;
+  if (capacity == 0) return false;
+  if (capacity < size)
+    throw ApiError(HDT_EBUFS, "capacity " + std::to_string(capacity) + " is too small for " + std::to_string(size) +
+                                  " " + items);
+  return true;
+}
+
 hdt_status copy_word(const group::Word &w, int32_t *out, size_t capacity, size_t *out_length) {
   if (capacity > 0 && !out) throw ApiError(HDT_EINVAL, "out is NULL but capacity is " + std::to_string(capacity));
   *out_length = w.size();

@@ -67,6 +67,12 @@ void check_genus(int genus);
 // (out may then be NULL); HDT_EBUFS, with *out_length set, when it is too
 // small. Throws ApiError.
 hdt_status copy_word(const group::Word &w, int32_t *out, size_t capacity, size_t *out_length);
+// Two-call pattern for a list output (hdt_faces, hdt_vertices): sets *count
+// to the list's size, and tells whether to fill the caller's buffers of
+// `capacity` items: false for capacity 0 (a size query). Throws ApiError:
+// HDT_EINVAL for a NULL count, HDT_EBUFS (with *count set, nothing else
+// written) when the buffers are too small; `items` names them in the message.
+bool list_fits(std::size_t size, size_t capacity, size_t *count, const char *items);
 // A finite point of the open unit disk (decided exactly); else HDT_EDOMAIN.
 void check_disk_point(double x, double y);
 

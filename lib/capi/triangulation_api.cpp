@@ -117,17 +117,8 @@ HDT_API hdt_status hdt_vertices(const hdt_triangulation *t, uint32_t *ids, doubl
                                 size_t *count) HDT_NOEXCEPT {
   return guarded("hdt_vertices", [&] {
     Triangulation &tri = of(t);
-    if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
     const std::size_t V = tri.vertex_count();
-    if (capacity == 0) {
-      *count = V;
-      return HDT_OK;
-    }
-    if (capacity < V) {
-      *count = V;
-      return fail(HDT_EBUFS, "hdt_vertices",
-                  "capacity " + std::to_string(capacity) + " is too small for " + std::to_string(V) + " vertices");
-    }
+    if (!hdt::capi::list_fits(V, capacity, count, "vertices")) return HDT_OK;
     // The points first: vertex_point may allocate (and fail) before anything
     // is written.
     std::vector<double> points;
@@ -150,7 +141,6 @@ HDT_API hdt_status hdt_vertices(const hdt_triangulation *t, uint32_t *ids, doubl
       ++i;
     }
     if (xy) std::copy(points.begin(), points.end(), xy);
-    *count = V;
     return HDT_OK;
   });
 }
@@ -159,18 +149,9 @@ HDT_API hdt_status hdt_faces(const hdt_triangulation *t, uint32_t *vertices, int
                              size_t *count) HDT_NOEXCEPT {
   return guarded("hdt_faces", [&] {
     Triangulation &tri = of(t);
-    if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
     const auto &faces = tri.faces();
     const std::size_t F = faces.size();
-    if (capacity == 0) {
-      *count = F;
-      return HDT_OK;
-    }
-    if (capacity < F) {
-      *count = F;
-      return fail(HDT_EBUFS, "hdt_faces",
-                  "capacity " + std::to_string(capacity) + " is too small for " + std::to_string(F) + " faces");
-    }
+    if (!hdt::capi::list_fits(F, capacity, count, "faces")) return HDT_OK;
     if (!vertices) throw ApiError(HDT_EINVAL, "vertices must not be NULL when capacity > 0");
     // Corner translations relative to each vertex's representative: t h^-1.
     std::vector<int32_t> relative;

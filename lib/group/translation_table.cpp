@@ -80,13 +80,13 @@ void TranslationTable::product_centre(TranslationId a, TranslationId b, double *
   // (|L_ij| <= L_00 for Lorentz matrices): 6u S_i + 2^-62 A_00 B_00 covers it.
   const Lorentz<double> &A = lorentz(a);
   const Lorentz<double> &B = lorentz(b);
-  double value[3], size[3];
+  double *coordinate[3] = {nullptr, p1, p2}, size = 0;
   for (int i = 1; i < 3; ++i) {
-    value[i] = A.m[i][0] * B.m[0][0] + A.m[i][1] * B.m[1][0] + A.m[i][2] * B.m[2][0];
-    size[i] = std::abs(A.m[i][0] * B.m[0][0]) + std::abs(A.m[i][1] * B.m[1][0]) + std::abs(A.m[i][2] * B.m[2][0]);
+    *coordinate[i] = A.m[i][0] * B.m[0][0] + A.m[i][1] * B.m[1][0] + A.m[i][2] * B.m[2][0];
+    size = std::max(size, std::abs(A.m[i][0] * B.m[0][0]) + std::abs(A.m[i][1] * B.m[1][0]) +
+                              std::abs(A.m[i][2] * B.m[2][0]));
   }
-  *p1 = value[1], *p2 = value[2];
-  *error = 6 * 0x1p-53 * std::max(size[1], size[2]) + 0x1p-62 * A.m[0][0] * B.m[0][0];
+  *error = 6 * 0x1p-53 * size + 0x1p-62 * A.m[0][0] * B.m[0][0];
 }
 
 TranslationId TranslationTable::inverse_interned(TranslationId a) {
