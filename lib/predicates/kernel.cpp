@@ -16,21 +16,6 @@ using exact::FieldElement;
 
 namespace {
 
-// The error bounds assume no underflow. Where a filter's bound is relative
-// only (the disk rows of disk_in_circle, built from the exact inputs), a
-// square or product that underflows errs by up to 2^-1075 absolutely
-// instead; with entries below 2 the few dozen such errors of a determinant
-// stay far below kUnderflowAllowance, which every decision also requires.
-// (Points with subnormal coordinates near the origin decided in_circle
-// wrongly without it; found by fuzzing.) Elsewhere the bounds are above
-// 2^-150 and the allowance changes nothing.
-constexpr double kUnderflowAllowance = 0x1p-1000;
-
-int sign_of(double value, double bound) {
-  bound += kUnderflowAllowance;
-  return value > bound ? 1 : value < -bound ? -1 : 0;
-}
-
 // A filter's decision, compared with the exact evaluation when the library
 // is built with -Dcheck_predicates=true (HDT_CHECK_PREDICATES): a wrong sign
 // then throws (HDT_EINTERNAL at the C API) instead of corrupting a
@@ -238,57 +223,21 @@ int Kernel::beyond_side_exact(const TranslatedPoint &p, int side) {
 
 namespace {
 
-bool untranslated(const TranslatedPoint &p) { return p.translation == 0 && p.site < 0; }
-
 // The same description is the same point: a duplicate insertion walks onto
 // its vertex, and these orientations are zero without the exact stage.
 bool identical(const TranslatedPoint &a, const TranslatedPoint &b) {
   return a.x == b.x && a.y == b.y && a.translation == b.translation && a.site == b.site;
 }
 
-// Disk rows for untranslated points: N = (1 + s, 2x, 2y) / w with s = |z|^2,
-// so a determinant of hyperboloid vectors is a positive multiple of the one
-// of the rows (1 + s, x, y), and det[N 1] = -8 det[dx, dy, ds] / (w w w w)
-// with differences from the first point (ds of s, which differs from
-// |dz|^2 by columns the determinant ignores). No division, no product by a
-// matrix: the common case inside F_g. Errors: s within 3u s, 1 + s within
-// 5u absolute; x, y exact.
-struct DiskPoint {
-  double x, y, s;
-};
-
-DiskPoint disk_point(const TranslatedPoint &p) { return {p.x, p.y, p.x * p.x + p.y * p.y}; }
-
-// Sign of the hyperboloid orientation of untranslated points, or 0.
-int disk_orientation(const DiskPoint &a, const DiskPoint &b, const DiskPoint &c) {
-  const double ra[3] = {1 + a.s, a.x, a.y};
-  const double db[3] = {b.s - a.s, b.x - a.x, b.y - a.y}, dc[3] = {c.s - a.s, c.x - a.x, c.y - a.y};
-  const double eb = 8 * kUnit + kUnit * max_abs3(db), ec = 8 * kUnit + kUnit * max_abs3(dc);
-  const Det3 d = det3_filtered(ra, 6 * kUnit, db, eb, dc, ec);
-  return sign_of(d.value, d.bound);
-}
-
-// Sign of det[N 1] (in_circle) of untranslated points, or 0.
-int disk_in_circle(const DiskPoint &a, const DiskPoint &b, const DiskPoint &c, const DiskPoint &e) {
-  auto row = [&](const DiskPoint &q, double *r) {
-    r[0] = q.x - a.x, r[1] = q.y - a.y, r[2] = q.s - a.s;
-    return kUnit * max_abs3(r) + 3 * kUnit * (q.s + a.s);
-  };
-  double rb[3], rc[3], re[3];
-  const double eb = row(b, rb), ec = row(c, rc), ee = row(e, re);
-  const Det3 d = det3_filtered(rb, eb, rc, ec, re, ee);
-  return -sign_of(d.value, d.bound);
-}
-
 }  // namespace
 
-int Kernel::orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
+int Kernel::orientation_checked(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
   return checked("orientation", orientation_staged(p, q, r), [&] { return orientation_exact(p, q, r); });
 }
 
 int Kernel::orientation_staged(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
   if (untranslated(p) && untranslated(q) && untranslated(r))
-    if (const int s = disk_orientation(disk_point(p), disk_point(q), disk_point(r))) return ++statistics_.filtered, s;
+    if (const int s = disk_orientation(p.x, p.y, q.x, q.y, r.x, r.y)) return ++statistics_.filtered, s;
   const FilteredPoint a = filtered(p);
   const FilteredPoint b = filtered(q);
   const FilteredPoint c = filtered(r);
@@ -304,7 +253,7 @@ int Kernel::orientation_staged(const TranslatedPoint &p, const TranslatedPoint &
 int Kernel::in_circle_filter(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                              const TranslatedPoint &s) {
   if (untranslated(p) && untranslated(q) && untranslated(r) && untranslated(s))
-    if (const int sg = disk_in_circle(disk_point(p), disk_point(q), disk_point(r), disk_point(s)))
+    if (const int sg = disk_in_circle(p.x, p.y, q.x, q.y, r.x, r.y, s.x, s.y))
       return ++statistics_.filtered, sg;
   const FilteredPoint a = filtered(p);
   const FilteredPoint b = filtered(q);
@@ -325,7 +274,8 @@ int Kernel::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const 
   return checked("in_circle", sg, [&] { return in_circle_exact(p, q, r, s); });
 }
 
-int Kernel::in_circle_perturbed(const std::array<TranslatedPoint, 4> &pt, const std::array<uint32_t, 4> &vertex) {
+int Kernel::in_circle_perturbed_staged(const std::array<TranslatedPoint, 4> &pt,
+                                       const std::array<uint32_t, 4> &vertex) {
   if (const int s = in_circle_filter(pt[0], pt[1], pt[2], pt[3]); s != 2)
     return checked("in_circle_perturbed", s, [&] { return in_circle_exact(pt[0], pt[1], pt[2], pt[3]); });
   const std::array<ExactRow, 4> rows{exact_row(pt[0]), exact_row(pt[1]), exact_row(pt[2]), exact_row(pt[3])};

@@ -37,6 +37,7 @@
 #include "exact/multiprecision.hpp"
 #include "group/exact_lorentz.hpp"
 #include "group/translation_table.hpp"
+#include "predicates/disk_filter.hpp"
 #include "predicates/double_double.hpp"
 #include "predicates/filtered_point.hpp"
 
@@ -56,6 +57,9 @@ struct TranslatedPoint {
   TranslationId translation;
   int32_t site = -1;  // >= 0: the point is kernel site `site`, (x, y) its rounding
 };
+
+// The point is (x, y) itself, exactly: the disk filters apply.
+inline bool untranslated(const TranslatedPoint &p) { return p.translation == 0 && p.site < 0; }
 
 // A point of a refined filter stage: the hyperboloid vector in the stage's
 // reals and a certified bound on each coordinate's error.
@@ -91,7 +95,15 @@ class Kernel {
   group::TranslationTable &table() { return table_; }
   const exact::Field &field() const { return field_; }
 
-  int orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+  int orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
+#ifndef HDT_CHECK_PREDICATES
+    // Inline, the common case of a walk: untranslated points that the disk
+    // filter decides.
+    if (untranslated(p) && untranslated(q) && untranslated(r))
+      if (const int s = disk_orientation(p.x, p.y, q.x, q.y, r.x, r.y)) return ++statistics_.filtered, s;
+#endif
+    return orientation_checked(p, q, r);
+  }
   int in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                 const TranslatedPoint &s);
   // in_circle with ties broken by the symbolic perturbation; never 0 when
@@ -100,7 +112,17 @@ class Kernel {
   // triangulation). Throws std::logic_error when no perturbation coefficient
   // decides (four points on one geodesic). vertex[i] is the vertex id of
   // point i.
-  int in_circle_perturbed(const std::array<TranslatedPoint, 4> &points, const std::array<uint32_t, 4> &vertex);
+  int in_circle_perturbed(const std::array<TranslatedPoint, 4> &points, const std::array<uint32_t, 4> &vertex) {
+#ifndef HDT_CHECK_PREDICATES
+    // Inline, the common case of an insertion's conflict search: four
+    // untranslated points that the disk filter decides.
+    const auto &p = points;
+    if (untranslated(p[0]) && untranslated(p[1]) && untranslated(p[2]) && untranslated(p[3]))
+      if (const int s = disk_in_circle(p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y, p[3].x, p[3].y))
+        return ++statistics_.filtered, s;
+#endif
+    return in_circle_perturbed_staged(points, vertex);
+  }
   int beyond_side(const TranslatedPoint &p, int side);
   // The sides whose line may hold or have beyond it a disk point of
   // argument `angle` (radians, atan2's): every other side has
@@ -189,6 +211,8 @@ class Kernel {
 
   // The public predicates' stages (filters, then exact), before the check of
   // -Dcheck_predicates.
+  int orientation_checked(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+  int in_circle_perturbed_staged(const std::array<TranslatedPoint, 4> &points, const std::array<uint32_t, 4> &vertex);
   int orientation_staged(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int large_circumdisk_staged(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int beyond_side_filtered(const FilteredPoint &a, int side, const TranslatedPoint &p);

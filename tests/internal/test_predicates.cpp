@@ -885,6 +885,63 @@ START_TEST(filter_decides_random_inputs) {
 }
 END_TEST
 
+// 6. The disk filters (untranslated points: the common case of a
+// triangulation inside F_g) on their own degenerate inputs, at the scales a
+// triangulation of 10^3..10^9 points meets: the corners of a rectangle are
+// cocircular (and exact in doubles for dyadic centre and half-sides), points
+// on a diameter are on a geodesic. Moved by a few ulps, or by 2^e ulps so
+// that some land near the bound, every decision must match the reference.
+START_TEST(disk_filter_near_degenerate) {
+  Kernel kernel{Presentation(2)};
+  Reference ref(kernel);
+  Rng rng(7000);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  kernel.reset_statistics();
+  int decided_by_filter = 0, sets = 0;
+  for (int i = 0; i < 3000; ++i) {
+    // A dyadic centre anywhere in the disk, up to 1 - 2^-20 from 0.
+    const double radius = i % 3 == 0 ? 1 - std::ldexp(1.0, -int(rng() % 20) - 1) : std::abs(unit(rng));
+    const double angle = unit(rng) * M_PI;
+    const double cx = std::ldexp(std::round(std::ldexp(radius * std::cos(angle), 40)), -40);
+    const double cy = std::ldexp(std::round(std::ldexp(radius * std::sin(angle), 40)), -40);
+    const int scale = 2 + int(rng() % 40);  // half-sides near 2^-scale
+    const double a = std::ldexp(1 + double(rng() % 255) / 256, -scale), b = std::ldexp(1 + double(rng() % 255) / 256, -scale);
+    if (std::hypot(std::abs(cx) + a, std::abs(cy) + b) >= 1) continue;
+    ++sets;
+    std::array<TranslatedPoint, 4> t{TranslatedPoint{cx + a, cy + b, 0}, TranslatedPoint{cx - a, cy + b, 0},
+                                     TranslatedPoint{cx - a, cy - b, 0}, TranslatedPoint{cx + a, cy - b, 0}};
+    ck_assert_int_eq(check_in_circle(kernel, ref, t, "rectangle", false), 0);
+    const int moved = int(rng() % 4);
+    const long steps = i % 2 ? long(rng() % 9) - 4 : (rng() % 2 ? 1L : -1L) << (rng() % 30);
+    if (steps == 0) continue;
+    double &c = rng() % 2 ? t[moved].x : t[moved].y;
+    c = std::abs(steps) <= 4 ? nudge(c, int(steps)) : shift(c, steps);
+    for (int r = 0; r < 4; ++r) {
+      const auto before = kernel.statistics().exact;
+      ck_assert_int_ne(check_in_circle(kernel, ref, t, "rectangle, moved", false), 0);
+      decided_by_filter += kernel.statistics().exact == before;
+      std::rotate(t.begin(), t.begin() + 1, t.end());
+    }
+    // Three points on a diameter, one moved off it.
+    const double d = std::ldexp(1.0, -scale), s = radius * 0.7;
+    const bool diagonal = rng() % 2;
+    std::array<TranslatedPoint, 3> l{TranslatedPoint{s - d, diagonal ? s - d : 0, 0},
+                                     TranslatedPoint{s, diagonal ? s : 0, 0},
+                                     TranslatedPoint{s + 2 * d, diagonal ? s + 2 * d : 0, 0}};
+    if (std::hypot(l[2].x, l[2].y) >= 1) continue;
+    ck_assert_int_eq(check_orientation(kernel, ref, l, "diameter", false), 0);
+    l[moved % 3].y = std::abs(steps) <= 4 ? nudge(l[moved % 3].y, int(steps)) : shift(l[moved % 3].y, steps);
+    for (int r = 0; r < 3; ++r) {
+      ck_assert_int_ne(check_orientation(kernel, ref, l, "diameter, moved", false), 0);
+      std::rotate(l.begin(), l.begin() + 1, l.end());
+    }
+  }
+  std::printf("disk filters: %d sets, %d moved in-circle tests decided by the double filter\n", sets, decided_by_filter);
+  ck_assert_int_gt(sets, 2000);
+  ck_assert_int_gt(decided_by_filter, 100);  // the filter is exercised, not bypassed
+}
+END_TEST
+
 int main(void) {
   return run_suite("predicates", 600, [](TCase *tc) {
     tcase_add_test(tc, sign_conventions);
@@ -894,5 +951,6 @@ int main(void) {
     tcase_add_loop_test(tc, in_circle_perturbed_policy, 0, 3);
     tcase_add_test(tc, representative_is_canonical);
     tcase_add_test(tc, filter_decides_random_inputs);
+    tcase_add_test(tc, disk_filter_near_degenerate);
   });
 }
