@@ -47,48 +47,52 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, b
   group::TranslationTable &T = kernel_->table();
   const auto id = uint32_t(vertices_.size());
   if (id == kNone) throw std::length_error("too many vertices");
-  visits_.clear();
   old_faces_.clear();
   boundary_.clear();
   new_faces_.clear();
+  cavity_stack_.clear();
 
   // The conflict region: the face copies whose circle holds q (the query
-  // sits in at.face's canonical frame, the common frame). A face is in
-  // conflict in at most one copy (its circle is smaller than sys/2), but a
-  // face next to the region may border it in two copies, so visits are
-  // keyed by (face, frame).
-  visits_.push_back({at.face, 0, true});
+  // sits in at.face's canonical frame, the common frame). In the disk it is
+  // a topological disk with every vertex on its boundary (Bowyer-Watson's
+  // cavity), so its dual graph is a tree: a depth-first search that leaves
+  // each face by the edges after the one it came in by, counterclockwise,
+  // meets each conflicting copy once, without marks, and lists the boundary
+  // counterclockwise, which lets replace() link the new fan in one pass. A
+  // face outside that borders the region twice is tested twice (cheaper
+  // than looking it up). A face is in conflict in at most one copy (its
+  // circle is smaller than sys/2); the check of that also bounds the search
+  // on a broken triangulation.
   old_faces_.push_back(at.face);
-  for (std::size_t s = 0; s < visits_.size(); ++s) {
-    if (!visits_[s].conflict) continue;
-    const uint32_t f = visits_[s].face;
-    const TranslationId sigma = visits_[s].frame;
-    for (int i = 0; i < 3; ++i) {
-      const Face &F = faces_[f];
-      const uint32_t n = F.n[i];
-      const TranslationId sn = T.compose(sigma, F.nt[i]);
-      // The region and its rim are a few faces: a linear search beats a
-      // per-face mark in memory and in cache misses.
-      int conflict = -1;
-      for (const Visit &v : visits_)
-        if (v.face == n && v.frame == sn) conflict = v.conflict;
-      if (conflict < 0) {
-        const Face &N = faces_[n];
-        const TranslatedPoint qn{x, y, T.compose(T.inverse(sn), at.query), -1};
-        conflict = kernel_->in_circle_perturbed({corner(N, 0), corner(N, 1), corner(N, 2), qn},
-                                                {N.v[0], N.v[1], N.v[2], id}) > 0;
-        if (conflict)
-          for (const Visit &v : visits_)
-            if (v.face == n && v.conflict) throw std::logic_error("a face conflicts in two copies");
-        visits_.push_back({n, sn, conflict == 1});
-        if (conflict) old_faces_.push_back(n);
-      }
-      if (!conflict)
-        boundary_.push_back({{F.v[next(i)], T.compose(sigma, F.t[next(i)])},
-                             {F.v[prev(i)], T.compose(sigma, F.t[prev(i)])},
-                             n,
-                             twin(f, i),
-                             sn});
+  cavity_stack_.push_back({at.face, 0, 0, 3});
+  while (!cavity_stack_.empty()) {
+    CavityStep &top = cavity_stack_.back();
+    if (top.left == 0) {
+      cavity_stack_.pop_back();
+      continue;
+    }
+    const uint32_t f = top.face;
+    const TranslationId sigma = top.frame;
+    const int i = top.edge;
+    top.edge = int8_t(next(i)), --top.left;
+    const Face &F = faces_[f];
+    const uint32_t n = F.n[i];
+    const TranslationId sn = T.compose(sigma, F.nt[i]);
+    const int back = twin(f, i);
+    const Face &N = faces_[n];
+    const TranslatedPoint qn{x, y, T.compose(T.inverse(sn), at.query), -1};
+    if (kernel_->in_circle_perturbed({corner(N, 0), corner(N, 1), corner(N, 2), qn}, {N.v[0], N.v[1], N.v[2], id}) >
+        0) {
+      for (const uint32_t o : old_faces_)
+        if (o == n) throw std::logic_error("a face conflicts in two copies");
+      old_faces_.push_back(n);
+      cavity_stack_.push_back({n, sn, int8_t(next(back)), 2});
+    } else {
+      boundary_.push_back({{F.v[next(i)], T.compose(sigma, F.t[next(i)])},
+                           {F.v[prev(i)], T.compose(sigma, F.t[prev(i)])},
+                           n,
+                           back,
+                           sn});
     }
   }
   // Star the hole from q.

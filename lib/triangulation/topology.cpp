@@ -79,8 +79,10 @@ void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<
     for (std::size_t j = 0; j < k; ++j) built[j].face.n[0] = kNone;
     for (std::size_t j = 0; j < k; ++j) {
       link_outer(j, 2, boundary[j]);
-      std::size_t j2 = 0;
-      while (j2 < k && (j2 == j || !same(created[j2].c[1], created[j].c[0]))) ++j2;
+      // Insertion lists the boundary counterclockwise: then j2 is j - 1.
+      std::size_t j2 = j == 0 ? k - 1 : j - 1;
+      if (j2 == j || !same(created[j2].c[1], created[j].c[0]))
+        for (j2 = 0; j2 < k && (j2 == j || !same(created[j2].c[1], created[j].c[0]));) ++j2;
       if (j2 == k || built[j2].face.n[0] != kNone) throw std::logic_error("replace: the new faces do not close a fan");
       link_new(j, 1, j2);
       link_new(j2, 0, j);

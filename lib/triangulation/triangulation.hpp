@@ -170,12 +170,12 @@ class Triangulation {
   uint64_t rng_ = 0x9E3779B97F4A7C15ull;
 
   // Scratch space reused by every operation (no allocation on the common path).
-  struct Visit {
+  struct CavityStep {  // a face of the conflict region and the edges still to cross
     uint32_t face;
     TranslationId frame;
-    bool conflict;
+    int8_t edge, left;
   };
-  std::vector<Visit> visits_;
+  std::vector<CavityStep> cavity_stack_;
   std::vector<uint32_t> old_faces_, new_ids_;
   std::vector<NewFace> new_faces_;
   std::vector<BoundaryEdge> boundary_;
