@@ -1,5 +1,6 @@
 // Bowyer-Watson insertion on the surface, and insertion in Hilbert order.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -139,6 +140,23 @@ uint32_t grid(double c) { return std::isfinite(c) ? uint32_t(std::clamp((c + 1) 
 
 constexpr uint32_t kAtHome = 1u << 31;  // in a sort key: the point is its own representative
 
+// Sorts items by the curve part of their key (the low 30 bits), stably:
+// three passes of 10 bits (an LSD radix sort; std::sort took 9% of
+// insert_many at genus 2). The buffer is freed before the triangulation
+// reserves room for the new faces, so it does not raise the peak memory.
+template <class Item>
+void sort_along_curve(std::vector<Item> &items) {
+  if (items.size() < 2) return;
+  std::vector<Item> buffer(items.size());
+  for (int shift = 0; shift < 30; shift += 10) {
+    std::array<std::size_t, 1025> start{};
+    for (const Item &item : items) ++start[((item.key >> shift) & 1023) + 1];
+    for (int b = 0; b < 1024; ++b) start[b + 1] += start[b];
+    for (const Item &item : items) buffer[start[(item.key >> shift) & 1023]++] = item;
+    items.swap(buffer);
+  }
+}
+
 }  // namespace
 
 void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) {
@@ -169,8 +187,7 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
     }
     order[i] = {hilbert_index(grid(rx), grid(ry)) | (home == 0 ? kAtHome : 0), uint32_t(i), x, y};
   }
-  auto curve = [](const Item &a) { return a.key & ~kAtHome; };
-  std::sort(order.begin(), order.end(), [&](const Item &a, const Item &b) { return curve(a) < curve(b); });
+  sort_along_curve(order);
   vertices_.reserve(vertices_.size() + n);
   dummy_.reserve(dummy_.size() + n);
   faces_.reserve(faces_.size() + 2 * n);
