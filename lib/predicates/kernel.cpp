@@ -146,16 +146,20 @@ TranslatedPoint Kernel::site_point(int32_t site, TranslationId translation) cons
   return {d.x, d.y, translation, site};
 }
 
-FilteredPoint Kernel::filtered(const TranslatedPoint &p) {
+std::size_t Kernel::cache_slot(const TranslatedPoint &p) {
   uint64_t bits;
   std::memcpy(&bits, &p.x, sizeof bits);
   uint64_t h = bits * 0x9E3779B97F4A7C15ull;
   std::memcpy(&bits, &p.y, sizeof bits);
   h ^= (bits + uint64_t(uint32_t(p.translation)) * 0xC2B2AE3D27D4EB4Full) * 0x165667B19E3779F9ull;
-  CachedPoint &c = filtered_cache_[(h >> 58) & 63];
-  if (c.x == p.x && c.y == p.y && c.translation == p.translation && c.site == p.site) return c.point;
+  return (h >> 58) & 63;
+}
+
+FilteredPoint Kernel::filtered(const TranslatedPoint &p) {
+  auto &c = filtered_cache_[cache_slot(p)];
+  if (c.holds(p)) return c.point;
   c.point = compute_filtered(p);
-  c.x = p.x, c.y = p.y, c.translation = p.translation, c.site = p.site;
+  c.set(p);
   return c.point;
 }
 

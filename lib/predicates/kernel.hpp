@@ -199,7 +199,8 @@ class Kernel {
                     const TranslatedPoint &s);
   int large_circumdisk_mid(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   std::vector<std::unique_ptr<group::Lorentz<Mid>>> mid_matrices_;  // by translation id, lazily
-  bool fast_point(const TranslatedPoint &p, FastPoint *out);
+  bool fast_point(const TranslatedPoint &p, FastPoint *out);  // cached
+  bool compute_fast_point(const TranslatedPoint &p, FastPoint *out);
   const group::Lorentz<FastReal> &fast_matrix(TranslationId id);
   int orientation_fast(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int in_circle_fast(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
@@ -229,13 +230,27 @@ class Kernel {
   FilteredPoint compute_filtered(const TranslatedPoint &p);
   // A small direct-mapped cache of filtered points: a walk or a conflict
   // search asks for the same few corners and query again and again.
+  template <class Point>
   struct CachedPoint {
     double x = NAN, y = NAN;
     TranslationId translation = -1;
     int32_t site = -1;
-    FilteredPoint point;
+    Point point;
+    bool holds(const TranslatedPoint &p) const {
+      return x == p.x && y == p.y && translation == p.translation && site == p.site;
+    }
+    void set(const TranslatedPoint &p) { x = p.x, y = p.y, translation = p.translation, site = p.site; }
   };
-  std::array<CachedPoint, 64> filtered_cache_{};
+  static std::size_t cache_slot(const TranslatedPoint &p);  // 0 .. 63
+  std::array<CachedPoint<FilteredPoint>, 64> filtered_cache_{};
+  // The same for the double-double stage, which runs for most faces near
+  // the corners of F_g at large genus (where the hyperboloid is nearly flat
+  // in the coordinates and the double filter cannot decide in-circle tests).
+  struct FastEntry {
+    bool ok;  // fast_point's answer
+    FastPoint point;
+  };
+  std::array<CachedPoint<FastEntry>, 64> fast_cache_{};
 
   group::TranslationTable table_;
   struct SiteData {

@@ -285,6 +285,18 @@ const group::Lorentz<Fast> &Kernel::fast_matrix(TranslationId id) {
 }
 
 bool Kernel::fast_point(const TranslatedPoint &p, FastPoint *out) {
+  auto &c = fast_cache_[cache_slot(p)];
+  if (!c.holds(p)) {
+    FastEntry computed;  // then stored: a throw leaves the entry as it was
+    computed.ok = compute_fast_point(p, &computed.point);
+    c.point = computed;
+    c.set(p);
+  }
+  *out = c.point.point;
+  return c.point.ok;
+}
+
+bool Kernel::compute_fast_point(const TranslatedPoint &p, FastPoint *out) {
   if (p.site >= 0) {
     // site.fast: the mid coordinates (within 2^-128 of the exact ones) rounded
     // (2^-106 |.| < 2^-106 more, |x|, |y| < 1).

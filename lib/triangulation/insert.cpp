@@ -62,8 +62,8 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, b
   // counterclockwise, which lets replace() link the new fan in one pass. A
   // face outside that borders the region twice is tested twice (cheaper
   // than looking it up). A face is in conflict in at most one copy (its
-  // circle is smaller than sys/2); the check of that also bounds the search
-  // on a broken triangulation.
+  // circle is smaller than sys/2), and reached once: the check of both also
+  // bounds the search on a broken triangulation.
   old_faces_.push_back(at.face);
   cavity_stack_.push_back({at.face, 0, 0, 3});
   while (!cavity_stack_.empty()) {
@@ -85,7 +85,7 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, b
     if (kernel_->in_circle_perturbed({corner(N, 0), corner(N, 1), corner(N, 2), qn}, {N.v[0], N.v[1], N.v[2], id}) >
         0) {
       for (const uint32_t o : old_faces_)
-        if (o == n) throw std::logic_error("a face conflicts in two copies");
+        if (o == n) throw std::logic_error("a face conflicts twice (in two copies, or the cavity is no disk)");
       old_faces_.push_back(n);
       cavity_stack_.push_back({n, sn, int8_t(next(back)), 2});
     } else {
