@@ -4,8 +4,10 @@
 // and a translation id h of the kernel's TranslationTable: it stands for
 // h(x + iy), an algebraic point. Every predicate returns the mathematically
 // correct sign for every input: a double-precision evaluation with a
-// certified (dynamic) error bound decides when it can; otherwise the value is
-// computed exactly in the field K_g (exact/field.hpp).
+// certified error bound decides when it can (static for untranslated points,
+// disk_filter.hpp; dynamic otherwise), then refined stages (double-double,
+// 133-bit MPFR); otherwise the value is computed exactly in the field K_g
+// (exact/field.hpp).
 //
 // Formulas, on the hyperboloid (N = the point's hyperboloid vector):
 //   orientation(p, q, r) = sign det[N_p; N_q; N_r]        (+1: counterclockwise)
@@ -210,10 +212,12 @@ class Kernel {
   std::vector<std::unique_ptr<group::Lorentz<FastReal>>> fast_matrices_;
   FastReal fast_circumdisk_k_{0};  // 1 + cos(pi/2g), within (u^2 + 2^-132) relative; 0: not yet
 
-  // The public predicates' stages (filters, then exact), before the check of
-  // -Dcheck_predicates.
+  // The out-of-line paths of the inline predicates above: every filter,
+  // then exact, each decision checked under -Dcheck_predicates.
   int orientation_checked(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int in_circle_perturbed_staged(const std::array<TranslatedPoint, 4> &points, const std::array<uint32_t, 4> &vertex);
+  // The public predicates' stages (filters, then exact), before the check of
+  // -Dcheck_predicates.
   int orientation_staged(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int large_circumdisk_staged(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int beyond_side_filtered(const FilteredPoint &a, int side, const TranslatedPoint &p);
