@@ -157,9 +157,9 @@ std::size_t Kernel::cache_slot(const TranslatedPoint &p) {
 
 FilteredPoint Kernel::filtered(const TranslatedPoint &p) {
   auto &c = filtered_cache_[cache_slot(p)];
-  if (c.holds(p)) return c.point;
+  if (identical(c.key, p)) return c.point;
   c.point = compute_filtered(p);
-  c.set(p);
+  c.key = p;
   return c.point;
 }
 
@@ -225,16 +225,6 @@ int Kernel::beyond_side_exact(const TranslatedPoint &p, int side) {
   return field_.sign(value);
 }
 
-namespace {
-
-// The same description is the same point: a duplicate insertion walks onto
-// its vertex, and these orientations are zero without the exact stage.
-bool identical(const TranslatedPoint &a, const TranslatedPoint &b) {
-  return a.x == b.x && a.y == b.y && a.translation == b.translation && a.site == b.site;
-}
-
-}  // namespace
-
 int Kernel::orientation_checked(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
   return checked("orientation", orientation_staged(p, q, r), [&] { return orientation_exact(p, q, r); });
 }
@@ -248,6 +238,8 @@ int Kernel::orientation_staged(const TranslatedPoint &p, const TranslatedPoint &
   const Difference db = difference(b, a), dc = difference(c, a);
   const Det3 d = det3_filtered(a.n, a.error, db.d, db.error, dc.d, dc.error);
   if (const int s = sign_of(d.value, d.bound)) return ++statistics_.filtered, s;
+  // The same description is the same point: a duplicate insertion walks
+  // onto its vertex, and these orientations are zero without the exact stage.
   if (identical(p, q) || identical(q, r) || identical(r, p)) return ++statistics_.filtered, 0;
   ++statistics_.exact;
   if (const int s = orientation_refined(p, q, r); s != 2) return s;

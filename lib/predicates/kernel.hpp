@@ -62,6 +62,10 @@ struct TranslatedPoint {
 
 // The point is (x, y) itself, exactly: the disk filters apply.
 inline bool untranslated(const TranslatedPoint &p) { return p.translation == 0 && p.site < 0; }
+// The same description (hence the same point).
+inline bool identical(const TranslatedPoint &a, const TranslatedPoint &b) {
+  return a.x == b.x && a.y == b.y && a.translation == b.translation && a.site == b.site;
+}
 
 // A point of a refined filter stage: the hyperboloid vector in the stage's
 // reals and a certified bound on each coordinate's error.
@@ -236,14 +240,8 @@ class Kernel {
   // search asks for the same few corners and query again and again.
   template <class Point>
   struct CachedPoint {
-    double x = NAN, y = NAN;
-    TranslationId translation = -1;
-    int32_t site = -1;
+    TranslatedPoint key{NAN, NAN, -1, -1};  // NaN: identical to no point
     Point point;
-    bool holds(const TranslatedPoint &p) const {
-      return x == p.x && y == p.y && translation == p.translation && site == p.site;
-    }
-    void set(const TranslatedPoint &p) { x = p.x, y = p.y, translation = p.translation, site = p.site; }
   };
   static std::size_t cache_slot(const TranslatedPoint &p);  // 0 .. 63
   std::array<CachedPoint<FilteredPoint>, 64> filtered_cache_{};

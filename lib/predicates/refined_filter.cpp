@@ -286,11 +286,11 @@ const group::Lorentz<Fast> &Kernel::fast_matrix(TranslationId id) {
 
 bool Kernel::fast_point(const TranslatedPoint &p, FastPoint *out) {
   auto &c = fast_cache_[cache_slot(p)];
-  if (!c.holds(p)) {
+  if (!identical(c.key, p)) {
     FastEntry computed;  // then stored: a throw leaves the entry as it was
     computed.ok = compute_fast_point(p, &computed.point);
     c.point = computed;
-    c.set(p);
+    c.key = p;
   }
   *out = c.point.point;
   return c.point.ok;

@@ -141,9 +141,10 @@ uint32_t grid(double c) { return std::isfinite(c) ? uint32_t(std::clamp((c + 1) 
 constexpr uint32_t kAtHome = 1u << 31;  // in a sort key: the point is its own representative
 
 // Sorts items by the curve part of their key (the low 30 bits), stably:
-// three passes of 10 bits (an LSD radix sort; std::sort took 9% of
-// insert_many at genus 2). The buffer is freed before the triangulation
-// reserves room for the new faces, so it does not raise the peak memory.
+// three passes of 10 bits (an LSD radix sort, a third of std::sort's
+// instructions on these 24-byte items). The buffer is freed before the
+// triangulation reserves room for the new faces, so it does not raise the
+// peak memory.
 template <class Item>
 void sort_along_curve(std::vector<Item> &items) {
   if (items.size() < 2) return;
