@@ -19,6 +19,16 @@ void cli_error(const char *format, ...) {
   va_end(args);
 }
 
+void cli_warning(const char *format, ...) {
+  va_list args;
+  va_start(args, format);
+  fflush(stdout);
+  fputs(CLI_NAME ": warning: ", stderr);
+  vfprintf(stderr, format, args);
+  fputc('\n', stderr);
+  va_end(args);
+}
+
 int cli_check(hdt_status s, const char *what) {
   if (s == HDT_OK) return 1;
   const char *detail = hdt_last_error_message();

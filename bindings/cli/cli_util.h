@@ -18,6 +18,14 @@ void cli_error(const char *format, ...)
 #endif
     ;
 
+/* "hdt-triangulate: warning: <message>\n" on stderr: the run goes on and
+   succeeds, but the result may not be what was meant. */
+void cli_warning(const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
 /* 1 when s is HDT_OK; otherwise reports "hdt-triangulate: WHAT: <status> (<detail>)"
    and returns 0. */
 int cli_check(hdt_status s, const char *what);

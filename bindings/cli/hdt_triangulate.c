@@ -7,10 +7,10 @@
  * picture. Outputs appear whole or not at all. See usage() below and the
  * README's section on the tool.
  *
- * This file: the options and the run. point_reader.c parses the input,
- * random_points.c samples, snapshot.c fetches the triangulation,
- * face_writer.c and svg_picture.c write it, output_file.c makes the writes
- * all-or-nothing.
+ * This file: the options and the run. point_reader.c parses the input
+ * (decimal_comma.c recognises "0,25" for its errors), random_points.c
+ * samples, snapshot.c fetches the triangulation, face_writer.c and
+ * svg_picture.c write it, output_file.c makes the writes all-or-nothing.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -32,7 +32,10 @@
 #include <string.h>
 #include <sys/stat.h>
 
+/* The cap of --random (in --help and its error): 10^8 points are 1.6 GB of
+   coordinates already, before the triangulation. */
 #define MAX_RANDOM_POINTS 100000000ULL
+#define MAX_RANDOM_POINTS_SHOWN "10^8"
 #define MAX_REPORTED_LINES 20
 
 static void usage(FILE *f) {
@@ -42,12 +45,14 @@ static void usage(FILE *f) {
           "Delaunay triangulation of points on the symmetric hyperbolic surface M_g\n"
           "(libhdt). Reads points \"x y\" or \"x,y\" of the open unit disk (Poincare\n"
           "disk), one per line, from FILE or standard input (FILE absent or \"-\");\n"
-          "blank lines and '#' comments are ignored. Writes the vertices, faces and\n"
-          "translation words; nothing is written when anything fails.\n"
+          "blank lines, '#' comments and a UTF-8 byte order mark are ignored; the\n"
+          "decimal point is '.'. Writes the vertices, faces and translation words;\n"
+          "nothing is written when anything fails. No points (an empty input warns)\n"
+          "give the triangulation of the dummy point set.\n"
           "\n"
           "  -g, --genus G       genus of M_g, 2..%d (default 2)\n"
           "      --random N      triangulate N random points, uniform for hyperbolic\n"
-          "                      area in F_g, instead of reading points\n"
+          "                      area in F_g, instead of reading points; N <= " MAX_RANDOM_POINTS_SHOWN "\n"
           "      --seed S        seed of --random (default 1)\n"
           "  -f, --format FMT    text (default) or json\n"
           "  -o, --output FILE   write the triangulation to FILE (default standard output)\n"
@@ -139,8 +144,13 @@ static int apply_option(options *o, const option_spec *spec, const char *shown, 
       o->genus = (int)number;
       return 1;
     case OPT_RANDOM:
+      /* All digits but too big (or beyond unsigned long long): name the cap. */
+      if (value[0] >= '0' && value[0] <= '9' && value[strspn(value, "0123456789")] == '\0' &&
+          !parse_number(value, 0, MAX_RANDOM_POINTS, &number))
+        return usage_error("%s %s: more than the cap of " MAX_RANDOM_POINTS_SHOWN " (%llu) points", shown, value,
+                           MAX_RANDOM_POINTS);
       if (!parse_number(value, 0, MAX_RANDOM_POINTS, &number))
-        return usage_error("%s needs a count from 0 to %llu", shown, MAX_RANDOM_POINTS);
+        return usage_error("%s needs a count from 0 to " MAX_RANDOM_POINTS_SHOWN, shown);
       o->random = 1;
       o->n_random = number;
       return 1;
@@ -274,6 +284,10 @@ static int get_points(const options *o, point_list *points, counts *c) {
     ok = 0;
   }
   diagnostics_free(&d);
+  /* Valid output, but more likely a wrong file or an empty pipe than the
+     dummy set on purpose (which --random 0 asks for without a warning). */
+  if (ok && points->count == 0)
+    cli_warning("no points in %s; the output is the dummy point set's triangulation", name);
   return ok;
 }
 

@@ -85,6 +85,15 @@ static char *copy_string(const char *s) {
   return c;
 }
 
+/* The directory holding `path`'s file, for messages: "." for a bare name,
+   "/" for a file in the root. */
+static void directory_of(const char *path, char *out, size_t size) {
+  const char *slash = strrchr(path, '/');
+  if (!slash) snprintf(out, size, ".");
+  else if (slash == path) snprintf(out, size, "/");
+  else snprintf(out, size, "%.*s", (int)(slash - path), path);
+}
+
 static int current_umask(void) {
   const mode_t mask = umask(022);
   umask(mask);
@@ -114,9 +123,14 @@ static int open_temp(output_file *o) {
   }
   sigprocmask(SIG_SETMASK, &old, NULL);
   if (!registered) {
-    if (fd < 0)
-      cli_error("cannot create a file next to %s: %s", o->name, strerror(e));
-    else
+    if (fd < 0) {
+      /* The usual causes are the directory's: missing, not writable,
+         read-only; name it, with the destination as resolved. */
+      char directory[PATH_MAX];
+      directory_of(o->destination, directory, sizeof directory);
+      cli_error("cannot write %s: cannot create a temporary file in the directory '%s': %s", o->name, directory,
+                strerror(e));
+    } else
       cli_error("%s: too many outputs", o->name);
     free(path);
     return 0;
@@ -138,7 +152,7 @@ int output_open(output_file *o, const char *name) {
     struct stat st;
     if (stat(o->name, &st) == 0) {
       if (S_ISDIR(st.st_mode)) {
-        cli_error("%s: is a directory", o->name);
+        cli_error("cannot write %s: it is a directory", o->name);
         return 0;
       }
       if (S_ISREG(st.st_mode)) {
@@ -153,14 +167,21 @@ int output_open(output_file *o, const char *name) {
     } else if (errno == ENOENT) {
       struct stat lst;
       if (lstat(o->name, &lst) == 0) { /* a dangling symbolic link */
-        cli_error("%s: a symbolic link to a missing file", o->name);
+        cli_error("cannot write %s: a symbolic link to a missing file", o->name);
         return 0;
       }
       o->destination = copy_string(o->name);
       if (!o->destination) return 0;
       o->mode = 0666 & ~current_umask();
     } else {
-      cli_error("%s: %s", o->name, strerror(errno));
+      /* ENOTDIR, EACCES, ELOOP: a part of the directory's path is at fault. */
+      const int e = errno;
+      char directory[PATH_MAX];
+      directory_of(o->name, directory, sizeof directory);
+      if (e == ENOTDIR || e == EACCES || e == ELOOP)
+        cli_error("cannot write %s: the directory '%s': %s", o->name, directory, strerror(e));
+      else
+        cli_error("cannot write %s: %s", o->name, strerror(e));
       return 0;
     }
   }
@@ -203,7 +224,11 @@ int output_commit(output_file *o) {
   if (o->temp_path) {
     unregister_temp(o->temp_path);
     if (rename(o->temp_path, o->destination) != 0) {
-      cli_error("cannot replace %s: %s", o->name, strerror(errno));
+      const int e = errno;
+      char directory[PATH_MAX];
+      directory_of(o->destination, directory, sizeof directory);
+      cli_error("cannot replace %s: renaming the finished temporary file onto it in the directory '%s': %s",
+                o->name, directory, strerror(e));
       unlink(o->temp_path);
       ok = 0;
     }

@@ -4,6 +4,7 @@
 #include "point_reader.h"
 
 #include "cli_util.h"
+#include "decimal_comma.h"
 
 #include <hdt.h>
 
@@ -161,6 +162,30 @@ static int parse_line(const char *text, unsigned long line, int first_content, d
   return 1;
 }
 
+/* A line holding a number with a decimal comma ("0,25") gets an error that
+   says so, in place of parse_line's (one per bad line): that is the likely
+   cause. Such a line reads, if at all, as integer coordinates, outside the
+   disk but for "0,0", which stays a point. Returns the line's kind as
+   parse_line does; *oom when out of memory. */
+static int check_decimal_comma(const char *text, unsigned long line, int kind, double x, double y,
+                               diagnostics *d, int *oom) {
+  char field[64], dotted[64];
+  if (kind == 0 || (kind == 1 && x == 0 && y == 0) || !decimal_comma_find(text, field, sizeof field))
+    return kind;
+  if (kind == -1) {
+    --d->count;
+    free(d->errors[d->count].message);
+  }
+  strcpy(dotted, field);
+  dotted[strcspn(dotted, ",")] = '.';
+  *oom = !diagnostics_add(d, line, "not a number: '%s' (a decimal comma? write %s)", field, dotted);
+  return -1;
+}
+
+/* A UTF-8 byte order mark, which some editors and spreadsheets put at the
+   start of a text file; it is not part of the first line's text. */
+static const char utf8_bom[] = "\xEF\xBB\xBF";
+
 int point_reader_read(FILE *f, const char *name, point_list *points, diagnostics *d) {
   char *buffer = NULL;
   size_t size = 0;
@@ -188,10 +213,13 @@ int point_reader_read(FILE *f, const char *name, point_list *points, diagnostics
       seen_content = 1;
       continue;
     }
-    buffer[strcspn(buffer, "#\n")] = '\0';
+    char *text = buffer;
+    if (line == 1 && strncmp(text, utf8_bom, 3) == 0) text += 3;
+    text[strcspn(text, "#\n")] = '\0';
     double x = 0, y = 0;
     int oom = 0;
-    const int kind = parse_line(buffer, line, !seen_content, &x, &y, d, &oom);
+    int kind = parse_line(text, line, !seen_content, &x, &y, d, &oom);
+    if (!oom) kind = check_decimal_comma(text, line, kind, x, y, d, &oom);
     if (oom || (kind == 1 && !add_point(points, x, y, line))) {
       ok = 0;
       break;

@@ -2,10 +2,12 @@
  *
  * A line holds two numbers, "x y" or "x,y" (spaces and tabs around the comma
  * allowed); blank lines and everything from a '#' on are ignored; a trailing
- * carriage return (CRLF files) is ignored. Numbers are read by strtod in the
- * C locale (so "1e-3", "0x1p-2", "nan" and "inf" are numbers; the last two
- * are then refused by libhdt's own domain check, as is any point with
- * |z| >= 1). Any other line is an error naming its line number.
+ * carriage return (CRLF files) is ignored, and so is a UTF-8 byte order mark
+ * at the start of the input. Numbers are read by strtod in the C locale (so
+ * "1e-3", "0x1p-2", "nan" and "inf" are numbers; the last two are then
+ * refused by libhdt's own domain check, as is any point with |z| >= 1). Any
+ * other line is an error naming its line number; a line with a decimal
+ * comma ("0,25") gets an error that says so.
  */
 #ifndef HDT_CLI_POINT_READER_H
 #define HDT_CLI_POINT_READER_H

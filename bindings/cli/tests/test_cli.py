@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
 """Tests of hdt-triangulate, run as a user runs it.
 
-    python3 test_cli.py PATH/TO/hdt-triangulate
+    python3 test_cli.py PATH/TO/hdt-triangulate [--surface-demo PATH] [TEST...]
+
+(TEST: names of the test functions to run, default all but test_pictures,
+which meson runs as the test 'pictures' since libhdt's changes move it;
+--surface-demo: the examples' surface_demo, which draws one of the pictures.)
 
 Checks: --help/--version; random points in text and JSON (they parse, agree,
 and satisfy Euler's relation with the edges identified geometrically through
@@ -10,26 +14,39 @@ than sys/2); the dummy point set; CSV and whitespace input give
 the same output, from a file, "-" and standard input; coordinates round-trip;
 bad lines are reported as FILE:LINE with a nonzero status and nothing written
 (no -o/--svg file, an existing one untouched, no temporary left, empty
-standard output); usage errors exit 2; the SVG is well-formed XML.
+standard output); usage errors exit 2; the SVG is well-formed XML; a UTF-8
+byte order mark is skipped; a decimal comma gets a hint; an empty input
+warns; --random's cap is documented and named; an output that cannot be
+written names the directory and the cause; the committed pictures are what
+the commands of examples/pictures/commands.txt draw, byte for byte.
 Standard library only.
 """
 import cmath
 import json
 import math
 import os
+import shlex
 import subprocess
 import sys
 import tempfile
 import xml.etree.ElementTree as ET
 
 TOOL = None
+SURFACE_DEMO = None
+REPOSITORY = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
 FAILURES = []
 
 
-def run(*args, stdin=None, cwd=None):
+def run(*args, stdin=None, cwd=None, **popen):
     p = subprocess.run([TOOL, *map(str, args)], input=stdin, capture_output=True, text=True, cwd=cwd,
-                       timeout=60)
+                       timeout=60, **popen)
     return p.returncode, p.stdout, p.stderr
+
+
+def run_bytes(*args, stdin):
+    """run() with standard input given as bytes (a byte order mark, exactly)."""
+    p = subprocess.run([TOOL, *map(str, args)], input=stdin, capture_output=True, timeout=60)
+    return p.returncode, p.stdout.decode(), p.stderr.decode()
 
 
 def check(condition, what):
@@ -335,12 +352,187 @@ def test_outputs(tmp):
     check(code == 0 and "dummy point set" in open(svg).read(), f"dummy picture: {err}")
 
 
+BOM = b"\xef\xbb\xbf"
+
+
+def test_utf8_bom(tmp):
+    """A UTF-8 byte order mark at the start of the input is skipped."""
+    pts = sample_points(2, 20, 4)
+    plain = "".join(f"{x!r},{y!r}\r\n" for x, y in pts).encode()
+    path = os.path.join(tmp, "bom.csv")
+    with open(path, "wb") as f:
+        f.write(BOM + plain)
+    ref = run_bytes("-f", "json", stdin=plain)
+    check(ref[0] == 0, f"no BOM: {ref[2]}")
+    code, out, err = run(path, "-f", "json")
+    check(code == 0 and err == "" and out == ref[1], f"a file with a BOM reads as without: {code} {err!r}")
+    code, out, err = run_bytes("-f", "json", stdin=BOM + plain)
+    check(code == 0 and out == ref[1], f"standard input with a BOM: {err!r}")
+    code, out, err = run_bytes("-f", "json", stdin=BOM + b"# x y\n" + plain)
+    check(code == 0 and out == ref[1], f"a BOM before a comment line: {err!r}")
+    # The line after the BOM is the first line: a header gets its hint.
+    code, _, err = run_bytes(stdin=BOM + b"x,y\n" + plain)
+    check(code == 1 and "<stdin>:1: not a number: 'x' (a header line?" in err, f"BOM then a header: {err!r}")
+    # Only at the start: elsewhere it is not part of a number.
+    code, _, err = run_bytes(stdin=plain.split(b"\n")[0] + b"\n" + BOM + plain)
+    check(code == 1 and "<stdin>:2: not a number" in err, f"a BOM on line 2 is an error: {err!r}")
+
+
+def test_decimal_comma(tmp):
+    """A number with a decimal comma is an error that says so (nothing is guessed)."""
+    good = [f"{x!r} {y!r}" for x, y in sample_points(2, 5, 8)]
+    cases = [
+        ("0,25", "0,25", "0.25"),                # reads as the point (0, 25) otherwise
+        ("0,1 0,2", "0,1", "0.1"),
+        ("0,1\t0,2", "0,1", "0.1"),
+        ("0,1;0,2", "0,1", "0.1"),               # European CSV
+        ('"0,1";"0,2"', "0,1", "0.1"),
+        ('"-0,3","0,05"', "-0,3", "-0.3"),
+    ]
+    path = os.path.join(tmp, "comma.csv")
+    for bad, field, dotted in cases:
+        with open(path, "w") as f:
+            f.write("\n".join(good[:2] + [bad] + good[2:]) + "\n")
+        code, out, err = run(path)
+        expected = f"{path}:3: not a number: '{field}' (a decimal comma? write {dotted})"
+        check(code == 1 and out == "" and expected in err and err.count("\n") == 1,
+              f"decimal comma {bad!r}: {expected!r} in {err!r}")
+    # What a decimal comma is not: "x,y" as documented, and the origin "0,0".
+    for line in ("0.1,0.2", "0,0", "0 , 0.5", "1e-1,2e-1"):
+        code, _, err = run("-", stdin=line + "\n")
+        check(code == 0 and "decimal comma" not in err, f"{line!r} is a point: {err!r}")
+    code, _, err = run("-", stdin="0, 1\n")
+    check(code == 1 and "decimal comma" not in err and "unit disk" in err, f"'0, 1' is (0, 1): {err!r}")
+
+
+def test_empty_input_warning(tmp):
+    """No points: the dummy set's triangulation, and a warning on standard error."""
+    expected = run("--random", 0)[1]
+    for what, content in (("empty", b""), ("comments only", b"# nothing\n\n"), ("a BOM only", BOM)):
+        code, out, err = run_bytes(stdin=content)
+        check(code == 0 and out == expected, f"{what}: status 0 and the dummy set ({code}, {err!r})")
+        check(err.startswith("hdt-triangulate: warning: no points in <stdin>") and err.count("\n") == 1,
+              f"{what}: one warning line: {err!r}")
+    path = os.path.join(tmp, "empty.txt")
+    open(path, "w").close()
+    svg = os.path.join(tmp, "empty.svg")
+    code, _, err = run(path, "--svg", svg, "-o", os.devnull)
+    check(code == 0 and f"no points in {path}" in err and os.path.getsize(svg) > 0,
+          f"empty file: warns, names it, still draws: {err!r}")
+    # --random 0 asks for no points: no warning.
+    code, _, err = run("--random", 0, "-o", os.devnull)
+    check(code == 0 and err == "", f"--random 0 does not warn: {err!r}")
+
+
+def test_random_cap(tmp):
+    """--random's cap, 10^8, is in --help and in the error for more."""
+    _, out, _ = run("--help")
+    check("N <= 10^8" in out, "--help names --random's cap")
+    for value in ("100000001", "18446744073709551616", "999999999999999999999999"):
+        code, out, err = run("--random", value)
+        check(code == 2 and out == "" and f"--random {value}: more than the cap of 10^8 (100000000) points" in err,
+              f"--random {value}: names the cap: {err!r}")
+    code, _, err = run("--random", "1e9")
+    check(code == 2 and "from 0 to 10^8" in err, f"--random 1e9: {err!r}")
+
+
+def test_output_errors(tmp):
+    """An output that cannot be written: the message names the directory and
+    the errno text. Root ignores permission bits, so the sure cases are paths
+    that fail for anyone; a read-only directory is tried as an unprivileged
+    user."""
+    missing = os.path.join(tmp, "missing")
+    for option in ("-o", "--svg"):
+        target = os.path.join(missing, "out.txt")
+        code, out, err = run("--random", 5, option, target, *(["-o", os.devnull] if option == "--svg" else []))
+        check(code == 1 and out == "" and
+              f"cannot write {target}: cannot create a temporary file in the directory '{missing}': "
+              "No such file or directory" in err, f"{option} in a missing directory: {err!r}")
+    plain = os.path.join(tmp, "plain")
+    open(plain, "w").close()
+    code, _, err = run("--random", 5, "-o", os.path.join(plain, "out.txt"))
+    check(code == 1 and f"the directory '{plain}': Not a directory" in err, f"a file as directory: {err!r}")
+    code, _, err = run("--random", 5, "-o", tmp)
+    check(code == 1 and f"cannot write {tmp}: it is a directory" in err, f"a directory as output: {err!r}")
+    # A directory without write permission, as a user that permission bits bind.
+    readonly = os.path.join(tmp, "readonly")
+    os.mkdir(readonly, 0o555)
+    user = {}
+    if os.geteuid() == 0:
+        user = {"user": 65534, "group": 65534, "extra_groups": []}  # nobody
+        os.chmod(tmp, 0o755)
+        parent = os.path.dirname(tmp)
+        os.chmod(parent, 0o755)
+        if run("--version", **user)[0] != 0:
+            print("test_output_errors: the read-only case skipped (nobody cannot run the tool)")
+            return
+    target = os.path.join(readonly, "out.txt")
+    code, _, err = run("--random", 5, "-o", target, **user)
+    check(code == 1 and f"cannot write {target}: cannot create a temporary file in the directory '{readonly}': "
+          "Permission denied" in err, f"a read-only directory: {err!r}")
+    check(os.listdir(readonly) == [], "nothing left in the read-only directory")
+
+
+def picture_commands():
+    """(file name, argv with the tool's path and the output in examples/pictures) per line of commands.txt."""
+    with open(os.path.join(REPOSITORY, "examples", "pictures", "commands.txt")) as f:
+        for line in f:
+            if line.strip() and not line.startswith("#"):
+                words = shlex.split(line)
+                outputs = [w for w in words if w.startswith("examples/pictures/")]
+                assert len(outputs) == 1, f"commands.txt: one picture per command: {line!r}"
+                yield os.path.basename(outputs[0]), words
+
+
+def test_pictures(tmp):
+    """Each committed picture is what its command draws now, byte for byte."""
+    directory = os.path.join(REPOSITORY, "examples", "pictures")
+    commands = list(picture_commands())
+    names = [name for name, _ in commands]
+    committed = sorted(n for n in os.listdir(directory) if n.endswith(".svg"))
+    check(sorted(names) == committed, f"commands.txt has one command per picture: {sorted(names)} vs {committed}")
+    version = run("--version")[1].split()[1]
+    programs = {"hdt-triangulate": TOOL, "surface_demo": SURFACE_DEMO}
+    for name, words in commands:
+        program = programs.get(words[0], "unknown")
+        check(program != "unknown", f"commands.txt: unknown program {words[0]}")
+        if not program:
+            print(f"test_pictures: {name} skipped (no --surface-demo)")
+            continue
+        out = os.path.join(tmp, name)
+        argv = [program] + [out if w.startswith("examples/pictures/") else w for w in words[1:]]
+        p = subprocess.run(argv, capture_output=True, timeout=120)
+        check(p.returncode == 0, f"{name}: {words}: {p.stderr!r}")
+        if p.returncode != 0:
+            continue
+        with open(out, "rb") as f:
+            drawn = f.read()
+        with open(os.path.join(directory, name), "rb") as f:
+            check(drawn == f.read(), f"examples/pictures/{name} is not what its command draws now; "
+                  "redraw: sh examples/pictures/regenerate [BUILD_DIR]")
+        # Nothing that changes from run to run or release to release.
+        check(version.encode() not in drawn, f"{name}: no version string")
+
+
+TESTS = (test_help_and_version, test_random_text_and_json, test_dummies, test_input_forms, test_bad_input,
+         test_usage_errors, test_outputs, test_utf8_bom, test_decimal_comma, test_empty_input_warning,
+         test_random_cap, test_output_errors)
+
+
 def main():
-    global TOOL
-    TOOL = os.path.abspath(sys.argv[1])
+    global TOOL, SURFACE_DEMO
+    args = sys.argv[1:]
+    TOOL = os.path.abspath(args.pop(0))
+    if args[:1] == ["--surface-demo"]:
+        SURFACE_DEMO = os.path.abspath(args[1])
+        args = args[2:]
+    by_name = {t.__name__: t for t in TESTS + (test_pictures,)}
+    unknown = [a for a in args if a not in by_name]
+    if unknown:
+        print(f"unknown tests: {unknown}; there are {list(by_name)}")
+        return 2
     with tempfile.TemporaryDirectory(prefix="hdt-cli-") as tmp:
-        for test in (test_help_and_version, test_random_text_and_json, test_dummies, test_input_forms,
-                     test_bad_input, test_usage_errors, test_outputs):
+        for test in [by_name[a] for a in args] or TESTS:
             sub = os.path.join(tmp, test.__name__)
             os.mkdir(sub)
             try:
