@@ -7,6 +7,7 @@
 #include <string>
 
 #include "group/word_matrix.hpp"
+#include "predicates/disk_exact.hpp"
 #include "predicates/filtered_point.hpp"
 
 namespace hdt::predicates {
@@ -230,8 +231,11 @@ int Kernel::orientation_checked(const TranslatedPoint &p, const TranslatedPoint 
 }
 
 int Kernel::orientation_staged(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
-  if (untranslated(p) && untranslated(q) && untranslated(r))
+  if (same_frame(p, q, r)) {
     if (const int s = disk_orientation(p.x, p.y, q.x, q.y, r.x, r.y)) return ++statistics_.filtered, s;
+    ++statistics_.exact;
+    return disk_orientation_exact(p.x, p.y, q.x, q.y, r.x, r.y);
+  }
   const FilteredPoint a = filtered(p);
   const FilteredPoint b = filtered(q);
   const FilteredPoint c = filtered(r);
@@ -248,7 +252,7 @@ int Kernel::orientation_staged(const TranslatedPoint &p, const TranslatedPoint &
 
 int Kernel::in_circle_filter(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                              const TranslatedPoint &s) {
-  if (untranslated(p) && untranslated(q) && untranslated(r) && untranslated(s))
+  if (same_frame(p, q, r, s))
     if (const int sg = disk_in_circle(p.x, p.y, q.x, q.y, r.x, r.y, s.x, s.y))
       return ++statistics_.filtered, sg;
   const FilteredPoint a = filtered(p);
@@ -266,36 +270,77 @@ int Kernel::in_circle_filter(const TranslatedPoint &p, const TranslatedPoint &q,
 int Kernel::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                       const TranslatedPoint &s) {
   const int sg = in_circle_filter(p, q, r, s);
+  if (sg == 2 && same_frame(p, q, r, s)) return disk_in_circle_exact(p.x, p.y, q.x, q.y, r.x, r.y, s.x, s.y);
   if (sg == 2) return in_circle_exact(p, q, r, s);
   return checked("in_circle", sg, [&] { return in_circle_exact(p, q, r, s); });
 }
 
 int Kernel::in_circle_perturbed_staged(const std::array<TranslatedPoint, 4> &pt,
                                        const std::array<uint32_t, 4> &vertex) {
+  if (same_frame(pt[0], pt[1], pt[2], pt[3])) {
+    // Points in one frame: the disk filter, then the exact disk stage.
+    if (const int s = disk_in_circle(pt[0].x, pt[0].y, pt[1].x, pt[1].y, pt[2].x, pt[2].y, pt[3].x, pt[3].y))
+      return ++statistics_.filtered,
+             checked("in_circle_perturbed", s, [&] { return in_circle_exact(pt[0], pt[1], pt[2], pt[3]); });
+    ++statistics_.exact;
+    const int s = disk_in_circle_exact(pt[0].x, pt[0].y, pt[1].x, pt[1].y, pt[2].x, pt[2].y, pt[3].x, pt[3].y);
+    if (s != 0) return checked("in_circle_perturbed", s, [&] { return in_circle_exact(pt[0], pt[1], pt[2], pt[3]); });
+    return perturbed_tie(pt, vertex, nullptr);
+  }
   if (const int s = in_circle_filter(pt[0], pt[1], pt[2], pt[3]); s != 2)
     return checked("in_circle_perturbed", s, [&] { return in_circle_exact(pt[0], pt[1], pt[2], pt[3]); });
   const std::array<ExactRow, 4> rows{exact_row(pt[0]), exact_row(pt[1]), exact_row(pt[2]), exact_row(pt[3])};
   if (const int s = field_.sign(det4(rows))) return s;
-  // Cocircular: the coefficient of eps_v is sum over v's rows r of
-  // v_r3 * cofactor(r, 3) of the exact matrix.
+  return perturbed_tie(pt, vertex, &rows);
+}
+
+int Kernel::perturbed_tie(const std::array<TranslatedPoint, 4> &pt, const std::array<uint32_t, 4> &vertex,
+                          const std::array<ExactRow, 4> *rows) {
+  // Cocircular: the coefficient of eps_v is the sum over v's rows r of
+  // (-1)^(r+1) v_r3 cofactor(r, 3) of the exact matrix. For a vertex in one
+  // row that is (-1)^(r+1) times a positive multiple of the orientation of
+  // the other three points (the rows are positive multiples of (N, 1)): a
+  // filtered predicate, no field arithmetic.
   std::array<uint32_t, 4> order = vertex;
   std::sort(order.begin(), order.end(), std::greater<uint32_t>());
   for (int k = 0; k < 4; ++k) {
     if (k > 0 && order[k] == order[k - 1]) continue;
-    FieldElement coefficient = field_.zero();
-    for (int r = 0; r < 4; ++r) {
-      if (vertex[r] != order[k]) continue;
-      std::array<const std::array<FieldElement, 4> *, 3> others;
+    int rows_of_vertex = 0, row = -1;
+    for (int r = 0; r < 4; ++r)
+      if (vertex[r] == order[k]) ++rows_of_vertex, row = r;
+    int s;
+    if (rows_of_vertex == 1) {
+      std::array<TranslatedPoint, 3> others;
       for (int i = 0, j = 0; i < 4; ++i)
-        if (i != r) others[j++] = &rows[i].v;
-      const FieldElement term = field_.mul(rows[r].v[3], det3(others));
-      coefficient = (r % 2 == 1) ? field_.add(coefficient, term) : field_.sub(coefficient, term);
+        if (i != row) others[j++] = pt[i];
+      s = (row % 2 == 1 ? 1 : -1) * orientation(others[0], others[1], others[2]);
+    } else {
+      std::array<ExactRow, 4> computed;
+      if (!rows) {
+        computed = {exact_row(pt[0]), exact_row(pt[1]), exact_row(pt[2]), exact_row(pt[3])};
+        rows = &computed;
+      }
+      s = field_.sign(perturbation_coefficient(*rows, vertex, order[k]));
     }
-    if (const int s = field_.sign(coefficient)) return s;
+    if (s) return s;
   }
   throw std::logic_error(
       "in_circle_perturbed: every perturbation coefficient vanishes (points on one geodesic, or each vertex "
       "repeated)");
+}
+
+FieldElement Kernel::perturbation_coefficient(const std::array<ExactRow, 4> &rows, const std::array<uint32_t, 4> &vertex,
+                                              uint32_t v) const {
+  FieldElement coefficient = field_.zero();
+  for (int r = 0; r < 4; ++r) {
+    if (vertex[r] != v) continue;
+    std::array<const std::array<FieldElement, 4> *, 3> others;
+    for (int i = 0, j = 0; i < 4; ++i)
+      if (i != r) others[j++] = &rows[i].v;
+    const FieldElement term = field_.mul(rows[r].v[3], det3(others));
+    coefficient = (r % 2 == 1) ? field_.add(coefficient, term) : field_.sub(coefficient, term);
+  }
+  return coefficient;
 }
 
 void Kernel::beyond_sides(const TranslatedPoint &p, int *signs) {

@@ -62,6 +62,17 @@ struct TranslatedPoint {
 
 // The point is (x, y) itself, exactly: the disk filters apply.
 inline bool untranslated(const TranslatedPoint &p) { return p.translation == 0 && p.site < 0; }
+// Points given by their stored coordinates and one common translation (no
+// site): h acts on the hyperboloid with determinant 1, so orientation and
+// in_circle are those of the stored points, where the disk filters and the
+// exact disk stage apply (disk_exact.hpp).
+inline bool same_frame(const TranslatedPoint &a, const TranslatedPoint &b, const TranslatedPoint &c) {
+  return a.site < 0 && b.site < 0 && c.site < 0 && a.translation == b.translation && a.translation == c.translation;
+}
+inline bool same_frame(const TranslatedPoint &a, const TranslatedPoint &b, const TranslatedPoint &c,
+                       const TranslatedPoint &d) {
+  return same_frame(a, b, c) && d.site < 0 && d.translation == a.translation;
+}
 // The same description (hence the same point).
 inline bool identical(const TranslatedPoint &a, const TranslatedPoint &b) {
   return a.x == b.x && a.y == b.y && a.translation == b.translation && a.site == b.site;
@@ -220,6 +231,13 @@ class Kernel {
   // then exact, each decision checked under -Dcheck_predicates.
   int orientation_checked(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int in_circle_perturbed_staged(const std::array<TranslatedPoint, 4> &points, const std::array<uint32_t, 4> &vertex);
+  // The perturbed sign of four exactly cocircular points; rows (may be null)
+  // are their exact rows when already computed.
+  int perturbed_tie(const std::array<TranslatedPoint, 4> &points, const std::array<uint32_t, 4> &vertex,
+                    const std::array<ExactRow, 4> *rows);
+  // The coefficient of eps_v in the perturbed determinant.
+  exact::FieldElement perturbation_coefficient(const std::array<ExactRow, 4> &rows,
+                                               const std::array<uint32_t, 4> &vertex, uint32_t v) const;
   // The public predicates' stages (filters, then exact), before the check of
   // -Dcheck_predicates.
   int orientation_staged(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);

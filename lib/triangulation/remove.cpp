@@ -1,9 +1,11 @@
 // Vertex removal: the hole left by the star of v is filled with the Delaunay
-// triangulation of its boundary polygon, clipping Delaunay ears; the removal
-// is refused when a new face would break the circumdiameter guarantee.
+// triangulation of its boundary polygon (hole.hpp); the removal is refused
+// when a new face would break the circumdiameter guarantee.
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
+#include "triangulation/hole.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
@@ -16,51 +18,51 @@ bool Triangulation::remove(uint32_t v) {
   old_faces_.clear();
   boundary_.clear();
   new_faces_.clear();
-  std::vector<Corner> polygon;  // the link of v, counterclockwise, in the first star face's frame
+  // The link of v, counterclockwise, in the first star face's frame.
+  std::vector<HoleVertex> &polygon = hole_;
+  polygon.clear();
   polygon.reserve(star_.size());
   for (const StarFace &s : star_) {
     const Face &F = faces_[s.face];
     const int a = next(s.corner), b = prev(s.corner);
     old_faces_.push_back(s.face);
-    polygon.push_back({F.v[a], T.compose(s.frame, F.t[a])});
+    polygon.push_back({point(F.v[a], T.compose(s.frame, F.t[a])), F.v[a]});
     boundary_.push_back({{F.v[a], T.compose(s.frame, F.t[a])},
                          {F.v[b], T.compose(s.frame, F.t[b])},
                          F.n[s.corner],
                          twin(s.face, s.corner),
                          T.compose(s.frame, F.nt[s.corner])});
   }
-  for (std::size_t i = 0; i < polygon.size(); ++i)
-    for (std::size_t j = i + 1; j < polygon.size(); ++j)
-      if (polygon[i].v == polygon[j].v) throw std::logic_error("the link of a vertex repeats a vertex");
-  auto at = [&](const Corner &c) { return point(c.v, c.t); };
+  // The link never repeats a vertex in a simplicial complex.
+  link_ids_.clear();
+  for (const HoleVertex &h : polygon) link_ids_.push_back(h.vertex);
+  std::sort(link_ids_.begin(), link_ids_.end());
+  if (std::adjacent_find(link_ids_.begin(), link_ids_.end()) != link_ids_.end())
+    throw std::logic_error("the link of a vertex repeats a vertex");
 
-  // An ear (a, b, c) convex at b whose circle holds no other link vertex is
-  // a face of the Delaunay triangulation of the link, inside the hole.
-  while (polygon.size() > 3) {
-    const std::size_t n = polygon.size();
-    bool clipped = false;
-    for (std::size_t i = 0; i < n && !clipped; ++i) {
-      const Corner &a = polygon[(i + n - 1) % n], &b = polygon[i], &c = polygon[(i + 1) % n];
-      if (kernel_->orientation(at(a), at(b), at(c)) <= 0) continue;
-      bool empty = true;
-      for (std::size_t j = 0; j < n && empty; ++j) {
-        if (j == i || j == (i + 1) % n || j == (i + n - 1) % n) continue;
-        const Corner &d = polygon[j];
-        empty = kernel_->in_circle_perturbed({at(a), at(b), at(c), at(d)}, {a.v, b.v, c.v, d.v}) < 0;
-      }
-      if (!empty) continue;
-      new_faces_.push_back({{a, b, c}});
-      polygon.erase(polygon.begin() + long(i));
-      clipped = true;
-    }
-    if (!clipped) throw std::logic_error("vertex removal found no Delaunay ear");
+  const Face &first = faces_[star_[0].face];
+  const HoleVertex removed{point(v, T.compose(star_[0].frame, first.t[star_[0].corner])), v};
+  if (!fill_hole(*kernel_, polygon, removed, &hole_faces_)) fill_hole_by_wrapping(*kernel_, polygon, &hole_faces_);
+#ifdef HDT_CHECK_PREDICATES
+  // The debugging build checks the fast method against the simple one.
+  std::vector<HoleFace> wrapped;
+  fill_hole_by_wrapping(*kernel_, polygon, &wrapped);
+  auto canonical = [](std::vector<HoleFace> faces) {
+    for (HoleFace &f : faces) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+    std::sort(faces.begin(), faces.end());
+    return faces;
+  };
+  if (canonical(wrapped) != canonical(hole_faces_))
+    throw std::logic_error("check_predicates: the two hole-filling methods disagree");
+#endif
+  for (const HoleFace &f : hole_faces_) {
+    const TranslatedPoint &a = polygon[std::size_t(f[0])].point, &b = polygon[std::size_t(f[1])].point,
+                          &c = polygon[std::size_t(f[2])].point;
+    if (kernel_->large_circumdisk(a, b, c) > 0) return false;
+    new_faces_.push_back({{Corner{polygon[std::size_t(f[0])].vertex, a.translation},
+                           Corner{polygon[std::size_t(f[1])].vertex, b.translation},
+                           Corner{polygon[std::size_t(f[2])].vertex, c.translation}}});
   }
-  if (kernel_->orientation(at(polygon[0]), at(polygon[1]), at(polygon[2])) <= 0)
-    throw std::logic_error("vertex removal left a flat last triangle");
-  new_faces_.push_back({{polygon[0], polygon[1], polygon[2]}});
-
-  for (const NewFace &f : new_faces_)
-    if (kernel_->large_circumdisk(at(f.c[0]), at(f.c[1]), at(f.c[2])) > 0) return false;
   replace(old_faces_, new_faces_, boundary_, &new_ids_);
   if (dummy_[v]) --dummies_;
   vertices_[v].face = kNone;
@@ -69,11 +71,19 @@ bool Triangulation::remove(uint32_t v) {
 }
 
 std::size_t Triangulation::remove_dummies() {
-  // A removal can make room for another, so sweep until nothing changes.
+  // Sweeps in id order until nothing changes. A removal can make room for
+  // another only on the link of the removed vertex (whose stars changed), so
+  // a dummy refused once is tried again only after that.
+  std::vector<bool> changed(vertices_.size(), true);
   for (bool progress = true; progress && dummies_ > 0;) {
     progress = false;
-    for (uint32_t v = 0; v < vertices_.size(); ++v)
-      if (vertices_[v].alive() && dummy_[v] && remove(v)) progress = true;
+    for (uint32_t v = 0; v < vertices_.size(); ++v) {
+      if (!vertices_[v].alive() || !dummy_[v] || !changed[v]) continue;
+      changed[v] = false;
+      if (!remove(v)) continue;
+      progress = true;
+      for (const uint32_t u : link_ids_) changed[u] = true;
+    }
   }
   return dummies_;
 }

@@ -88,20 +88,27 @@ void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<
       link_new(j2, 0, j);
     }
   } else {
-    for (std::size_t j = 0; j < k; ++j) {
-      const NewFace &nf = created[j];
-      for (int i = 0; i < 3; ++i) {
-        const Corner &a = nf.c[next(i)], &b = nf.c[prev(i)];
-        bool linked = false;
-        for (std::size_t j2 = 0; j2 < k && !linked; ++j2) {
-          if (j2 == j) continue;
-          const NewFace &other = created[j2];
-          for (int i2 = 0; i2 < 3 && !linked; ++i2)
-            if (same(other.c[next(i2)], b) && same(other.c[prev(i2)], a)) link_new(j, i, j2), linked = true;
-        }
-        for (std::size_t e = 0; e < boundary.size() && !linked; ++e)
-          if (same(boundary[e].a, a) && same(boundary[e].b, b)) link_outer(j, i, boundary[e]), linked = true;
-        if (!linked) throw std::logic_error("replace: a new edge has no partner");
+    // Any other shape (a removal's hole): each edge found by binary search
+    // among the new faces' edges and then the boundary's, O(k log k).
+    std::vector<HalfEdge> &edges = half_edges_, &outer = boundary_edges_;
+    edges.clear(), outer.clear();
+    for (std::size_t j = 0; j < k; ++j)
+      for (int i = 0; i < 3; ++i)
+        edges.push_back({key(created[j].c[next(i)]), key(created[j].c[prev(i)]), uint32_t(j), i});
+    for (std::size_t e = 0; e < boundary.size(); ++e)
+      outer.push_back({key(boundary[e].a), key(boundary[e].b), uint32_t(e), 0});
+    std::sort(edges.begin(), edges.end());
+    std::sort(outer.begin(), outer.end());
+    for (const HalfEdge &h : edges) {
+      const HalfEdge reversed{h.b, h.a, 0, 0};
+      if (const auto it = std::lower_bound(edges.begin(), edges.end(), reversed);
+          it != edges.end() && it->a == h.b && it->b == h.a) {
+        link_new(h.face, h.edge, it->face);
+      } else if (const auto o = std::lower_bound(outer.begin(), outer.end(), HalfEdge{h.a, h.b, 0, 0});
+                 o != outer.end() && o->a == h.a && o->b == h.b) {
+        link_outer(h.face, h.edge, boundary[o->face]);
+      } else {
+        throw std::logic_error("replace: a new edge has no partner");
       }
     }
   }

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "predicates/kernel.hpp"
+#include "triangulation/hole.hpp"
 #include "triangulation/mesh.hpp"
 
 namespace hdt::triangulation {
@@ -180,6 +181,9 @@ class Triangulation {
   std::vector<NewFace> new_faces_;
   std::vector<BoundaryEdge> boundary_;
   std::vector<StarFace> star_;
+  std::vector<HoleVertex> hole_;  // remove(): the link of the vertex
+  std::vector<HoleFace> hole_faces_;
+  std::vector<uint32_t> link_ids_;
   struct Built {  // a new face in its canonical copy; kappa maps the common frame to it
     Face face;
     TranslationId kappa;
@@ -191,6 +195,15 @@ class Triangulation {
     TranslationId nt;
   };
   std::vector<Built> built_;
+  // replace()'s general search: directed edges a -> b by their corners.
+  static uint64_t key(const Corner &c) { return uint64_t(c.v) << 32 | uint32_t(c.t); }
+  struct HalfEdge {
+    uint64_t a, b;
+    uint32_t face;  // index among the new faces (or the boundary's edges)
+    int edge;
+    bool operator<(const HalfEdge &o) const { return a != o.a ? a < o.a : b < o.b; }
+  };
+  std::vector<HalfEdge> half_edges_, boundary_edges_;
   std::vector<OuterLink> outer_links_;
   std::vector<uint32_t> holes_;
 };
