@@ -76,13 +76,19 @@ HDT_API int hdt_abi_version(void) HDT_NOEXCEPT;
    hdt_systole has no limit). May grow in later versions. */
 #define HDT_GENUS_MAX 1024
 
-/* The systole of M_g: 2 arccosh(1 + 2 cos(pi / 2g)). NaN when genus < 2. */
+/* The systole of M_g: 2 arccosh(1 + 2 cos(pi / 2g)), correctly rounded (the
+   nearest double). NaN when genus < 2. */
 HDT_API double hdt_systole(int genus) HDT_NOEXCEPT;
 
-/* Vertex v_k of F_g (angle (2k+1) pi / 4g), k taken mod 4g. */
+/* Vertex v_k of F_g (angle (2k+1) pi / 4g, Euclidean radius
+   sqrt(cos(pi / 2g))), k taken mod 4g; x and y are each correctly rounded.
+   The rounded point is a different point of the disk from v_k: inserting it
+   makes a new vertex near v_0, not the dummy vertex at v_0. */
 HDT_API hdt_status hdt_polygon_vertex(int genus, int k, double *x, double *y) HDT_NOEXCEPT;
 
-/* Midpoint m_k of side s_k of F_g (angle k pi / 2g), k taken mod 4g.
+/* Midpoint m_k of side s_k of F_g (angle k pi / 2g, Euclidean radius
+   sqrt((A - 1) / (A + 1)) with A = cot(pi / 4g)), k taken mod 4g; x and y are
+   each correctly rounded (a coordinate on an axis is +0).
    Side s_k joins v_{k-1} and v_k and is paired with s_{k+2g} by g_k. */
 HDT_API hdt_status hdt_polygon_side_midpoint(int genus, int k, double *x, double *y) HDT_NOEXCEPT;
 

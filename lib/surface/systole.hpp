@@ -15,7 +15,8 @@ T systole(int genus) {
   return T(2) * acosh(T(1) + T(2) * cos(exact::pi<T>() / (T(2) * T(genus))));
 }
 
-// NaN when genus < 2.
+// The systole correctly rounded to double (systole<double> can be an ulp
+// off); NaN when genus < 2.
 double systole_or_nan(int genus);
 
 }  // namespace hdt::surface
