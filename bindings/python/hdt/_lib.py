@@ -4,16 +4,31 @@ The library is looked for, in order:
 
 1. the file named by the environment variable ``HDT_LIBRARY`` (when it is set
    and not empty, nothing else is tried);
-2. the SONAME ``libhdt.so.0`` through the dynamic loader;
-3. whatever ``ctypes.util.find_library('hdt')`` names.
+2. the libhdt installed together with this package by ``meson install``:
+   meson writes the module ``hdt/_installed.py`` (only into an install, never
+   into the source tree or a pip install) with the install's libdir, absolute
+   and relative to the package; the relative path is tried first, so that a
+   copy of the whole install (a DESTDIR, a moved prefix) loads its own
+   library. Neither HDT_LIBRARY nor LD_LIBRARY_PATH is needed then, for any
+   prefix (outside /usr/local and /usr the package itself needs PYTHONPATH);
+3. the SONAME ``libhdt.so.0`` through the dynamic loader (``/usr/local``
+   after ``ldconfig``, ``/usr``, ``LD_LIBRARY_PATH``);
+4. whatever ``ctypes.util.find_library('hdt')`` names.
 
 A candidate is accepted when it loads, reports ``hdt_abi_version() == 0`` and
 exports every function of the table below. Otherwise importing ``hdt`` raises
 :class:`LibraryLoadError` (an :class:`ImportError`) that lists what was tried.
+
+Calls into the library release the GIL (ctypes.CDLL) but cannot be
+interrupted: Python handles Ctrl-C (SIGINT) only when the call has returned,
+so a long call (``insert_many`` of millions of points, ``remove_dummies``,
+``validate``, ``Triangulation(genus)`` of a large genus) finishes first, its
+work done, and ``KeyboardInterrupt`` comes after it.
 """
 
 import ctypes
 import ctypes.util
+import importlib
 import os
 
 #: The ABI these bindings speak: the number of the SONAME libhdt.so.N.
@@ -82,13 +97,35 @@ PROTOTYPES = {
 }
 
 
+#: The module meson generates into an install (bindings/python/meson.build).
+INSTALLED_MODULE = "_installed"
+
+
+def _installed_candidates():
+    """The libhdt installed with this package by meson, relative to the
+    package first, then at its absolute path; none without hdt/_installed.py."""
+    try:
+        installed = importlib.import_module(f"{__package__}.{INSTALLED_MODULE}")
+    except ImportError:
+        return []
+    package = os.path.dirname(os.path.abspath(installed.__file__))
+    paths = [
+        os.path.normpath(os.path.join(package, installed.LIBDIR_FROM_PACKAGE, SONAME)),
+        os.path.join(installed.LIBDIR, SONAME),
+    ]
+    if paths[0] == paths[1]:
+        del paths[1]
+    return [(f"installed with the package: {path}", path) for path in paths]
+
+
 def _candidates():
     """(description, name given to the loader) pairs, in the order tried."""
     path = os.environ.get(ENVIRONMENT_VARIABLE)
     if path:
         # A file path: made absolute so that the loader never searches for it.
         return [(f"{ENVIRONMENT_VARIABLE}={path}", os.path.abspath(path))]
-    candidates = [(f"SONAME {SONAME}", SONAME)]
+    candidates = _installed_candidates()
+    candidates.append((f"SONAME {SONAME}", SONAME))
     found = ctypes.util.find_library("hdt")
     if found and found != SONAME:
         candidates.append((f"ctypes.util.find_library('hdt') = {found}", found))
@@ -126,8 +163,8 @@ def load():
     raise LibraryLoadError(
         f"cannot load libhdt (ABI version {EXPECTED_ABI_VERSION}); tried:\n"
         + "\n".join(failures)
-        + f"\nSet {ENVIRONMENT_VARIABLE} to the path of {SONAME}, "
-        "or install libhdt where the dynamic loader finds it.",
+        + f"\nSet {ENVIRONMENT_VARIABLE} to the path of {SONAME}, or install libhdt "
+        "where the dynamic loader finds it (after meson install into /usr/local: ldconfig).",
         name="hdt",
     )
 
