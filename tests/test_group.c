@@ -192,6 +192,284 @@ START_TEST(canonical_is_shortlex_least_g2) {
 }
 END_TEST
 
+/* ---- Results that fit in double, and those that do not ---- */
+
+/* Outputs that a failing call must leave alone. */
+#define UNTOUCHED (-12345.5)
+
+static void fill_untouched(double *out, size_t n) {
+  for (size_t i = 0; i < n; ++i) out[i] = UNTOUCHED;
+}
+
+static void expect_untouched(const double *out, size_t n, const char *function) {
+  for (size_t i = 0; i < n; ++i)
+    expect(out[i] == UNTOUCHED, "%s wrote output %zu on failure (%s)", function, i, hdt_last_error_message());
+}
+
+/* A failure with HDT_EDOMAIN whose message names the function and says why. */
+static void expect_domain_failure(hdt_status s, const char *function, const char *why) {
+  expect_failure(s, HDT_EDOMAIN, function);
+  expect(strstr(hdt_last_error_message(), why) != NULL, "%s: message \"%s\" does not say \"%s\"", function,
+         hdt_last_error_message(), why);
+}
+
+static int bits_equal(double x, double y) { return memcmp(&x, &y, sizeof x) == 0; }
+
+/* g_0^n at genus 2 is [[cosh nt, sinh nt], [sinh nt, cosh nt]] with
+   cosh t = A = cot(pi/8), and its Lorentz matrix has L_00 = cosh 2nt. An
+   entry overflows double exactly when it reaches 2^1024 (the rounding
+   threshold 2^1024 - 2^970 is within 2^-54 of it): cosh x ~ e^x / 2 there,
+   so at x = 1025 ln 2. */
+START_TEST(generator_powers_overflow_with_edomain) {
+  const long double t = acoshl(1 / tanl(acosl(-1) / 8)), limit = 1025 * logl(2);
+  int32_t *w = calloc(1000, sizeof *w); /* g_0^n: n zeros */
+  ck_assert_ptr_nonnull(w);
+  const size_t ns[] = {200, 225, 230, 231, 232, 233, 234, 235, 240, 400, 460, 463, 464, 465, 466, 470, 1000};
+  for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i) {
+    const size_t n = ns[i];
+    double m[9];
+    fill_untouched(m, 9);
+    hdt_status s = hdt_word_matrix(2, w, n, m);
+    if (n * t < limit) {
+      expect(s == HDT_OK, "g_0^%zu: hdt_word_matrix %s (%s)", n, hdt_status_string(s), hdt_last_error_message());
+      const long double a = coshl(n * t);
+      expect(fabsl(m[0] - a) <= 1e-14L * a && fabsl(m[2] - sinhl(n * t)) <= 1e-14L * a &&
+                 fabs(m[1]) <= 1e-15 * m[0] && fabs(m[3]) <= 1e-15 * m[0],
+             "g_0^%zu: a = %.17g%+.17gi, b = %.17g%+.17gi, expected cosh %.17Lg", n, m[0], m[1], m[2], m[3], a);
+    } else {
+      expect_domain_failure(s, "hdt_word_matrix", "exceed the double range");
+      expect_untouched(m, 9, "hdt_word_matrix");
+    }
+    fill_untouched(m, 9);
+    s = hdt_word_lorentz(2, w, n, m);
+    if (2 * n * t < limit) {
+      expect(s == HDT_OK, "g_0^%zu: hdt_word_lorentz %s (%s)", n, hdt_status_string(s), hdt_last_error_message());
+      const long double l00 = coshl(2 * n * t);
+      expect(fabsl(m[0] - l00) <= 1e-14L * l00, "g_0^%zu: L_00 = %.17g, expected %.17Lg", n, m[0], l00);
+      for (int j = 0; j < 9; ++j) expect(isfinite(m[j]), "g_0^%zu: Lorentz entry %d is %g", n, j, m[j]);
+    } else {
+      expect_domain_failure(s, "hdt_word_lorentz", "exceed the double range");
+      expect_untouched(m, 9, "hdt_word_lorentz");
+    }
+  }
+  free(w);
+}
+END_TEST
+
+/* The identity, however it is spelled, is exactly the identity: the
+   relator's rotations and their inverses, [k, k+2g], and w w^-1. */
+static void expect_exact_identity(int g, const word_t *w) {
+  char buf[2048];
+  double m[4], L[9];
+  ck_assert_int_eq(hdt_word_matrix(g, w->a, w->n, m), HDT_OK);
+  expect(m[0] == 1 && m[1] == 0 && m[2] == 0 && m[3] == 0, "genus %d: [%s] gives a = %a%+ai, b = %a%+ai", g,
+         word_str(w, buf, sizeof buf), m[0], m[1], m[2], m[3]);
+  ck_assert_int_eq(hdt_word_lorentz(g, w->a, w->n, L), HDT_OK);
+  for (int i = 0; i < 9; ++i)
+    expect(L[i] == (i % 4 == 0 ? 1 : 0), "genus %d: [%s] gives Lorentz entry %d = %a", g, word_str(w, buf, sizeof buf),
+           i, L[i]);
+  const double points[][2] = {{0, 0.14}, {0.1, -0.2}, {-0.0, 0.5}, {0.999999999999, 0}, {-0.6, 0.7999999999999999}};
+  for (size_t i = 0; i < sizeof points / sizeof points[0]; ++i) {
+    double x, y;
+    ck_assert_int_eq(hdt_word_apply(g, w->a, w->n, points[i][0], points[i][1], &x, &y), HDT_OK);
+    expect(bits_equal(x, points[i][0]) && bits_equal(y, points[i][1]), "genus %d: [%s] maps (%a, %a) to (%a, %a)", g,
+           word_str(w, buf, sizeof buf), points[i][0], points[i][1], x, y);
+  }
+}
+
+START_TEST(identity_words_give_the_exact_identity) {
+  uint64_t rng = UINT64_C(0x2545f4914f6cdd1d);
+  for (int g = 2; g <= 32; g += (g < 6 ? 1 : 9)) {
+    const word_t r = relator(g), ri = word_inverse(g, &r);
+    for (size_t s = 0; s < r.n; s += (g <= 4 ? 1 : 5)) {
+      const word_t rot = word_rotate(&r, s), roti = word_rotate(&ri, s);
+      expect_exact_identity(g, &rot);
+      expect_exact_identity(g, &roti);
+    }
+    for (int k = 0; k < 4 * g; ++k) {
+      const word_t pair = {2, {k, inv_letter(g, k)}};
+      expect_exact_identity(g, &pair);
+    }
+    for (int trial = 0; trial < 5; ++trial) {
+      word_t w = random_word(&rng, g, 60);
+      const word_t wi = word_inverse(g, &w);
+      word_append(&w, &wi);
+      expect_exact_identity(g, &w);
+    }
+  }
+}
+END_TEST
+
+/* g_0 preserves the real axis and moves it by 2t (cosh t = A): g_0^n (0.5)
+   = tanh((2nt + d) / 2) with d = 2 artanh 0.5, which rounds to 1 (onto the
+   circle) once 1 - it is below 2^-54, half the spacing of doubles below 1. */
+START_TEST(images_on_the_circle_are_refused) {
+  const long double t = acoshl(1 / tanl(acosl(-1) / 8)), d = 2 * atanhl(0.5L);
+  int32_t w[40] = {0};
+  for (size_t n = 1; n <= 40; ++n) {
+    const long double gap = 2 / (expl(2 * n * t + d) + 1); /* 1 - g_0^n (0.5) */
+    if (fabsl(log2l(gap) + 54) < 0.01L) continue;  /* too close to call in long double */
+    double out[2];
+    fill_untouched(out, 2);
+    const hdt_status s = hdt_word_apply(2, w, n, 0.5, 0, &out[0], &out[1]);
+    if (gap > 0x1p-54L) {
+      expect(s == HDT_OK, "g_0^%zu (0.5): %s (%s)", n, hdt_status_string(s), hdt_last_error_message());
+      expect(out[1] == 0 && out[0] < 1 && fabsl(out[0] - (1 - gap)) <= 0x1p-53L,
+             "g_0^%zu (0.5) = (%.17g, %g), 1 - it should be %Lg", n, out[0], out[1], gap);
+    } else {
+      expect_failure(s, HDT_EDOMAIN, "hdt_word_apply");
+      expect_untouched(out, 2, "hdt_word_apply");
+    }
+  }
+  /* Far from the circle in the input, 1e-133 from it in the image. */
+  int32_t power[100] = {0};
+  double out[2];
+  fill_untouched(out, 2);
+  expect_failure(hdt_word_apply(2, power, 100, 0.1, 0.2, &out[0], &out[1]), HDT_EDOMAIN, "hdt_word_apply");
+  expect_untouched(out, 2, "hdt_word_apply");
+}
+END_TEST
+
+/* The longest words finish quickly; their statuses make sense. */
+START_TEST(million_letter_words) {
+  const size_t n = HDT_WORD_MAX_LENGTH;
+  int32_t *w = malloc(n * sizeof *w);
+  ck_assert_ptr_nonnull(w);
+  uint64_t rng = UINT64_C(0x853c49e6748fea9b);
+  /* A random word runs away: its matrices overflow and its images round to
+     the circle. */
+  for (size_t i = 0; i < n; ++i) w[i] = rng_below(&rng, 8);
+  double m[9];
+  fill_untouched(m, 9);
+  expect_domain_failure(hdt_word_matrix(2, w, n, m), "hdt_word_matrix", "exceed the double range");
+  expect_domain_failure(hdt_word_lorentz(2, w, n, m), "hdt_word_lorentz", "exceed the double range");
+  expect_failure(hdt_word_apply(2, w, n, 0.1, 0.2, &m[0], &m[1]), HDT_EDOMAIN, "hdt_word_apply");
+  expect_untouched(m, 9, "the word functions");
+  /* v v^-1 x with a random v of n/2 - 2 letters is x = [1 2 3 1]. */
+  const size_t half = n / 2 - 2;
+  for (size_t i = 0; i < half; ++i) w[half + i] = inv_letter(2, w[half - 1 - i]);
+  const int32_t x[4] = {1, 2, 3, 1};
+  memcpy(w + 2 * half, x, sizeof x);
+  double mx[4], Lw[9], Lx[9], zw[2], zx[2];
+  ck_assert_int_eq(hdt_word_matrix(2, w, n, m), HDT_OK);
+  ck_assert_int_eq(hdt_word_matrix(2, x, 4, mx), HDT_OK);
+  for (int i = 0; i < 4; ++i) expect(bits_equal(m[i], mx[i]), "matrix entry %d: %a, not %a", i, m[i], mx[i]);
+  ck_assert_int_eq(hdt_word_lorentz(2, w, n, Lw), HDT_OK);
+  ck_assert_int_eq(hdt_word_lorentz(2, x, 4, Lx), HDT_OK);
+  for (int i = 0; i < 9; ++i) expect(bits_equal(Lw[i], Lx[i]), "Lorentz entry %d: %a, not %a", i, Lw[i], Lx[i]);
+  ck_assert_int_eq(hdt_word_apply(2, w, n, 0.1, 0.2, &zw[0], &zw[1]), HDT_OK);
+  ck_assert_int_eq(hdt_word_apply(2, x, 4, 0.1, 0.2, &zx[0], &zx[1]), HDT_OK);
+  expect(bits_equal(zw[0], zx[0]) && bits_equal(zw[1], zx[1]), "image (%a, %a), not (%a, %a)", zw[0], zw[1], zx[0],
+         zx[1]);
+  /* g_0^n overflows at once. */
+  for (size_t i = 0; i < n; ++i) w[i] = 0;
+  fill_untouched(m, 9);
+  expect_domain_failure(hdt_word_matrix(2, w, n, m), "hdt_word_matrix", "exceed the double range");
+  expect_untouched(m, 9, "hdt_word_matrix");
+  free(w);
+}
+END_TEST
+
+/* ---- Against products computed here, in long double ---- */
+
+typedef struct ld_matrix {
+  long double complex_a[2], complex_b[2]; /* a = [0] + i [1], b likewise */
+} ld_matrix;
+
+static ld_matrix ld_generator(int g, int k) {
+  const long double pi = acosl(-1), A = 1 / tanl(pi / (4 * g)), r = sqrtl(A * A - 1), angle = k * pi / (2 * g);
+  return (ld_matrix){{A, 0}, {r * cosl(angle), r * sinl(angle)}};
+}
+
+/* [[a, b], [b~, a~]] [[c, d], [d~, c~]] = [[a c + b d~, a d + b c~], ...] */
+static ld_matrix ld_product(ld_matrix x, ld_matrix y) {
+  const long double *a = x.complex_a, *b = x.complex_b, *c = y.complex_a, *d = y.complex_b;
+  return (ld_matrix){{a[0] * c[0] - a[1] * c[1] + b[0] * d[0] + b[1] * d[1],
+                      a[0] * c[1] + a[1] * c[0] + b[1] * d[0] - b[0] * d[1]},
+                     {a[0] * d[0] - a[1] * d[1] + b[0] * c[0] + b[1] * c[1],
+                      a[0] * d[1] + a[1] * d[0] + b[1] * c[0] - b[0] * c[1]}};
+}
+
+static ld_matrix ld_word(int g, const word_t *w) {
+  ld_matrix m = {{1, 0}, {0, 0}};
+  for (size_t i = 0; i < w->n; ++i) m = ld_product(m, ld_generator(g, w->a[i]));
+  return m;
+}
+
+static long double ld_gap(const double m[4], ld_matrix e) {
+  const long double d[4] = {e.complex_a[0], e.complex_a[1], e.complex_b[0], e.complex_b[1]};
+  const long double size = hypotl(d[0], d[1]) + hypotl(d[2], d[3]);
+  long double gap = 0;
+  for (int i = 0; i < 4; ++i) gap = fmaxl(gap, fabsl(m[i] - d[i]));
+  return gap / size;
+}
+
+/* Random freely reduced words (no cancellation to amplify the long double
+   rounding: about m 2^-64 relative), the group law on pairs, and the three
+   functions against each other: L maps the hyperboloid point of z to that of
+   the image of z. */
+START_TEST(words_agree_with_independent_products) {
+  uint64_t rng = UINT64_C(0xda942042e4dd58b5);
+  char buf[512];
+  for (int g = 2; g <= 5; ++g)
+    for (int trial = 0; trial < 150; ++trial) {
+      word_t u = {0}, v = {0}, uv;
+      for (word_t *w = &u; w != NULL; w = (w == &u ? &v : NULL)) {
+        const size_t len = (size_t)rng_below(&rng, 13);
+        while (w->n < len) {
+          const int32_t k = rng_below(&rng, 4 * g);
+          if (w->n == 0 || k != inv_letter(g, w->a[w->n - 1])) word_push(w, k);
+        }
+      }
+      uv = u;
+      word_append(&uv, &v);
+      double mu[4], mv[4], muv[4];
+      word_matrix(g, &u, mu);
+      word_matrix(g, &v, mv);
+      word_matrix(g, &uv, muv);
+      const ld_matrix eu = ld_word(g, &u), ev = ld_word(g, &v);
+      expect(ld_gap(mu, eu) < 1e-15L, "genus %d: [%s] is %Lg from the long double product", g,
+             word_str(&u, buf, sizeof buf), ld_gap(mu, eu));
+      /* The group law: the product of u and v's long double matrices. */
+      expect(ld_gap(muv, ld_product(eu, ev)) < 1e-15L, "genus %d: [%s] is %Lg from the product of its halves", g,
+             word_str(&uv, buf, sizeof buf), ld_gap(muv, ld_product(eu, ev)));
+      /* The action: L(uv) maps the hyperboloid point of z to that of uv(z),
+         and uv(z) = u(v(z)). Near the circle the image may round onto it. */
+      const double z[2] = {0.3 - 0.002 * trial, 0.1};
+      double L[9], direct[2], vz[2], uvz[2];
+      ck_assert_int_eq(hdt_word_lorentz(g, uv.a, uv.n, L), HDT_OK);
+      const long double r2 = (long double)z[0] * z[0] + (long double)z[1] * z[1];
+      const long double p[3] = {(1 + r2) / (1 - r2), 2 * z[0] / (1 - r2), 2 * z[1] / (1 - r2)};
+      long double q[3];
+      for (int i = 0; i < 3; ++i) q[i] = L[3 * i] * p[0] + L[3 * i + 1] * p[1] + L[3 * i + 2] * p[2];
+      const hdt_status s = hdt_word_apply(g, uv.a, uv.n, z[0], z[1], &direct[0], &direct[1]);
+      if (s != HDT_OK) {
+        /* 1 - |uv(z)| = 2 / (1 + t) */
+        expect_failure(s, HDT_EDOMAIN, "hdt_word_apply");
+        expect(2 / (1 + q[0]) < 0x1p-50L, "genus %d: [%s]: z refused, yet 1 - |uv(z)| = %Lg", g,
+               word_str(&uv, buf, sizeof buf), 2 / (1 + q[0]));
+        continue;
+      }
+      /* Back to the disk: (u, v) / (1 + t). */
+      const long double ex = q[1] / (1 + q[0]), ey = q[2] / (1 + q[0]);
+      expect(fabsl(ex - direct[0]) < 1e-12L && fabsl(ey - direct[1]) < 1e-12L,
+             "genus %d: [%s]: the Lorentz matrix maps z to (%.17Lg, %.17Lg), the word to (%.17g, %.17g)", g,
+             word_str(&uv, buf, sizeof buf), ex, ey, direct[0], direct[1]);
+      if (hdt_word_apply(g, v.a, v.n, z[0], z[1], &vz[0], &vz[1]) != HDT_OK) continue;
+      apply_word(g, &u, vz[0], vz[1], &uvz[0], &uvz[1]);
+      /* Rounding v(z) moves it by 1e-16, hyperbolically 2e-16 / (1 - |v(z)|^2);
+         u keeps that, and it is (1 - |uv(z)|^2) / 2 times as much Euclidean. */
+      const long double inner = 1 - ((long double)vz[0] * vz[0] + (long double)vz[1] * vz[1]);
+      const long double moved =
+          1e-14L * (1 + (1 - ((long double)direct[0] * direct[0] + (long double)direct[1] * direct[1])) /
+                            fmaxl(inner, 0x1p-64L));
+      expect(fabs(uvz[0] - direct[0]) < moved && fabs(uvz[1] - direct[1]) < moved,
+             "genus %d: [%s] maps z to (%.17g, %.17g), its halves to (%.17g, %.17g)", g, word_str(&uv, buf, sizeof buf),
+             direct[0], direct[1], uvz[0], uvz[1]);
+    }
+}
+END_TEST
+
 int main(void) {
   const TTest *const tests[] = {
       relator_is_identity,
@@ -201,6 +479,11 @@ int main(void) {
       chain_example_g2,
       generator_powers_are_canonical,
       canonical_is_shortlex_least_g2,
+      generator_powers_overflow_with_edomain,
+      identity_words_give_the_exact_identity,
+      images_on_the_circle_are_refused,
+      million_letter_words,
+      words_agree_with_independent_products,
   };
   return run_tests("group", tests, sizeof tests / sizeof tests[0]);
 }

@@ -12,7 +12,6 @@ using hdt::capi::ApiError;
 using hdt::capi::guarded;
 using hdt::group::Letter;
 using hdt::group::Presentation;
-using hdt::group::Word;
 
 namespace {
 
@@ -44,7 +43,7 @@ HDT_API hdt_status hdt_word_matrix(int genus, const int32_t *word, size_t length
   return guarded("hdt_word_matrix", [&] {
     const Presentation p = checked_word(genus, word, length);
     if (!m) throw ApiError(HDT_EINVAL, "m must not be NULL");
-    const auto f = hdt::group::accurate_moebius(p, word, length);
+    const auto f = hdt::group::element_moebius(p, word, length);
     m[0] = f.a.re;
     m[1] = f.a.im;
     m[2] = f.b.re;
@@ -57,7 +56,7 @@ HDT_API hdt_status hdt_word_lorentz(int genus, const int32_t *word, size_t lengt
   return guarded("hdt_word_lorentz", [&] {
     const Presentation p = checked_word(genus, word, length);
     if (!m) throw ApiError(HDT_EINVAL, "m must not be NULL");
-    const auto L = hdt::group::accurate_lorentz(p, word, length);
+    const auto L = hdt::group::element_lorentz(p, word, length);
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) m[3 * i + j] = L.m[i][j];
     return HDT_OK;
@@ -70,7 +69,7 @@ HDT_API hdt_status hdt_word_apply(int genus, const int32_t *word, size_t length,
     const Presentation p = checked_word(genus, word, length);
     if (!ox || !oy) throw ApiError(HDT_EINVAL, "ox and oy must not be NULL");
     hdt::capi::check_disk_point(x, y);
-    const auto z = hdt::group::accurate_image(p, Word(word, word + length), {x, y});
+    const auto z = hdt::group::element_image(p, word, length, {x, y});
     *ox = z.re;
     *oy = z.im;
     return HDT_OK;

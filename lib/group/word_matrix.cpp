@@ -1,9 +1,23 @@
 #include "group/word_matrix.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <boost/multiprecision/gmp.hpp>
 
 #include "exact/precision_ladder.hpp"
+#include "exact/unit_disk.hpp"
+#include "group/dehn.hpp"
 #include "group/generators.hpp"
 
 namespace hdt::group {
@@ -84,6 +98,389 @@ void accurate_matrices(const Presentation &p, const Word &w, Moebius<double> *mo
       for (int j = 0; j < 3; ++j) lorentz->m[i][j] = to_double(L.m[i][j]);
     return 0;
   });
+}
+
+// ---------------------------------------------------------------------------
+// Elements, for the C API
+
+namespace {
+
+// A lower bound on log2(1 - x^2 - y^2) for a point of the open unit disk.
+double log2_disk_gap(double x, double y) {
+  // Away from the circle the double value is within 2^-30 of its size.
+  const double gap = 1.0 - (x * x + y * y);
+  if (gap > 0x1p-20) return std::log2(gap) - 0x1p-20;
+  using boost::multiprecision::mpq_rational;
+  const mpq_rational qx(x), qy(y);
+  const mpq_rational exact = 1 - qx * qx - qy * qy;
+  // The numerator is at least 2^msb, the denominator below 2^(msb + 1).
+  return double(boost::multiprecision::msb(numerator(exact))) -
+         double(boost::multiprecision::msb(denominator(exact))) - 1.0;
+}
+
+std::string too_long(std::size_t m) {
+  return "the Dehn-reduced word has " + std::to_string(m) + " letters and is too long for the built-in precision";
+}
+
+const char kOverflow[] = "the matrix entries exceed the double range";
+
+// a and b within 2^-72 of |a| + |b| <= 2 |a| (and |b| >= sinh of the inradius
+// of F_g > 2 for an element other than the identity): each Lorentz entry,
+// quadratic in them, within 2^-66 L_00 as in accurate_matrices.
+constexpr double kElementTarget = 72;
+
+// The rungs of the element products: the ladder's, and 800 digits, enough
+// for the a posteriori bound of any product that fits in double (below).
+constexpr unsigned kElementDigits10[] = {40, 160, 640, 800, 2560};
+
+template <class F>
+auto with_element_rung(std::size_t rung, F &&f) {
+  switch (rung) {
+    case 0: return f(exact::mp_real<kElementDigits10[0]>());
+    case 1: return f(exact::mp_real<kElementDigits10[1]>());
+    case 2: return f(exact::mp_real<kElementDigits10[2]>());
+    case 3: return f(exact::mp_real<kElementDigits10[3]>());
+    default: return f(exact::mp_real<kElementDigits10[4]>());
+  }
+}
+
+// |a| + |b| rounded up, in long double: its exponent range (2^16384) holds
+// every product these bounds can certify.
+template <class T>
+long double norm_of(const Moebius<T> &m) {
+  const auto ld = [](const T &x) { return x.template convert_to<long double>(); };
+  // The conversions and the hypot are within a few 2^-64.
+  return (std::hypot(ld(m.a.re), ld(m.a.im)) + std::hypot(ld(m.b.re), ld(m.b.im))) * (1 + 0x1p-56L);
+}
+
+// The error bound of a product P^_k = P^_(k-1) g^_k computed letter by letter
+// with unit roundoff at most eps = 2^-bits; operator norms, |P| = |a| + |b|.
+//
+// Each step has |P^_k - P^_(k-1) g_k| <= l_k = 128 eps L |P^_(k-1)| (L >= |g_k|;
+// g^_k within 46 eps A of g_k, see moebius_precision_bits, the product within
+// 8.6 eps |P^| |g^|; 128 leaves room for this bookkeeping's own rounding).
+// The error e_k of P^_k is the sum over j <= k of those local errors times
+// g_(j+1) ... g_k, bounded two ways, the smaller kept:
+//   a priori: e_k <= L e_(k-1) + l_k, which grows like L^k;
+//   through the path: g_(j+1) ... g_k = P_j^-1 P_k, so the factor is at most
+//   |P_j| |P_k| (|X^-1| = |X| in SU(1,1)), with |P_j| <= |P^_j| + e_j and
+//   |P_k| <= L (|P^_(k-1)| + e_(k-1)).
+// The second costs about 2 log2 max |P_j| bits, the first m log2 L: for a
+// long reduced word whose product is moderate (chains of half relators at
+// large genus grow a tenth of a bit a letter) the second is far smaller.
+class ProductBound {
+ public:
+  ProductBound(const Presentation &p, double bits) {
+    const long double A = 1.0L / std::tan(M_PI / (4.0 * p.genus()));
+    L_ = (A + std::sqrt(A * A - 1)) * (1 + 0x1p-30L);
+    local_ = 128 * std::ldexp(1.0L, -int(bits)) * L_;
+  }
+
+  // After a step, with the new product's norm_of.
+  void step(long double next_norm) {
+    const long double l = local_ * norm_;
+    error_ = std::min(L_ * error_ + l, l + L_ * (norm_ + error_) * through_path_);
+    norm_ = next_norm;
+    through_path_ += l * (norm_ + error_);  // sum of l_j (|P^_j| + e_j)
+  }
+
+  bool finite() const { return std::isfinite(norm_) && std::isfinite(through_path_); }
+  // Upper bounds of |P| and of |P^ - P| / |P| (infinite when unknown).
+  long double norm() const { return norm_ + error_; }
+  long double relative_error() const {
+    const long double least = norm_ * (1 - 0x1p-50L) - error_;  // |P| >= |P^| - e
+    return finite() && least > 0 ? error_ / least : std::numeric_limits<long double>::infinity();
+  }
+
+ private:
+  long double L_, local_;
+  long double norm_ = 1, error_ = 0, through_path_ = 0;
+};
+
+// The product of the reduced word on the rung of T, if it is within
+// 2^-target of |P|.
+template <class T>
+bool certified_product(const Presentation &p, const Word &r, double bits, double target, Moebius<T> *out) {
+  const GeneratorSet<T> &gens = shared_generators<T>(p);
+  ProductBound bound(p, bits);
+  Moebius<T> P = Moebius<T>::identity();
+  for (const Letter k : r) {
+    P = P * gens.moebius(k);
+    bound.step(norm_of(P));
+    if (!bound.finite()) return false;
+  }
+  if (!(bound.relative_error() <= std::ldexp(1.0L, -int(std::ceil(target))))) return false;
+  *out = P;
+  return true;
+}
+
+// The reduced word's Moebius product within 2^-target of its norm, handed to
+// f in the number type of the lowest rung that certifies it (first the one
+// of the smaller of the two bounds above, guessed: the a priori one, and
+// twice the bound's log2 |P| with a margin for the path).
+template <class F>
+auto with_certified_product(const Presentation &p, const Word &r, double target, double log2_norm, F &&f) {
+  using Result = decltype(f(Moebius<exact::mp_real<kElementDigits10[0]>>{}));
+  double guess = std::min(moebius_precision_bits(p, r.size(), target),
+                          target + 2.0 * log2_norm + std::log2(double(r.size()) + 1.0) + 48.0);
+  for (std::size_t rung = 0; rung < std::size(kElementDigits10); ++rung) {
+    const double bits = exact::bits_of_digits10(kElementDigits10[rung]);
+    if (bits < guess && rung + 1 < std::size(kElementDigits10)) continue;
+    std::optional<Result> result = with_element_rung(rung, [&](auto zero) -> std::optional<Result> {
+      Moebius<decltype(zero)> P;
+      if (!certified_product(p, r, bits, target, &P)) return std::nullopt;
+      return f(P);
+    });
+    if (result) return *result;
+    guess = 0;  // on to the next rung
+  }
+  throw std::length_error(too_long(r.size()));
+}
+
+// ---- The group in double, for norm_log2_lower_bound ----
+
+constexpr double kUnit = 0x1p-53;  // unit roundoff of double
+
+struct Real2x2 {
+  double m00, m01, m10, m11;
+};
+
+// A factor of the pass: m with norm >= |m|, least <= 1 / |m| (|m x| >= least
+// |x| in SL(2,R)) and eta |c| >= the error of m c computed in double.
+struct Block {
+  Real2x2 m;
+  double norm, least, eta;
+};
+
+// phi(a, b) = [[Re a + Im b, Im a + Re b], [Re b - Im a, Re a - Im b]] is a
+// homomorphism SU(1,1) -> SL(2,R) (conjugation by a multiple of a unitary
+// matrix), so it keeps the operator norm |a| + |b|; real products are
+// cheaper than complex ones.
+template <class T>
+Real2x2 rounded_phi(const Moebius<T> &g) {
+  return {to_double(T(g.a.re + g.b.im)), to_double(T(g.a.im + g.b.re)), to_double(T(g.b.re - g.a.im)),
+          to_double(T(g.a.re - g.b.im))};
+}
+
+Block make_block(const Real2x2 &m, long double norm, double eta_over_norm) {
+  const double upper = double(norm * (1 + 0x1p-40L));
+  return {m, upper, (1.0 / upper) * (1.0 - 0x1p-40), eta_over_norm * upper};
+}
+
+// The generators, the rotations R_y (y pi / 2g about O, so g_y = R_y g_0
+// R_y^-1) and the relator runs from g_0, run(d, l) = g_0 g_d ... g_((l-1) d)
+// for the steps d = 2g + 1 and 2g - 1: the run y, y + d, ... is
+// R_y run(d, l) R_y^-1. The pass takes a run as one factor: around a vertex
+// of the tiling a run first shrinks the tracked vector, then stretches it by
+// up to the run's norm (2^23 at genus 1024), and letter by letter that
+// widens the cone past use. Built at 531 bits, rounded once; once per genus.
+struct DoubleGroup {
+  std::vector<Block> letters;
+  std::vector<double> cos, sin;  // phi(R_y) = [[cos, sin], [-sin, cos]], angle y pi / 4g
+  std::vector<Block> runs[2];    // by length l = 2..2g (0 and 1 unused)
+};
+
+const DoubleGroup &double_group(const Presentation &p) {
+  static std::mutex mutex;
+  static std::map<int, std::unique_ptr<const DoubleGroup>> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto &slot = cache[p.genus()];
+  if (slot) return *slot;
+  using T = exact::mp_real<160>;
+  const double bits = exact::bits_of_digits10(160);
+  const GeneratorSet<T> &gens = shared_generators<T>(p);
+  auto G = std::make_unique<DoubleGroup>();
+  const int n = p.letter_count(), h = p.half_relator();
+  for (Letter k = 0; k < n; ++k) {
+    ProductBound one(p, bits);
+    one.step(norm_of(gens.moebius(k)));
+    // Rounding to double (0.72 u |m|) and the product m c (2.83 u |m| |c|).
+    G->letters.push_back(make_block(rounded_phi(gens.moebius(k)), one.norm(), 8 * kUnit));
+    const T angle = exact::pi<T>() * T(k) / T(n);
+    G->cos.push_back(to_double(T(cos(angle))));
+    G->sin.push_back(to_double(T(sin(angle))));
+  }
+  for (int kind = 0; kind < 2; ++kind) {
+    const int d = kind == 0 ? p.relator_step() : p.inverse_relator_step();
+    ProductBound bound(p, bits);
+    Moebius<T> run = Moebius<T>::identity();
+    G->runs[kind].resize(std::size_t(h) + 1);
+    for (int l = 1; l <= h; ++l) {
+      run = run * gens.moebius(Letter((int64_t(l - 1) * d) % n));
+      bound.step(norm_of(run));
+      // Its own error, the rounding to double, the rotations (u each) and two
+      // products in double before m c: 16 u with room.
+      if (l >= 2)
+        G->runs[kind][std::size_t(l)] =
+            make_block(rounded_phi(run), bound.norm(), double(bound.relative_error()) + 16 * kUnit);
+    }
+  }
+  slot = std::move(G);
+  return *slot;
+}
+
+// R_y m R_y^-1 with R_y = [[c, s], [-s, c]].
+Real2x2 rotated(const Real2x2 &m, double c, double s) {
+  const Real2x2 t{c * m.m00 + s * m.m10, c * m.m01 + s * m.m11, c * m.m10 - s * m.m00, c * m.m11 - s * m.m01};
+  return {t.m00 * c + t.m01 * s, t.m01 * c - t.m00 * s, t.m10 * c + t.m11 * s, t.m11 * c - t.m10 * s};
+}
+
+// Three test vectors carried through the pass, each with its cone.
+class TestVectors {
+ public:
+  TestVectors() {
+    for (int t = 0; t < kTests; ++t) nc_[t] = std::sqrt(c0_[t] * c0_[t] + c1_[t] * c1_[t]);
+  }
+
+  void apply(const Block &B) {
+    const Real2x2 &M = B.m;
+    for (int t = 0; t < kTests; ++t) {
+      const double r0 = M.m00 * c0_[t] + M.m01 * c1_[t], r1 = M.m10 * c0_[t] + M.m11 * c1_[t];
+      // Two-term sums of squares and a square root: norms within 3 u.
+      const double nr = std::sqrt(r0 * r0 + r1 * r1);
+      // The factors 1 - 32u and 1 - 4u absorb the roundings of these lines
+      // (the norm's own margin that of norm * theta).
+      const double q = std::max(nr / nc_[t] * (1.0 - 32.0 * kUnit) - B.eta, B.least);           // <= |M c^|
+      const double growth = std::max((q - B.norm * theta_[t]) * (1.0 - 4.0 * kUnit), B.least);  // <= |M x^|
+      // The rounding turns M c by at most pi/2 eta / q; room for underflow
+      // in a vector kept at |c| >= 2^-200. Any two vectors are within pi of
+      // each other: 3.5 says "no cone".
+      const double drift = 1.6 * B.eta / q + 0x1p-800;
+      theta_[t] = std::min((theta_[t] / (growth * growth) + drift) * (1.0 + 8.0 * kUnit), 3.5);
+      // Rounded down: two roundings of at most u each.
+      mantissa_[t] = mantissa_[t] * growth * (1.0 - 4.0 * kUnit);
+      c0_[t] = r0, c1_[t] = r1, nc_[t] = nr;
+      // Powers of two rescale exactly.
+      if (nr > 0x1p200 || nr < 0x1p-200) {
+        int e;
+        std::frexp(nr, &e);
+        c0_[t] = std::ldexp(r0, -e), c1_[t] = std::ldexp(r1, -e), nc_[t] = std::ldexp(nr, -e);
+      }
+      if (mantissa_[t] > 0x1p500 || mantissa_[t] < 0x1p-500) {
+        int e;
+        mantissa_[t] = std::frexp(mantissa_[t], &e);
+        exponent_[t] += e;
+      }
+    }
+  }
+
+  double log2_bound() const {
+    double best = 0;  // |P| >= 1 in SL(2,R)
+    for (int t = 0; t < kTests; ++t) best = std::max(best, double(exponent_[t]) + std::log2(mantissa_[t]) - 1e-9);
+    return best;
+  }
+
+ private:
+  static constexpr int kTests = 3;
+  // 0, 60 and 120 degrees.
+  double c0_[kTests] = {1.0, 1.0, -1.0}, c1_[kTests] = {0.0, std::sqrt(3.0), std::sqrt(3.0)};
+  double nc_[kTests], theta_[kTests] = {0, 0, 0}, mantissa_[kTests] = {1, 1, 1};
+  long exponent_[kTests] = {0, 0, 0};
+};
+
+}  // namespace
+
+// How the bound is certified. P = M_1 ... M_m in SL(2,R) (phi above; the M_i
+// letters or runs) acts on a test vector v from the right: x_i = M_i x_(i+1),
+// x_(m+1) = v. The pass keeps a double vector c and an angle theta with
+// angle(x_i, c) <= theta, and multiplies lower bounds of |M_i x| / |x| over
+// that cone: |M x^| >= |M c^| - |M| theta (unit vectors), |M c| is the
+// computed product's norm less its rounding (eta |c|), and the cone's image
+// has angle at most theta / min |M x^|^2 (the derivative of the action of
+// SL(2,R) on directions) plus the rounding's angle. The floor 1/|M| is always
+// valid. So the product bounds |P v| / |v| <= |P| with no error left out.
+// While P grows, |M x^| > 1 and the cone stays about as narrow as the
+// rounding, so the bound stays within m 2^-40 of log2 |P v| / |v|; of three
+// test vectors 60 degrees apart one has |P v| >= cos(30 deg) |P| |v|. A test
+// vector that some suffix of the word maps nearly to its contracting
+// direction only gets a weaker bound.
+double norm_log2_lower_bound(const Presentation &p, const Letter *w, std::size_t length) {
+  if (length == 0) return 0;
+  const DoubleGroup &G = double_group(p);
+  const int n = p.letter_count(), h = p.half_relator();
+  const auto step = [n](Letter a, Letter b) { return b >= a ? b - a : b - a + n; };
+  TestVectors tests;
+  for (std::size_t i = length; i > 0;) {
+    // The factor ending at letter i - 1: the relator run there (at most 2g
+    // letters), or the letter alone.
+    std::size_t l = 1;
+    int kind = -1;
+    if (i >= 2) {
+      const int s = step(w[i - 2], w[i - 1]);
+      kind = s == h + 1 ? 0 : s == h - 1 ? 1 : -1;
+      if (kind >= 0)
+        for (l = 2; l < std::size_t(h) && l < i && step(w[i - l - 1], w[i - l]) == s;) ++l;
+    }
+    const std::size_t y = std::size_t(w[i - l]);
+    i -= l;
+    if (kind < 0) {
+      tests.apply(G.letters[y]);
+    } else {
+      Block B = G.runs[kind][l];
+      B.m = rotated(B.m, G.cos[y], G.sin[y]);
+      tests.apply(B);
+    }
+  }
+  return tests.log2_bound();
+}
+
+Moebius<double> element_moebius(const Presentation &p, const Letter *w, std::size_t length) {
+  const Word r = dehn_reduce(p, w, length);
+  if (r.empty()) return Moebius<double>::identity();
+  // |a| >= (|a| + |b|) / 2, and Re a or Im a is at least |a| / sqrt 2: above
+  // 2^1024, which rounds to infinity, once the bound exceeds 1025.5.
+  const double log2_norm = norm_log2_lower_bound(p, r.data(), r.size());
+  if (log2_norm > 1025.5) throw std::domain_error(kOverflow);
+  const Moebius<double> m = with_certified_product(p, r, kElementTarget, log2_norm, [](const auto &f) {
+    return Moebius<double>{{to_double(f.a.re), to_double(f.a.im)}, {to_double(f.b.re), to_double(f.b.im)}};
+  });
+  if (!(std::isfinite(m.a.re) && std::isfinite(m.a.im) && std::isfinite(m.b.re) && std::isfinite(m.b.im)))
+    throw std::domain_error(kOverflow);
+  return m;
+}
+
+Lorentz<double> element_lorentz(const Presentation &p, const Letter *w, std::size_t length) {
+  const Word r = dehn_reduce(p, w, length);
+  if (r.empty()) return Lorentz<double>::identity();
+  // L_00 = |a|^2 + |b|^2 >= (|a| + |b|)^2 / 2: above 2^1024 once the bound
+  // exceeds 512.5.
+  const double log2_norm = norm_log2_lower_bound(p, r.data(), r.size());
+  if (log2_norm > 512.5) throw std::domain_error(kOverflow);
+  const Lorentz<double> L = with_certified_product(p, r, kElementTarget, log2_norm, [](const auto &f) {
+    using T = std::decay_t<decltype(f.a.re)>;
+    const Lorentz<T> exact = Lorentz<T>::from_moebius(f);
+    Lorentz<double> rounded;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) rounded.m[i][j] = to_double(exact.m[i][j]);
+    return rounded;
+  });
+  for (const auto &row : L.m)
+    for (const double entry : row)
+      if (!std::isfinite(entry)) throw std::domain_error(kOverflow);
+  return L;
+}
+
+Complex<double> element_image(const Presentation &p, const Letter *w, std::size_t length, Complex<double> z) {
+  const Word r = dehn_reduce(p, w, length);
+  if (r.empty()) return z;
+  // 1 - |h(z)| <= 2 e^-d(O, h(z)), d(O, h(z)) >= d(O, h(O)) - d(O, z),
+  // d(O, h(O)) = 2 arccosh |a| >= 2 ln |a| >= 2 ln 2^(G - 1) and
+  // d(O, z) <= ln(4 / (1 - |z|^2)): 1 - |h(z)| <= 2^(5 - 2G) / (1 - |z|^2).
+  const double log2_norm = norm_log2_lower_bound(p, r.data(), r.size());
+  const double log2_gap = log2_disk_gap(z.re, z.im);
+  if (5.0 - 2.0 * log2_norm - log2_gap < -kImageMargin)
+    throw std::domain_error("the image lies within 2^-" + std::to_string(kImageMargin) + " of the unit circle");
+  // h(z) = (a z + b) / (conj b z + conj a) and |conj b z + conj a| >=
+  // |a| (1 - |z|) >= (|a| + |b|) (1 - |z|^2) / 4: an error of 2^-t (|a| + |b|)
+  // in a, b and in the arithmetic moves h(z) by at most about 2^(5 - t) / (1 - |z|^2).
+  const double target = kElementTarget + 8.0 - log2_gap;
+  const Complex<double> image = with_certified_product(p, r, target, log2_norm, [&](const auto &f) {
+    using T = std::decay_t<decltype(f.a.re)>;
+    const Complex<T> h = f.apply(Complex<T>{T(z.re), T(z.im)});
+    return Complex<double>{to_double(h.re), to_double(h.im)};
+  });
+  if (!exact::inside_unit_disk(image.re, image.im)) throw std::domain_error("the image rounds to the unit circle");
+  return image;
 }
 
 template <class T>

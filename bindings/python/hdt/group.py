@@ -33,8 +33,11 @@ def word_matrix(genus, word):
     """The SU(1,1) matrix [[a, b], [conj b, conj a]] of the word as the pair
     (a, b) of complex numbers, in double precision.
 
-    The product is taken as written, not reduced first; a matrix and its
-    negative are the same element.
+    The word is shortened with Dehn's algorithm first, which keeps the matrix
+    (any word of the identity gives exactly (1, 0)); the product is computed
+    in multiprecision and rounded once. A matrix and its negative are the
+    same element. Raises :class:`hdt.OutOfDomain` when an entry exceeds the
+    double range (g_0^n at genus 2 from n = 465).
     """
     letters, length = c_word(word)
     re_a, im_a, re_b, im_b = call_doubles(lib.hdt_word_matrix, 4, c_genus(genus), letters, length)
@@ -46,7 +49,9 @@ def word_lorentz(genus, word):
     t^2 - u^2 - v^2 = 1, as a tuple of three rows (t, u, v).
 
     A disk point z = x + iy is the hyperboloid point
-    ((1 + |z|^2), 2x, 2y) / (1 - |z|^2).
+    ((1 + |z|^2), 2x, 2y) / (1 - |z|^2). Dehn's algorithm first, as in
+    :func:`word_matrix`. Raises :class:`hdt.OutOfDomain` when an entry
+    exceeds the double range (g_0^n at genus 2 from n = 233).
     """
     letters, length = c_word(word)
     m = call_doubles(lib.hdt_word_lorentz, 9, c_genus(genus), letters, length)
@@ -56,8 +61,11 @@ def word_lorentz(genus, word):
 def word_apply(genus, word, x, y):
     """The image (x', y') of the disk point (x, y) under the word's element.
 
-    Raises :class:`hdt.OutOfDomain` (a ValueError) when (x, y) is not a finite
-    point of the open unit disk, TypeError when x or y is not a real number.
+    A word of the identity returns (x, y) unchanged. Raises
+    :class:`hdt.OutOfDomain` (a ValueError) when (x, y) is not a finite point
+    of the open unit disk, or when the image, rounded to double, is not in it
+    (images within 2^-100 of the circle may be refused without being
+    computed); TypeError when x or y is not a real number.
     """
     letters, length = c_word(word)
     x, y = c_coordinate(x, "x"), c_coordinate(y, "y")

@@ -116,6 +116,25 @@ def test_lorentz_matrix_acts_like_the_moebius_map(genus):
         assert image == pytest.approx(to_hyperboloid(*hdt.word_apply(genus, word, *z)), rel=1e-9)
 
 
+@pytest.mark.parametrize("genus", GENERA)
+def test_words_of_the_identity_give_it_exactly(genus):
+    for word in (relator(genus), inverse(genus, relator(genus)), [1, 1 + 2 * genus]):
+        assert hdt.word_matrix(genus, word) == (1, 0)
+        assert hdt.word_lorentz(genus, word) == ((1, 0, 0), (0, 1, 0), (0, 0, 1))
+        assert hdt.word_apply(genus, word, 0.0, 0.14) == (0.0, 0.14)
+
+
+def test_results_beyond_double_are_out_of_domain():
+    a, b = hdt.word_matrix(2, [0] * 400)  # cosh and sinh of 400 acosh(cot(pi/8)): 1.7e265
+    assert math.isfinite(a.real) and math.isfinite(b.real) and a.real > 1e265
+    with pytest.raises(hdt.OutOfDomain, match="hdt_word_matrix: the matrix entries exceed the double range"):
+        hdt.word_matrix(2, [0] * 470)
+    with pytest.raises(hdt.OutOfDomain, match="hdt_word_lorentz: the matrix entries exceed the double range"):
+        hdt.word_lorentz(2, [0] * 400)
+    with pytest.raises(hdt.OutOfDomain, match="hdt_word_apply: the image"):
+        hdt.word_apply(2, [0] * 100, 0.1, 0.2)
+
+
 def test_word_apply_accepts_ints_and_floats():
     assert hdt.word_apply(2, [0], 0, 0) == hdt.word_apply(2, [0], 0.0, 0.0)
 
