@@ -1,23 +1,27 @@
 #!/usr/bin/env python3
-"""Writes the seed corpus of fuzz_api (tests/fuzz/corpus/) from readable
-operation lists, in the byte format fuzz_api.c decodes. Re-run after a
-change of that format:
+"""Writes the seed corpora of the fuzz targets from readable lists, in the
+byte formats the targets decode: fuzz_api's (tests/fuzz/corpus/) and
+fuzz_brute_force's (tests/fuzz/corpus-brute-force/). Re-run after a change
+of either format:
 
-    python3 tests/fuzz/make_seeds.py [OUTPUT_DIR]
+    python3 tests/fuzz/make_seeds.py [OUTPUT_DIR]   (OUTPUT_DIR gets both, as
+                                                    corpus/ and corpus-brute-force/)
 
-Each seed is a short program: byte 0 picks the first triangulation's genus
-(2 + b % 5), then one byte per operation kind followed by its arguments.
-The seeds only need to reach the interesting paths quickly; the fuzzer
-mutates them from there. HDT_FUZZ_TRACE=1 build-fuzz/tests/fuzz/fuzz_replay
-SEED prints the C calls a seed makes.
+A fuzz_api seed is a short program: byte 0 picks the first triangulation's
+genus (bytes 0..4 give 2..6), then one byte per operation kind followed by
+its arguments. A fuzz_brute_force seed is a header byte (genus, insertion
+mode, flags) and point records. The seeds only need to reach the
+interesting paths quickly; the fuzzer mutates them from there.
+HDT_FUZZ_TRACE=1 build-fuzz/tests/fuzz/fuzz_api_replay SEED (or
+fuzz_brute_force_replay) prints the C calls a seed makes.
 """
 import os
 import struct
 import sys
 
 # Operation kinds: indices into the ops[] table of fuzz_api.c.
-CREATE, INSERT, INSERT_MANY, REMOVE, REMOVE_DUMMIES, LOCATE, FACES, TRANSLATION, VERTEX, WORDS, NULL = (
-    0, 1, 5, 7, 10, 11, 13, 14, 15, 16, 17)
+CREATE, INSERT, INSERT_MANY, REMOVE, REMOVE_DUMMIES, LOCATE, FACES, TRANSLATION, VERTEX, WORDS, NULL, VERTICES = (
+    0, 1, 5, 7, 10, 11, 13, 14, 15, 16, 17, 18)
 
 
 def u8(b):
@@ -178,6 +182,16 @@ def null():
     return u8(NULL)
 
 
+def vertices(mode, slot=0, null_ids=False, null_xy=False, null_dummy=False, null_count=False):
+    """hdt_vertices with capacity mode (op_vertices: 0 none, 1 V-1, 2 V,
+    3 more, 4 huge) and the NULL arguments asked for."""
+    for b in range(256):
+        if (b % 5 == mode and bool(b & 0x08) == null_ids and bool(b & 0x10) == null_xy
+                and bool(b & 0x20) == null_dummy and bool(b & 0x40) == null_count):
+            return u8(VERTICES) + u8(slot) + u8(b) + (u8(1) if null_count else b"")
+    raise ValueError("no byte for that vertices call")
+
+
 def genus(g):
     return u8(g - 2)
 
@@ -229,8 +243,12 @@ SEEDS = {
     + words(6, [3] * 20, 1, raw(0.5, 0.5), 1 << 31, 999),
     "null-and-bad-create": genus(2) + null() + b"".join(create_bad(i) for i in range(6)),
     "two-triangulations": genus(2) + create(1, 4) + insert(dyadic(0.1, 0.2), slot=1) + insert(dyadic(0.1, 0.2))
-    + insert_many(grid(2), slot=1) + create(0, 5) + insert(polygon_vertex(0), slot=0) + remove_dummies(slot=1)
+    + insert_many(grid(2), slot=1) + insert(polygon_vertex(0), slot=0) + remove_dummies(slot=1)
     + faces(2, slot=1),
+    "recreate": genus(3) + insert(dyadic(0.1, 0.2)) + create(0, 5) + insert(dyadic(0.1, 0.2)) + remove_dummies(),
+    "vertices-list": genus(2) + insert(dyadic(0.1, 0.2)) + insert(on_side(1, 0.5)) + vertices(0) + vertices(1)
+    + vertices(2) + vertices(3, null_xy=True) + vertices(4) + vertices(2, null_ids=True, null_dummy=True)
+    + vertices(2, null_count=True) + remove_dummies() + vertices(2),
     "locate-nasty": genus(2) + locate(polygon_vertex(0)) + locate(on_side(1, 0.5)) + locate(near_circle(7, 0))
     + locate(special(27, 0)) + nearest(polygon_vertex(2, ulps(-1, 1))) + nearest(near_circle(123, 2))
     + locate(tiny(1, 1, 1074), flags=7),
@@ -239,13 +257,116 @@ SEEDS = {
 }
 
 
-def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus")
+# ---- fuzz_brute_force (read_header, read_record) ----
+def bf_header(g, mode=0, drop_dummies=False, compare_early=False):
+    """mode: 0 insert_many, 1 insert, 2 half and half, 3 insert in reverse."""
+    return u8({2: 0, 3: 4, 4: 7}[g] | (mode << 3) | (0x20 if drop_dummies else 0) | (0x40 if compare_early else 0))
+
+
+def bf_spread(radius, angle):
+    """radius, angle in [0, 1): uniform for area in F_g's circumdisk."""
+    return u8(0) + u16(int(radius * 65536)) + u16(int(angle * 65536))
+
+
+def bf_dyadic(x, y):
+    return u8(1) + u8(int(x * 128)) + u8(int(y * 128))
+
+
+def bf_symmetric(x, y, mask=0xFF):
+    """(x, y) under the quarter turns and reflections picked by mask."""
+    return u8(2) + u8(int(x * 128)) + u8(int(y * 128)) + u8(mask)
+
+
+def bf_cocircular(cx, cy, radius_byte, angles):
+    assert 3 <= len(angles) <= 6
+    return u8(3) + u8(int(cx * 256)) + u8(int(cy * 256)) + u8(radius_byte) + u8(len(angles) - 3) + bytes(angles)
+
+
+def bf_on_side(k, t, perturb=NO_PERTURB):
+    return u8(4) + u8(k) + u16(int(t * 65535)) + (perturb if isinstance(perturb, bytes) else u8(perturb))
+
+
+def bf_moved(direction, exponent):
+    """perturb_or_move byte: 2^-(8 + exponent) (exponent 0..4) in direction 0..7 (eighths of a turn)."""
+    assert 0 <= exponent <= 4
+    return u8(0x40 | (exponent << 3) | (direction & 7))
+
+
+def bf_polygon(k, vertex=True, perturb=NO_PERTURB):
+    return u8(5) + u8((k << 1) | int(vertex)) + (perturb if isinstance(perturb, bytes) else u8(perturb))
+
+
+def bf_near_circle(angle16, radius_index, perturb=NO_PERTURB):
+    return u8(6) + u16(angle16) + u8(radius_index) + (perturb if isinstance(perturb, bytes) else u8(perturb))
+
+
+def bf_duplicate(i):
+    return u8(7) + u8(i)
+
+
+def bf_dummy(d, perturb=NO_PERTURB):
+    return u8(8) + u8(d) + (perturb if isinstance(perturb, bytes) else u8(perturb))
+
+
+def bf_close(i, direction, exponent):
+    """Point i moved 2^-(6 + exponent) (exponent 0..6) in direction 0..15 (sixteenths of a turn)."""
+    assert 0 <= exponent <= 6
+    return u8(9) + u8(i) + u8((direction << 4) | exponent)
+
+
+def bf_remove(i):
+    return u8(10) + u8(i)
+
+
+def spread_points(n, salt):
+    return [bf_spread(((i * 0.618034 + salt) % 1), ((i * 0.414214 + 2 * salt) % 1)) for i in range(n)]
+
+
+BF_SEEDS = {
+    "spread-g2": bf_header(2) + b"".join(spread_points(20, 0.1)),
+    "spread-g3-no-dummies": bf_header(3, mode=2, drop_dummies=True) + b"".join(spread_points(22, 0.3)),
+    "spread-g4-one-by-one": bf_header(4, mode=1, drop_dummies=True) + b"".join(spread_points(16, 0.7)),
+    "symmetric-g2": bf_header(2, mode=1, drop_dummies=True) + bf_symmetric(0.25, 0.125) + bf_symmetric(0.5, 0.5, 0x0F)
+    + bf_symmetric(0.375, 0, 0x33) + b"".join(spread_points(4, 0.2)),
+    "symmetric-g3-dummies": bf_header(3) + bf_symmetric(0.3, 0.1) + bf_symmetric(0.2, 0.2, 0x0F),
+    "cocircular-g2": bf_header(2, mode=3, drop_dummies=True) + bf_cocircular(0.1, -0.05, 40, [0, 40, 90, 160, 200, 250])
+    + bf_cocircular(-0.2, 0.2, 120, [10, 70, 130, 190]) + b"".join(spread_points(8, 0.5)),
+    "sides-g2": bf_header(2, mode=2, drop_dummies=True)
+    + b"".join(bf_on_side(k, t) for k in range(4) for t in (0.25, 0.6))
+    + b"".join(bf_on_side(k, t) for k in range(4, 8) for t in (0.2, 0.85))
+    + bf_on_side(1, 0.4, ulps(1, -1)) + b"".join(spread_points(4, 0.9)),
+    "polygon-g3": bf_header(3, mode=1) + bf_polygon(0) + bf_polygon(0, vertex=False) + bf_polygon(1, vertex=False)
+    + bf_polygon(2, vertex=False, perturb=ulps(-1, 1)) + b"".join(spread_points(10, 0.4)),
+    "near-polygon-g2": bf_header(2, mode=2, drop_dummies=True) + bf_polygon(0, perturb=bf_moved(1, 4))
+    + bf_polygon(1, vertex=False, perturb=bf_moved(5, 3)) + bf_dummy(0, perturb=bf_moved(2, 3))
+    + bf_dummy(5, perturb=bf_moved(6, 0)) + b"".join(spread_points(10, 0.45)),
+    "near-circle-g2": bf_header(2, mode=1, drop_dummies=True) + bf_near_circle(1000, 4)
+    + b"".join(spread_points(12, 0.6))
+    + bf_near_circle(30000, 0),
+    "duplicates-g2": bf_header(2, mode=0, drop_dummies=True) + b"".join(spread_points(12, 0.8)) + bf_duplicate(0)
+    + bf_duplicate(3) + bf_close(1, 3, 0) + bf_close(2, 9, 5) + bf_close(4, 12, 6),
+    "dummies-g2": bf_header(2, mode=1, drop_dummies=True) + bf_dummy(0) + bf_dummy(3) + bf_dummy(9)
+    + b"".join(spread_points(12, 0.15)),
+    "removals-g3": bf_header(3, mode=2, drop_dummies=True, compare_early=True) + b"".join(spread_points(20, 0.35))
+    + bf_remove(0) + bf_remove(5) + bf_remove(11),
+    "grid-g2": bf_header(2, mode=0, drop_dummies=True) + b"".join(bf_dyadic(x / 8, y / 8) for x in range(-3, 4, 2)
+                                                                     for y in range(-3, 4, 2)),
+}
+
+
+def write(out, seeds):
     os.makedirs(out, exist_ok=True)
-    for name, data in SEEDS.items():
+    for name, data in seeds.items():
         with open(os.path.join(out, name), "wb") as f:
             f.write(data)
-    print(f"{len(SEEDS)} seeds in {out}")
+    print(f"{len(seeds)} seeds in {out}")
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    out = sys.argv[1] if len(sys.argv) > 1 else here
+    write(os.path.join(out, "corpus"), SEEDS)
+    write(os.path.join(out, "corpus-brute-force"), BF_SEEDS)
 
 
 if __name__ == "__main__":
