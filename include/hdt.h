@@ -1,7 +1,7 @@
 /* libhdt: Delaunay triangulations of the symmetric hyperbolic surfaces M_g.
  *
  * The one public header. C99, no C++ type crosses it. Conventions
- * (see README.md and DESIGN.md):
+ * (README.md explains them at length):
  *   - every fallible function returns an hdt_status and writes its results
  *     through pointers; on failure nothing is written to the outputs unless
  *     the function says otherwise;

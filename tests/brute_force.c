@@ -221,7 +221,8 @@ static void brute_corner(int g, uint32_t a, long double ax, long double ay, cons
       const long double rho2 = (ox - ax) * (ox - ax) + (oy - ay) * (oy - ay);
       const long double s2 = ox * ox + oy * oy;
       /* Inside the disk, and hyperbolic diameter < sys/2:
-         4 rho^2 < cos(pi/2g) ((1 - s^2 - rho^2)^2 - 4 s^2 rho^2) (DESIGN.md). */
+         4 rho^2 < cos(pi/2g) ((1 - s^2 - rho^2)^2 - 4 s^2 rho^2) (the
+         circumdiameter bound sys/2 written in the Euclidean centre s and radius rho). */
       const long double w = 1 - s2 - rho2;
       if (w <= 0) continue;
       const long double bracket = w * w - 4 * s2 * rho2;
