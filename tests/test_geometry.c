@@ -429,10 +429,7 @@ START_TEST(v0_dummy_is_the_rounded_vertex) {
 }
 END_TEST
 
-#ifdef HDT_TEST_DUMMY_MIDPOINTS_ROUNDED
-/* Likewise for the dummies m_0 .. m_{2g-1}. To be enabled once the kernel
-   rounds a site's X/Z correctly (Kernel::add_site rounds X and Z to double,
-   then divides: an ulp off for the midpoints, whose Z is sigma). */
+/* Likewise for the dummies m_0 .. m_{2g-1}. */
 START_TEST(midpoint_dummies_are_the_rounded_midpoints) {
   for (int g = 2; g <= 6; ++g) {
     hdt_triangulation *t = NULL;
@@ -448,7 +445,6 @@ START_TEST(midpoint_dummies_are_the_rounded_midpoints) {
   }
 }
 END_TEST
-#endif
 
 int main(void) {
   const TTest *const tests[] = {
@@ -456,9 +452,7 @@ int main(void) {
       lorentz_preserves_the_form,          systole_closed_form,       systole_is_least_translation_length,
       systole_is_correctly_rounded,        polygon_points_are_correctly_rounded,
       polygon_points_keep_the_symmetries,  v0_dummy_is_the_rounded_vertex,
-#ifdef HDT_TEST_DUMMY_MIDPOINTS_ROUNDED
       midpoint_dummies_are_the_rounded_midpoints,
-#endif
   };
   return run_tests("geometry", tests, sizeof tests / sizeof tests[0]);
 }

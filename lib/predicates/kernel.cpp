@@ -116,15 +116,22 @@ const Cyclotomic &Kernel::scale(int letters) {
   return scale_powers_[letters];
 }
 
-int32_t Kernel::add_site(const ExactSite &site, double *x, double *y, const group::Complex<MidReal> *approximation) {
+int32_t Kernel::add_site(const ExactSite &site, double *x, double *y, const group::Complex<MidReal> *approximation,
+                         const group::Complex<double> *rounded) {
   if (field_.sign(site.Z) <= 0) throw std::domain_error("add_site: Z must be positive");
   const FieldElement zz = field_.mul(site.Z, site.Z);
   const FieldElement w = field_.sub(zz, field_.add(field_.mul(site.X, site.X), field_.mul(site.Y, site.Y)));
   if (field_.sign(w) <= 0) throw std::domain_error("add_site: the point is not inside the open unit disk");
-  // Quotients in 132-bit MPFR, then rounded: within u |.| + 2^-120 of exact.
+  // X, Y and Z rounded, then divided: within 3u |.| of exact, and a
+  // correctly rounded value (within u |.|) is no further from these than 4u.
   const double z = field_.approximate(site.Z);
   SiteData data{site, field_.approximate(site.X) / z, field_.approximate(site.Y) / z, 0, {0, 0, 0}, false, {}, {}};
   data.rounding = 4 * kUnit * std::max(std::abs(data.x), std::abs(data.y)) + 0x1p-100;
+  if (rounded) {
+    if (!(std::abs(rounded->re - data.x) <= data.rounding && std::abs(rounded->im - data.y) <= data.rounding))
+      throw std::logic_error("add_site: the given rounding is not this point's");
+    data.x = rounded->re, data.y = rounded->im;
+  }
   // N = (Z^2 + X^2 + Y^2, 2XZ, 2YZ) / w, each part exact before rounding.
   const FieldElement r2 = field_.add(field_.mul(site.X, site.X), field_.mul(site.Y, site.Y));
   const FieldElement two_z = field_.add(site.Z, site.Z);

@@ -181,8 +181,12 @@ class Kernel {
   // to its coordinates rounded to double. Throws std::domain_error unless
   // Z > 0 and the point lies in the open unit disk.
   // approximation (may be null): the point's coordinates within 2^-128,
-  // which lets the second filter stage handle the site.
-  int32_t add_site(const ExactSite &site, double *x, double *y, const group::Complex<MidReal> *approximation = nullptr);
+  // which lets the second filter stage handle the site. rounded (may be
+  // null): the coordinates correctly rounded, when the caller knows them
+  // (the kernel's own rounding can be an ulp off); checked against the
+  // kernel's, used as the site's doubles.
+  int32_t add_site(const ExactSite &site, double *x, double *y, const group::Complex<MidReal> *approximation = nullptr,
+                   const group::Complex<double> *rounded = nullptr);
   TranslatedPoint site_point(int32_t site, TranslationId translation) const;
 
   const FilterStatistics &statistics() const { return statistics_; }

@@ -272,12 +272,16 @@ class DummyBuilder {
 void register_q0_sites(predicates::Kernel &kernel, double *x, double *y) {
   using predicates::MidReal;
   const int g = kernel.presentation().genus();
+  // The sites' doubles are v_0 and m_k correctly rounded, as
+  // hdt_polygon_vertex and hdt_polygon_side_midpoint give them.
   const group::Complex<MidReal> v = surface::polygon_vertex<MidReal>(g, 0);
-  if (kernel.add_site(surface::exact_vertex(kernel.field(), 0), &x[0], &y[0], &v) != 0)
+  const group::Complex<double> v_rounded = surface::vertex(kernel.presentation(), 0);
+  if (kernel.add_site(surface::exact_vertex(kernel.field(), 0), &x[0], &y[0], &v, &v_rounded) != 0)
     throw std::logic_error("Q0 sites: the kernel has sites already");
   for (int k = 0; k < 2 * g; ++k) {
     const group::Complex<MidReal> m = surface::polygon_side_midpoint<MidReal>(g, k);
-    kernel.add_site(surface::exact_side_midpoint(kernel.field(), k), &x[1 + k], &y[1 + k], &m);
+    const group::Complex<double> m_rounded = surface::side_midpoint(kernel.presentation(), k);
+    kernel.add_site(surface::exact_side_midpoint(kernel.field(), k), &x[1 + k], &y[1 + k], &m, &m_rounded);
   }
 }
 
