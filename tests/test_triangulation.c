@@ -992,6 +992,56 @@ static int remove_or_refuse(hdt_triangulation *t, uint32_t v, const char *what, 
 /* hdt_vertices gives, in one call, what hdt_vertex_is_dummy and
  * hdt_vertex_point give per id, for the live ids only; the two-call pattern
  * writes nothing when the buffer is short. */
+/* hdt_vertices keeps what it computed for vertices away from F_g: after
+   removals and new insertions every answer must still be the rounded
+   representative of that vertex's own input point (checked against
+   hdt_point_representative, which needs no handle). */
+START_TEST(vertex_points_stay_true_through_changes) {
+  uint64_t rng = 0xCAC4E;
+  hdt_triangulation *t = create(2);
+  enum { N = 400, BATCH = 200 };
+  double input[2 * N][2];
+  size_t known = 0;
+  for (int round = 0; round < 2; ++round) {
+    double xy[2 * BATCH];
+    uint32_t ids[BATCH];
+    for (int i = 0; i < BATCH; ++i) {
+      const double gap = pow(10.0, -1 - 7 * uniform01(&rng)), a = 2 * PI * uniform01(&rng);
+      xy[2 * i] = (1 - gap) * cos(a), xy[2 * i + 1] = (1 - gap) * sin(a);
+    }
+    ck_assert_int_eq(hdt_insert_many(t, xy, BATCH, ids), HDT_OK);
+    for (int i = 0; i < BATCH; ++i) {
+      ck_assert_uint_lt(ids[i], 2 * N);
+      input[ids[i]][0] = xy[2 * i], input[ids[i]][1] = xy[2 * i + 1];
+      if (ids[i] + 1 > known) known = ids[i] + 1;
+    }
+    for (int k = 0; k < 2; ++k) { /* the second call reads what the first stored */
+      size_t count = hdt_vertex_count(t), got = 0;
+      uint32_t *vid = malloc(count * sizeof *vid);
+      double *points = malloc(2 * count * sizeof *points);
+      uint8_t *dummy = malloc(count);
+      ck_assert(vid && points && dummy);
+      ck_assert_int_eq(hdt_vertices(t, vid, points, dummy, count, &got), HDT_OK);
+      for (size_t i = 0; i < got; ++i) {
+        if (dummy[i]) continue;
+        double rx, ry;
+        size_t len = 0;
+        ck_assert_int_eq(hdt_point_representative(2, input[vid[i]][0], input[vid[i]][1], &rx, &ry, NULL, 0, &len),
+                         HDT_OK);
+        expect(hypot(points[2 * i] - rx, points[2 * i + 1] - ry) <= 1e-15,
+               "round %d, call %d: vertex %u at (%.17g, %.17g), its representative (%.17g, %.17g)", round, k, vid[i],
+               points[2 * i], points[2 * i + 1], rx, ry);
+      }
+      free(vid), free(points), free(dummy);
+    }
+    /* Remove a quarter of the user vertices: their ids are not reused. */
+    for (int k = 0; k < BATCH / 4; ++k) hdt_remove_vertex(t, (uint32_t)rng_below(&rng, (int)known));
+  }
+  expect_valid(t, "after the changes");
+  hdt_destroy(t);
+}
+END_TEST
+
 START_TEST(vertices_in_one_call) {
   uint64_t rng = 31;
   hdt_triangulation *t = create(3);
@@ -1280,6 +1330,7 @@ int main(void) {
       dummy_removal_statistics,
       vertex_removal,
       vertices_in_one_call,
+      vertex_points_stay_true_through_changes,
       locate_and_nearest_vertex,
   };
   return run_tests("triangulation", tests, sizeof tests / sizeof tests[0]);

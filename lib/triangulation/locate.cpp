@@ -1,6 +1,7 @@
 // Point location (a visibility walk through translated neighbours), the star
 // of a vertex, and the nearest vertex.
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "group/word_matrix.hpp"
@@ -124,8 +125,11 @@ void Triangulation::vertex_point(uint32_t v, double *x, double *y) {
     *x = u.x, *y = u.y;
     return;
   }
+  if (representatives_.size() <= v)
+    representatives_.resize(vertices_.size(), {std::numeric_limits<double>::quiet_NaN(), 0.0});
+  group::Complex<double> &z = representatives_[v];
   // In multiprecision: near the unit circle a double Moebius map loses digits.
-  const auto z = group::accurate_image(kernel_->presentation(), kernel_->table().word(u.home), {u.x, u.y});
+  if (std::isnan(z.re)) z = group::accurate_image(kernel_->presentation(), kernel_->table().word(u.home), {u.x, u.y});
   *x = z.re, *y = z.im;
 }
 

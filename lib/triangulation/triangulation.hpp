@@ -69,7 +69,8 @@ class Triangulation {
     return {u.x, u.y, t, site_of(v)};
   }
   TranslatedPoint corner(const Face &f, int i) const { return point(f.v[i], f.t[i]); }
-  // The representative of v in F_g, rounded.
+  // The representative of v in F_g, rounded. A vertex away from F_g pays
+  // a multiprecision image once; later calls read it from a cache.
   void vertex_point(uint32_t v, double *x, double *y);
 
  private:
@@ -163,6 +164,11 @@ class Triangulation {
   int genus_;
   std::unique_ptr<Kernel> kernel_;
   std::vector<Vertex> vertices_;
+  // vertex_point's results for vertices with home != 0, by id, filled on
+  // first query (NaN: not computed yet). A vertex's point and home never
+  // change and ids are not reused, so entries stay true; it grows with the
+  // ids lazily.
+  std::vector<group::Complex<double>> representatives_;
   std::vector<bool> dummy_;  // per vertex
   std::vector<Face> faces_;
   std::size_t live_vertices_ = 0, dummies_ = 0;
