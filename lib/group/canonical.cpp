@@ -316,11 +316,6 @@ std::size_t canonical_max_length(const Presentation &p) {
   return m > 0 ? std::size_t(m) : 0;
 }
 
-bool shortlex_less(const Word &a, const Word &b) {
-  if (a.size() != b.size()) return a.size() < b.size();
-  return a < b;
-}
-
 Word canonical_word(const Presentation &p, const Letter *input, std::size_t length) {
   p.check_word(input, length);
   Word w = dehn_reduce(p, input, length);

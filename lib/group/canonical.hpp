@@ -26,7 +26,4 @@ std::size_t canonical_max_length(const Presentation &p);
 Word canonical_word(const Presentation &p, const Letter *w, std::size_t length);
 inline Word canonical_word(const Presentation &p, const Word &w) { return canonical_word(p, w.data(), w.size()); }
 
-// Shortlex order: shorter first, then lexicographic.
-bool shortlex_less(const Word &a, const Word &b);
-
 }  // namespace hdt::group

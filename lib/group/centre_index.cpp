@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "group/generators.hpp"
+
 namespace hdt::group {
 
 namespace {
@@ -14,7 +16,7 @@ constexpr double kMaxCell = 0x1p30;
 CentreIndex::CentreIndex(const Presentation &p) {
   // K = 2 sqrt(A^2 - 1), rounded down with room for the few roundings of
   // cot and sqrt (a few u, against the 1e-9 taken off).
-  const double A = 1 / std::tan(M_PI / (4.0 * p.genus()));
+  const double A = half_trace<double>(p.genus());
   const double K = 2 * std::sqrt(A * A - 1) * (1 - 1e-9);
   cell_ = K / 2;
   max_error_ = K / 16;

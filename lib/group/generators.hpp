@@ -16,14 +16,22 @@
 
 namespace hdt::group {
 
+// A = cot(pi/4g), the diagonal entry of every g_k: cosh of half a
+// generator's translation length. Every formula in the library that needs
+// it calls this (in double: 1 / tan(M_PI / 4g), a few ulps off).
+template <class T>
+T half_trace(int genus) {
+  using std::tan;
+  return T(1) / tan(exact::pi<T>() / T(4 * genus));
+}
+
 template <class T>
 Moebius<T> generator(const Presentation &p, Letter k) {
   using std::cos;
   using std::sin;
   using std::sqrt;
-  using std::tan;
   const T pi = exact::pi<T>();
-  const T A = T(1) / tan(pi / T(4 * p.genus()));
+  const T A = half_trace<T>(p.genus());
   const T modulus = sqrt(A * A - T(1));
   const T angle = pi * T(k) / T(2 * p.genus());
   return Moebius<T>{{A, T(0)}, {modulus * cos(angle), modulus * sin(angle)}};

@@ -31,7 +31,6 @@ class TranslationTable {
   const Presentation &presentation() const { return presentation_; }
   std::size_t size() const { return words_.size(); }
   std::size_t neighbour_count() const { return neighbour_count_; }
-  bool is_neighbour(TranslationId id) const { return id >= 0 && std::size_t(id) < neighbour_count_; }
 
   // The id of a word already known to be canonical, or -1 when the table
   // has not met it (no arithmetic).

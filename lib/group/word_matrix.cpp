@@ -23,7 +23,7 @@
 namespace hdt::group {
 
 double word_precision_bits(const Presentation &p, std::size_t m) {
-  const double A = 1.0 / std::tan(M_PI / (4.0 * p.genus()));
+  const double A = half_trace<double>(p.genus());
   return (std::log2(6.0 * A * A) + 1.0) * double(m) + 2.0 * std::log2(double(m) + 2.0);
 }
 
@@ -84,7 +84,7 @@ double moebius_precision_bits(const Presentation &p, std::size_t m, double targe
   // <= (4 sqrt2 E + 8 eps) L_00 (L_00 = |a|^2 + |b|^2 >= 1). With
   // p >= target + 8 + log2(m + 1) + m log2(2A):
   // eps (182 m (2A)^m + 8) <= 2^-target L_00 (and E <= 2^-target).
-  const double A = 1 / std::tan(M_PI / (4.0 * p.genus()));
+  const double A = half_trace<double>(p.genus());
   return target + 8 + std::log2(double(m) + 1) + double(m) * std::log2(2 * A * (1 + 1e-9));
 }
 
@@ -171,7 +171,7 @@ long double norm_of(const Moebius<T> &m) {
 class ProductBound {
  public:
   ProductBound(const Presentation &p, double bits) {
-    const long double A = 1.0L / std::tan(M_PI / (4.0 * p.genus()));
+    const long double A = half_trace<double>(p.genus());
     L_ = (A + std::sqrt(A * A - 1)) * (1 + 0x1p-30L);
     local_ = 128 * std::ldexp(1.0L, -int(bits)) * L_;
   }

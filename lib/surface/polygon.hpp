@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "exact/multiprecision.hpp"
+#include "group/generators.hpp"
 #include "group/moebius.hpp"
 #include "group/presentation.hpp"
 
@@ -81,7 +82,7 @@ Complex<T> polygon_side_midpoint(int genus, int k) {
   const int n = 4 * genus;
   k = ((k % n) + n) % n;
   const T pi = exact::pi<T>();
-  const T A = T(1) / tan(pi / T(4 * genus));
+  const T A = group::half_trace<T>(genus);
   const T radius = sqrt((A - T(1)) / (A + T(1)));
   const T angle = pi * T(k) / T(2 * genus);
   return {radius * cos(angle), radius * sin(angle)};

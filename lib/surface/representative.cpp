@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "exact/unit_disk.hpp"
+#include "group/generators.hpp"
 
 namespace hdt::surface {
 
@@ -27,8 +28,7 @@ Representative representative(predicates::Kernel &kernel, double x, double y) {
   // where no side test is needed. The circle's Euclidean radius r has
   // r^2 = (c - 1) / (c + 1), c = cot(pi / 4g); shrunk by 1e-9 it bounds
   // the few roundings here and in x^2 + y^2 with room to spare.
-  const int n = kernel.presentation().letter_count();
-  const double c = 1 / std::tan(M_PI / n);
+  const double c = group::half_trace<double>(kernel.presentation().genus());
   if (x * x + y * y < (c - 1) / (c + 1) * (1 - 1e-9)) return {0, Representative::interior, 0};
   // Outside it, only the sides near the point's direction can hold it or
   // have it beyond them (one or two at large genus instead of 4g).
