@@ -310,6 +310,41 @@ HDT_API hdt_status hdt_nearest_vertex(const hdt_triangulation *t, double x, doub
    naming the broken invariant. */
 HDT_API hdt_status hdt_validate(const hdt_triangulation *t) HDT_NOEXCEPT;
 
+/* ---- Pictures ---- */
+
+#define HDT_SVG_NEIGHBOURS 1u    /* also the 4g copies of F_g across its sides, and the faces in them, lighter */
+#define HDT_SVG_HIDE_DUMMIES 2u  /* do not mark the dummy vertices (the faces around them are drawn either way) */
+/* Largest picture width hdt_svg accepts, in pixels. */
+#define HDT_SVG_SIZE_MAX 100000.0
+
+/* The triangulation drawn in the Poincare disk, as the text of an SVG
+   document (UTF-8; symbol version HDT_0.3). The picture shows M_g as F_g
+   with its sides paired: every copy of a face that meets F_g, with
+   geodesic edges, cut at F_g's sides, so that F_g is tiled exactly; F_g
+   filled lightly and outlined; user vertices dark dots, dummy vertices
+   larger red ones (a vertex on F_g's boundary gets a dot at each of its
+   places there: 2 on a side, 4g at the corners); below a two-line caption.
+   Coordinates are rounded to 0.01 px. The triangulation is not changed.
+   size: the width in pixels, finite, > 0 and <= HDT_SVG_SIZE_MAX (the
+   height adds a caption band of 0.07 size; hdt-triangulate uses 800).
+   title: the caption's first line, plain UTF-8 text (markup is escaped;
+   control characters and bytes that are not UTF-8 show as '?'); NULL for
+   "Delaunay triangulation of N points on M_g" (N user vertices), or, with
+   no user vertex, "The dummy point set of M_g and its Delaunay
+   triangulation" (", before any insertion," after M_g while no vertex was
+   ever inserted or removed). flags: HDT_SVG_* bits; others are HDT_EINVAL.
+   Two-call pattern as in hdt_faces, in bytes: *length receives the length
+   of the text without its terminating NUL; capacity 0 asks for it (text
+   may then be NULL); HDT_EBUFS, with *length set and nothing written, when
+   0 < capacity < *length + 1; otherwise the text and a NUL are written.
+   Each call draws the whole picture. HDT_EINVAL (nothing written, *length
+   included) for t or length NULL, a bad size or flags, text NULL with
+   capacity > 0; HDT_ENOMEM when memory runs out. Time: faces x (4g-1)^2
+   (each face's copies under the neighbour set N are tried), 4g + 1 times
+   that with HDT_SVG_NEIGHBOURS. */
+HDT_API hdt_status hdt_svg(const hdt_triangulation *t, double size, const char *title, unsigned flags,
+                           char *text, size_t capacity, size_t *length) HDT_NOEXCEPT;
+
 #ifdef __cplusplus
 }
 #endif

@@ -9,8 +9,9 @@
  *
  * This file: the options and the run. point_reader.c parses the input
  * (decimal_comma.c recognises "0,25" for its errors), random_points.c
- * samples, snapshot.c fetches the triangulation, face_writer.c and
- * svg_picture.c write it, output_file.c makes the writes all-or-nothing.
+ * samples, snapshot.c fetches the triangulation, face_writer.c writes it,
+ * libhdt's hdt_svg draws the picture, output_file.c makes the writes
+ * all-or-nothing.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -20,7 +21,6 @@
 #include "point_reader.h"
 #include "random_points.h"
 #include "snapshot.h"
-#include "svg_picture.h"
 
 #include <hdt.h>
 
@@ -37,6 +37,7 @@
 #define MAX_RANDOM_POINTS 100000000ULL
 #define MAX_RANDOM_POINTS_SHOWN "10^8"
 #define MAX_REPORTED_LINES 20
+#define PICTURE_SIZE 800.0 /* the SVG's width in pixels */
 
 static void usage(FILE *f) {
   fprintf(f,
@@ -326,6 +327,35 @@ static void picture_title(const options *o, const counts *c, char *title, size_t
              o->genus);
 }
 
+/* The picture, drawn by libhdt, written to f. 0 on a failure (reported);
+   the stream's error state is left for the caller to check. */
+static int write_picture(FILE *f, const hdt_triangulation *t, const char *title, int neighbours) {
+  const unsigned flags = neighbours ? HDT_SVG_NEIGHBOURS : 0u;
+  /* A guess at the size (about 200 bytes a face, in F_g and in each tile),
+     so that one call usually does (each call draws the whole picture); the
+     exact size when it is too small. */
+  const size_t faces = hdt_face_count(t), copies = neighbours ? 4 * (size_t)hdt_genus(t) + 1 : 1;
+  size_t capacity = 0, length = 0;
+  if (faces < SIZE_MAX / 1024 / copies) capacity = 4096 + 256 * copies * faces + 64 * hdt_vertex_count(t);
+  char *text = capacity ? cli_alloc(capacity, 1) : NULL;
+  if (capacity && !text) return 0;
+  hdt_status status = hdt_svg(t, PICTURE_SIZE, title, flags, text, capacity, &length);
+  if (status == HDT_EBUFS || (status == HDT_OK && capacity == 0)) {
+    free(text);
+    capacity = length + 1;
+    text = cli_alloc(capacity, 1);
+    if (!text) return 0;
+    status = hdt_svg(t, PICTURE_SIZE, title, flags, text, capacity, &length);
+  }
+  if (!cli_check(status, "hdt_svg")) {
+    free(text);
+    return 0;
+  }
+  fwrite(text, 1, length, f);
+  free(text);
+  return 1;
+}
+
 static void print_stats(const options *o, const snapshot *s, const counts *c, const timings *t) {
   const size_t V = s->vertex_count, F = s->face_count, E = 3 * F / 2;
   const long euler = (long)V - (long)E + (long)F;
@@ -413,8 +443,7 @@ static int run(const options *o) {
   if (o->svg) {
     char title[256];
     picture_title(o, &c, title, sizeof title);
-    const svg_options picture = {title, o->neighbours};
-    if (!svg_picture_write(svg.f, &s, &picture)) goto done;
+    if (!write_picture(svg.f, t, title, o->neighbours)) goto done;
   }
   /* Everything written and checked before anything is put in place. */
   if (!output_finish(&out) || (o->svg && !output_finish(&svg))) goto done;

@@ -17,7 +17,6 @@ void snapshot_free(snapshot *s) {
   free(s->translation_ids);
   free(s->word_start);
   free(s->word_letters);
-  free(s->matrices);
   free(s->slot);
   memset(s, 0, sizeof *s);
 }
@@ -71,7 +70,7 @@ static int take_faces(const hdt_triangulation *t, snapshot *s) {
   return 1;
 }
 
-/* The words and matrices of the translation ids in use (id 0, the identity,
+/* The words of the translation ids in use (id 0, the identity,
    always: the outputs list it even for a triangulation without faces). */
 static int take_translations(const hdt_triangulation *t, snapshot *s) {
   int32_t max = 0;
@@ -90,8 +89,7 @@ static int take_translations(const hdt_triangulation *t, snapshot *s) {
   s->translation_count = count;
   s->translation_ids = cli_alloc(count, sizeof *s->translation_ids);
   s->word_start = cli_alloc(count + 1, sizeof *s->word_start);
-  s->matrices = cli_alloc(count, sizeof *s->matrices);
-  if (!s->translation_ids || !s->word_start || !s->matrices) return 0;
+  if (!s->translation_ids || !s->word_start) return 0;
 
   size_t letters = 0, capacity = 0;
   for (size_t id = 0; id <= (size_t)max; ++id) {
@@ -99,7 +97,6 @@ static int take_translations(const hdt_triangulation *t, snapshot *s) {
     const size_t i = s->slot[id];
     s->translation_ids[i] = (int32_t)id;
     s->word_start[i] = letters;
-    if (!cli_check(hdt_translation_matrix(t, (int32_t)id, s->matrices[i]), "hdt_translation_matrix")) return 0;
     size_t length = 0;
     if (!cli_check(hdt_translation_word(t, (int32_t)id, NULL, 0, &length), "hdt_translation_word")) return 0;
     if (letters + length > capacity) {
@@ -126,26 +123,4 @@ int snapshot_take(const hdt_triangulation *t, snapshot *s) {
   if (take_vertices(t, s) && take_faces(t, s) && take_translations(t, s)) return 1;
   snapshot_free(s);
   return 0;
-}
-
-const double *snapshot_matrix(const snapshot *s, int32_t id) { return s->matrices[s->slot[id]]; }
-
-void moebius_apply(const double m[4], double x, double y, double *ox, double *oy) {
-  const double ar = m[0], ai = m[1], br = m[2], bi = m[3];
-  const double nr = ar * x - ai * y + br, ni = ar * y + ai * x + bi; /* a z + b */
-  const double dr = br * x + bi * y + ar, di = br * y - bi * x - ai; /* conj(b) z + conj(a) */
-  const double d2 = dr * dr + di * di;
-  *ox = (nr * dr + ni * di) / d2;
-  *oy = (ni * dr - nr * di) / d2;
-}
-
-void snapshot_corner(const snapshot *s, size_t f, int c, double *x, double *y) {
-  const uint32_t v = s->face_vertices[3 * f + (size_t)c];
-  const int32_t id = s->face_translations[3 * f + (size_t)c];
-  if (id == 0) {
-    *x = s->x[v];
-    *y = s->y[v];
-  } else {
-    moebius_apply(snapshot_matrix(s, id), s->x[v], s->y[v], x, y);
-  }
 }

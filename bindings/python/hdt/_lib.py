@@ -56,6 +56,8 @@ _uint32_p = ctypes.POINTER(ctypes.c_uint32)
 _int32 = ctypes.c_int32
 _int32_p = ctypes.POINTER(ctypes.c_int32)
 _uint8_p = ctypes.POINTER(ctypes.c_uint8)
+_unsigned = ctypes.c_uint
+_char_p = ctypes.POINTER(ctypes.c_char)  # an output buffer of bytes
 
 #: Every function of include/hdt.h: name -> (restype, argtypes).
 PROTOTYPES = {
@@ -94,6 +96,7 @@ PROTOTYPES = {
     "hdt_locate": (_status, (_handle, _double, _double, _size_p, _int32_p)),
     "hdt_nearest_vertex": (_status, (_handle, _double, _double, _uint32_p)),
     "hdt_validate": (_status, (_handle,)),
+    "hdt_svg": (_status, (_handle, _double, _text, _unsigned, _char_p, _size, _size_p)),
 }
 
 

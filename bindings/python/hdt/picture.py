@@ -1,38 +1,69 @@
 """Pictures of a triangulation in the Poincare disk: SVG text, or matplotlib.
 
-Each face is drawn once, as its canonical copy: corner c of face i is the
-representative of vertex ``faces().vertices[i][c]`` moved by the Moebius map
-of ``faces().translations[i][c]``. Edges are hyperbolic geodesics: arcs of
-circles orthogonal to the unit circle, or segments through the origin. The
-fundamental polygon F_g is filled lightly and outlined; user vertices are
-dark dots, dummy vertices larger red ones. Optionally (neighbours=True) the
-copies of F_g and of the faces under the 4g generators g_k are drawn too,
-lighter.
+The SVG picture is drawn by libhdt itself (``hdt_svg``, the code the
+command-line tool hdt-triangulate uses too): :func:`svg` is
+:meth:`hdt.Triangulation.to_svg`, and needs nothing beyond the standard
+library.
 
-:func:`svg` needs nothing beyond the standard library; :func:`plot` needs
-matplotlib. Points are complex numbers x + iy throughout this module.
+Both pictures show M_g as the fundamental polygon F_g with its sides paired:
+every copy h(T) of a face T that meets F_g (h in the neighbour set N), drawn
+with geodesic edges and cut at F_g's sides, so that F_g is tiled exactly and
+an edge leaving through one side comes back through the paired one. F_g is
+filled lightly and outlined; user vertices are dark dots, dummy vertices
+larger red ones, with a dot at each place a vertex has in the closed F_g (a
+vertex on a side also on the paired side, one at the corner v_0 at every
+corner). Optionally (neighbours=True) the 4g tiles g_k(F_g) across the sides
+are drawn too, lighter, each with the triangulation cut at it.
+
+:func:`plot` (matplotlib) computes the same pieces as the library, with the
+same double arithmetic, and cuts them with a matplotlib clip path. Points
+are complex numbers x + iy in :func:`moebius` and the geodesic helpers;
+:class:`Scene` keeps real (x, y) pairs, as the library does.
 """
 
 import cmath
 import math
-from xml.sax.saxutils import escape
 
 from ._arrays import as_lists
-from .group import word_matrix
-from .surface import polygon_vertex
+from .group import neighbour_words, word_matrix
+from .surface import polygon_side_midpoint, polygon_vertex
 
-# Colours of the C demo (examples/triangulate_demo.c), so both pictures match.
+# The library's colours (lib/picture/svg.cpp).
 DISK_FILL, DISK_EDGE = "#f4f6fb", "#333333"
 POLYGON_FILL, POLYGON_EDGE = "#ffd98a", "#c05a00"
-FACE_EDGE, NEIGHBOUR_FACE_EDGE, NEIGHBOUR_POLYGON_EDGE = "#1f2a44", "#9aa8c8", "#e0b070"
+FACE_EDGE, NEIGHBOUR_FACE_EDGE, NEIGHBOUR_POLYGON_EDGE = "#1f2a44", "#8a9ac0", "#e0b070"
 USER_VERTEX, DUMMY_VERTEX = "#1f2a44", "#d62728"
 
+
+def svg(triangulation, *, size=800, dummies=True, neighbours=False, title=None):
+    """The picture of the triangulation as the text of an SVG document, drawn
+    by libhdt: the same as ``triangulation.to_svg(...)`` (see there)."""
+    return triangulation.to_svg(size=size, dummies=dummies, neighbours=neighbours, title=title)
+
+
+# ---- Geometry ----
 
 def moebius(matrix, z):
     """The image of the disk point z (complex) under the SU(1,1) matrix
     (a, b): (a z + b) / (conj(b) z + conj(a))."""
     a, b = matrix
     return (a * z + b) / (b.conjugate() * z + a.conjugate())
+
+
+def _real_matrix(matrix):
+    """(a, b) as the library's (Re a, Im a, Re b, Im b)."""
+    a, b = matrix
+    return (a.real, a.imag, b.real, b.imag)
+
+
+def _apply(m, x, y):
+    """The library's Moebius map on (x, y), operation for operation (so the
+    same doubles): m = (Re a, Im a, Re b, Im b)."""
+    ar, ai, br, bi = m
+    nr, ni = ar * x - ai * y + br, ar * y + ai * x + bi
+    dr, di = br * x + bi * y + ar, br * y - bi * x - ai
+    d2 = dr * dr + di * di
+    return (nr * dr + ni * di) / d2, (ni * dr - nr * di) / d2
 
 
 def geodesic(p, q):
@@ -43,11 +74,10 @@ def geodesic(p, q):
     the centre when the flag is true (the arc is always under a half circle).
     """
     cross = p.real * q.imag - p.imag * q.real
-    scale = (1 + abs(p) ** 2) * (1 + abs(q) ** 2)
-    if abs(cross) <= 1e-9 * scale:
+    bp, bq = (1 + abs(p) ** 2) / 2, (1 + abs(q) ** 2) / 2
+    if abs(cross) <= 1e-9 * bp * bq:
         return None
     # The centre c solves c.p = (1 + |p|^2) / 2 and c.q = (1 + |q|^2) / 2.
-    bp, bq = (1 + abs(p) ** 2) / 2, (1 + abs(q) ** 2) / 2
     centre = complex((bp * q.imag - bq * p.imag) / cross, (p.real * bq - q.real * bp) / cross)
     radius = math.sqrt(max(abs(centre) ** 2 - 1, 0.0))
     u, v = p - centre, q - centre
@@ -71,8 +101,8 @@ def geodesic_points(p, q, step=0.025):
 
 
 def geodesic_polygon_points(corners, step=0.025):
-    """The closed geodesic polygon through the corners as a list of points,
-    the first corner first and last."""
+    """The closed geodesic polygon through the corners (complex) as a list
+    of points, the first corner first and last."""
     points = [corners[0]]
     for k, corner in enumerate(corners):
         points.extend(geodesic_points(corner, corners[(k + 1) % len(corners)], step))
@@ -81,172 +111,131 @@ def geodesic_polygon_points(corners, step=0.025):
 
 class Scene:
     """What a picture shows, read from a triangulation in one go (under its
-    lock, so a consistent state): the genus, the corners of F_g, the
-    canonical copy of every face (3 complex corners), the user and dummy
-    vertices' representatives, and the generators' matrices (for the
-    neighbouring copies)."""
+    lock, so a consistent state), and the pieces the library draws: the
+    canonical copies of the faces (3 (x, y) corners each), the vertices'
+    representatives, F_g's corners and sides' circles, the generators and
+    the neighbour set N as real matrices (Re a, Im a, Re b, Im b)."""
+
+    #: A vertex closer than this (in power) to a side's circle is on it.
+    BOUNDARY = 1e-9
 
     def __init__(self, triangulation):
         with triangulation._lock:
             ids, points, dummy = (as_lists(value) for value in triangulation.vertices())
             face_vertices, face_translations = (as_lists(value) for value in triangulation.faces())
             matrices = {}
-            for translation in {t for row in face_translations for t in row}:
-                matrices[translation] = triangulation.translation_matrix(translation)
+            for translation in {t for row in face_translations for t in row} - {0}:
+                matrices[translation] = _real_matrix(triangulation.translation_matrix(translation))
             counts = (triangulation.vertex_count, triangulation.dummy_count, triangulation.face_count)
         self.genus = genus = triangulation.genus
         self.vertex_count, self.dummy_count, self.face_count = counts
-        point_of = {vertex: complex(x, y) for vertex, (x, y) in zip(ids, points)}
-        #: The canonical copy of each face: three complex corners.
+        point_of = {vertex: (x, y) for vertex, (x, y) in zip(ids, points)}
+        #: The canonical copy of each face: three (x, y) corners.
         self.faces = [
-            tuple(point_of[v] if t == 0 else moebius(matrices[t], point_of[v]) for v, t in zip(row, translations))
+            tuple(point_of[v] if t == 0 else _apply(matrices[t], *point_of[v]) for v, t in zip(row, translations))
             for row, translations in zip(face_vertices, face_translations)
         ]
-        #: The representatives of the user vertices and of the dummy vertices.
+        #: The representatives of the user vertices and of the dummy vertices, by id.
         self.user_points = [point_of[v] for v, d in zip(ids, dummy) if not d]
         self.dummy_points = [point_of[v] for v, d in zip(ids, dummy) if d]
-        #: The corners v_0 .. v_{4g-1} of F_g.
-        self.polygon = [complex(*polygon_vertex(genus, k)) for k in range(4 * genus)]
-        #: The matrices of the generators g_0 .. g_{4g-1}.
-        self.generators = [word_matrix(genus, [k]) for k in range(4 * genus)]
+        n = 4 * genus
+        #: The corners v_0 .. v_{4g-1} of F_g, as (x, y).
+        self.polygon = [polygon_vertex(genus, k) for k in range(n)]
+        #: The centres of the circles carrying the sides s_0 .. s_{4g-1}.
+        self.side_centres = []
+        for k in range(n):
+            mx, my = polygon_side_midpoint(genus, k)
+            m2 = mx * mx + my * my
+            scale = (1 + m2) / (2 * m2)
+            self.side_centres.append((mx * scale, my * scale))
+        #: The generators g_0 .. g_{4g-1}.
+        self.generators = [_real_matrix(word_matrix(genus, [k])) for k in range(n)]
+        #: The elements of N by translation id (id 0, the identity, first).
+        self.neighbours = [_real_matrix(word_matrix(genus, word)) for word in neighbour_words(genus)]
 
-    def neighbour_polygons(self):
-        """The images of F_g under the generators (lists of corners)."""
-        return [[moebius(h, z) for z in self.polygon] for h in self.generators]
+    def _side_power(self, k, x, y):
+        cx, cy = self.side_centres[k]
+        return 1 + x * x + y * y - 2 * (cx * x + cy * y)
 
-    def neighbour_faces(self, smallest=0.0):
-        """The images of the faces' canonical copies under the generators,
-        leaving out those whose sides are all shorter than `smallest`."""
-        images = []
-        for h in self.generators:
-            for face in self.faces:
-                image = tuple(moebius(h, z) for z in face)
-                if max(abs(image[k] - image[k - 1]) for k in range(3)) > smallest:
-                    images.append(image)
-        return images
+    def _may_meet_polygon(self, corners):
+        for k in range(len(self.side_centres)):
+            if all(self._side_power(k, x, y) < 0 for x, y in corners):
+                return False
+        return True
 
-    def caption(self, neighbours, dummies=True, separator="; "):
-        """The default caption: the counts, separator, what is drawn."""
-        dummies = f" ({self.dummy_count} dummies{' in red' if dummies else ''})" if self.dummy_count else ""
-        extra = " and their images under the generators" if neighbours else ""
-        return (f"Delaunay triangulation on M_{self.genus}: {self.vertex_count} vertices{dummies}, "
-                f"{self.face_count} faces{separator}canonical copies{extra}, F_{self.genus} outlined")
+    def pieces(self, then=None, smallest=0.0):
+        """The copies h(T), h in N, of the faces' canonical copies T that may
+        meet F_g (those with all three corners beyond one side of F_g are
+        left out), in the library's order, each then mapped by the real
+        matrix `then` when given; with smallest > 0, copies whose corners are
+        all within smallest of each other are left out."""
+        result = []
+        for face in self.faces:
+            for h, matrix in enumerate(self.neighbours):
+                corners = face if h == 0 else tuple(_apply(matrix, x, y) for x, y in face)
+                if not self._may_meet_polygon(corners):
+                    continue
+                if then is not None:
+                    corners = tuple(_apply(then, x, y) for x, y in corners)
+                if smallest > 0 and all(math.hypot(corners[a][0] - corners[a - 1][0], corners[a][1] - corners[a - 1][1])
+                                        <= smallest for a in range(3)):
+                    continue
+                result.append(corners)
+        return result
 
+    def places(self, point):
+        """The places of a representative in the closed F_g: itself, and for
+        a point on F_g's boundary its images there under N."""
+        x, y = point
+        found = [point]
+        if any(abs(self._side_power(k, x, y)) < self.BOUNDARY for k in range(len(self.side_centres))):
+            for matrix in self.neighbours[1:]:
+                u, v = _apply(matrix, x, y)
+                if all(self._side_power(k, u, v) > -self.BOUNDARY for k in range(len(self.side_centres))):
+                    found.append((u, v))
+        return found
 
-# ---- SVG ----
+    def polygon_copy(self, matrix=None):
+        """The corners of F_g, or of its image under the real matrix."""
+        return list(self.polygon) if matrix is None else [_apply(matrix, x, y) for x, y in self.polygon]
 
-class _SvgCanvas:
-    """Disk coordinates to SVG ones (y down) and path data in SVG syntax."""
-
-    def __init__(self, size, top):
-        self.size, self.top = size, top
-        self.scale = size / 2 * 0.97  # the unit circle's radius in pixels
-
-    def x(self, z):
-        """The SVG x of the disk point z."""
-        return self.size / 2 + self.scale * z.real
-
-    def y(self, z):
-        """The SVG y of the disk point z."""
-        return self.top + self.size / 2 - self.scale * z.imag
-
-    def polygon(self, corners):
-        """Path data of the closed geodesic polygon through the corners: one
-        exact SVG arc (or line) per side."""
-        parts = [f"M{self.x(corners[0]):.2f} {self.y(corners[0]):.2f}"]
-        for k, p in enumerate(corners):
-            q = corners[(k + 1) % len(corners)]
-            arc = geodesic(p, q)
-            if arc is None:
-                parts.append(f"L{self.x(q):.2f} {self.y(q):.2f}")
-            else:
-                _, radius, counterclockwise = arc
-                r = radius * self.scale
-                # Counterclockwise in the disk is clockwise with y down: sweep flag 0.
-                parts.append(f"A{r:.2f} {r:.2f} 0 0 {0 if counterclockwise else 1} {self.x(q):.2f} {self.y(q):.2f}")
-        parts.append("Z")
-        return "".join(parts)
-
-    def polygons(self, polygons):
-        """Path data of many closed geodesic polygons, eight to a line."""
-        lines = []
-        for start in range(0, len(polygons), 8):
-            lines.append("".join(self.polygon(corners) for corners in polygons[start : start + 8]))
-        return "\n".join(lines)
-
-
-def svg(triangulation, *, size=800, dummies=True, neighbours=False, title=None):
-    """The picture of the triangulation as the text of an SVG document.
-
-    size: the width in pixels (the disk's square, with a caption band
-    above). dummies: mark the dummy vertices (red, larger); the faces around
-    them are drawn either way. neighbours: also draw the copies of F_g and of
-    the faces under the 4g generators. title: the caption (default: the
-    counts). Needs only the standard library.
-    """
-    size = float(size)
-    if not size > 0 or math.isinf(size):
-        raise ValueError(f"size must be a positive number of pixels, not {size}")
-    scene = Scene(triangulation)
-    top = 56.0 * size / 800
-    canvas = _SvgCanvas(size, top)
-    height = size + top
-    centre = complex(0, 0)
-    caption = scene.caption(neighbours, dummies) if title is None else str(title)
-    lines = [
-        '<?xml version="1.0" encoding="UTF-8"?>',
-        f'<svg xmlns="http://www.w3.org/2000/svg" width="{size:g}" height="{height:g}" '
-        f'viewBox="0 0 {size:g} {height:g}">',
-        f"<title>{escape(caption)}</title>",
-        '<rect width="100%" height="100%" fill="white"/>',
-        f'<circle cx="{canvas.x(centre):.2f}" cy="{canvas.y(centre):.2f}" r="{canvas.scale:.2f}" '
-        f'fill="{DISK_FILL}" stroke="{DISK_EDGE}" stroke-width="1.5"/>',
-        f'<path fill="{POLYGON_FILL}" fill-opacity="0.35" stroke="none" d="{canvas.polygon(scene.polygon)}"/>',
-    ]
-    if neighbours:
-        pixel = 2 / canvas.scale
-        lines += [
-            '<g fill="none" stroke-linejoin="round">',
-            f'<path stroke="{NEIGHBOUR_POLYGON_EDGE}" stroke-width="0.8" '
-            f'd="{canvas.polygons(scene.neighbour_polygons())}"/>',
-            f'<path stroke="{NEIGHBOUR_FACE_EDGE}" stroke-width="0.4" '
-            f'd="{canvas.polygons(scene.neighbour_faces(smallest=pixel))}"/>',
-            "</g>",
-        ]
-    lines += [
-        f'<path fill="none" stroke="{FACE_EDGE}" stroke-width="0.6" stroke-linejoin="round" '
-        f'd="{canvas.polygons(scene.faces)}"/>',
-        f'<path fill="none" stroke="{POLYGON_EDGE}" stroke-width="1.8" stroke-opacity="0.85" '
-        f'd="{canvas.polygon(scene.polygon)}"/>',
-        f'<g fill="{USER_VERTEX}">',
-    ]
-    lines += [f'<circle cx="{canvas.x(z):.2f}" cy="{canvas.y(z):.2f}" r="1.6"/>' for z in scene.user_points]
-    lines.append("</g>")
-    if dummies:
-        lines.append(f'<g fill="{DUMMY_VERTEX}">')
-        lines += [f'<circle cx="{canvas.x(z):.2f}" cy="{canvas.y(z):.2f}" r="2.6"/>' for z in scene.dummy_points]
-        lines.append("</g>")
-    lines.append(f'<text x="12" y="{top * 0.5:.1f}" font-family="sans-serif" font-size="{max(8.0, top * 0.26):.1f}">'
-                 f"{escape(caption)}</text>")
-    lines.append("</svg>")
-    return "\n".join(lines) + "\n"
+    def caption(self, neighbours, dummies=True):
+        """The library's default caption, both lines."""
+        user = self.vertex_count - self.dummy_count
+        if user == 0:
+            title = f"The dummy point set of M_{self.genus} and its Delaunay triangulation"
+        else:
+            title = f"Delaunay triangulation of {user} point{'' if user == 1 else 's'} on M_{self.genus}"
+        line = f"{self.vertex_count} vertices"
+        if self.dummy_count:
+            line += (f" ({self.dummy_count} dumm{'y' if self.dummy_count == 1 else 'ies'}, "
+                     f"{'red' if dummies else 'not marked'})")
+        line += f", {self.face_count} faces, drawn in F_{self.genus} and cut at its sides"
+        if neighbours:
+            line += f", and in the {4 * self.genus} tiles across them"
+        return f"{title}\n{line}"
 
 
 # ---- matplotlib ----
 
-def _xy(points):
-    """Complex points as a list of (x, y) pairs."""
-    return [(z.real, z.imag) for z in points]
+def _complex(points):
+    return [complex(x, y) for x, y in points]
+
+
+def _outline(corners):
+    """The closed geodesic polygon through (x, y) corners as (x, y) points."""
+    return [(z.real, z.imag) for z in geodesic_polygon_points(_complex(corners))]
 
 
 def plot(triangulation, ax=None, *, dummies=True, neighbours=False):
     """Draws the triangulation on the matplotlib Axes ax (a new figure's when
-    None) and returns the Axes; the picture of :func:`svg`, with geodesic
-    edges drawn as fine polylines.
+    None) and returns the Axes: the picture of :func:`svg`, the same pieces
+    cut at F_g's sides by a clip path, with geodesic edges drawn as fine
+    polylines.
 
-    The collections carry labels ("faces", "vertices", "dummy vertices",
-    "F_g"), so ax.legend() explains the picture. Raises ImportError when
-    matplotlib is not installed.
+    The artists carry labels ("faces", "vertices", "dummy vertices", "F_g"),
+    so ax.legend() explains the picture. Raises ImportError when matplotlib
+    is not installed.
     """
     try:
         from matplotlib.collections import LineCollection
@@ -258,27 +247,40 @@ def plot(triangulation, ax=None, *, dummies=True, neighbours=False):
         import matplotlib.pyplot as plt
 
         _, ax = plt.subplots(figsize=(7, 7))
-    boundary = _xy(geodesic_polygon_points(scene.polygon))
+    line = 0.3 if scene.face_count > 6000 else 0.6
+    dot = 0.9 if scene.vertex_count > 3000 else 1.6
+    boundary = _outline(scene.polygon)
     ax.add_patch(Circle((0, 0), 1, facecolor=DISK_FILL, edgecolor=DISK_EDGE, linewidth=1.2, zorder=0))
     ax.add_patch(Polygon(boundary, closed=True, facecolor=POLYGON_FILL, alpha=0.35, edgecolor="none", zorder=1))
     if neighbours:
-        ax.add_collection(LineCollection([_xy(geodesic_polygon_points(p)) for p in scene.neighbour_polygons()],
-                                         colors=NEIGHBOUR_POLYGON_EDGE, linewidths=0.8, zorder=2))
-        ax.add_collection(LineCollection([_xy(geodesic_polygon_points(f)) for f in scene.neighbour_faces(0.004)],
-                                         colors=NEIGHBOUR_FACE_EDGE, linewidths=0.4, zorder=2))
-    ax.add_collection(LineCollection([_xy(geodesic_polygon_points(f)) for f in scene.faces], colors=FACE_EDGE,
-                                     linewidths=0.6, zorder=3, label="faces"))
-    ax.add_patch(Polygon(boundary, closed=True, facecolor="none", edgecolor=POLYGON_EDGE, linewidth=1.6,
+        pixel = 2.0 / (800 * 0.97)  # the library's "below a pixel" at its size 800
+        for generator in scene.generators:
+            tile = Polygon(_outline(scene.polygon_copy(generator)), closed=True, facecolor="none",
+                           edgecolor=NEIGHBOUR_POLYGON_EDGE, linewidth=1.0, zorder=2)
+            ax.add_patch(tile)
+            faces = LineCollection([_outline(p) for p in scene.pieces(generator, pixel)], colors=NEIGHBOUR_FACE_EDGE,
+                                   linewidths=line * 2 / 3, zorder=2)
+            ax.add_collection(faces)
+            faces.set_clip_path(tile)
+    clip = Polygon(boundary, closed=True, facecolor="none", edgecolor="none")
+    ax.add_patch(clip)
+    faces = LineCollection([_outline(p) for p in scene.pieces()], colors=FACE_EDGE, linewidths=line, zorder=3,
+                           label="faces")
+    ax.add_collection(faces)
+    faces.set_clip_path(clip)
+    ax.add_patch(Polygon(boundary, closed=True, facecolor="none", edgecolor=POLYGON_EDGE, linewidth=1.8,
                          alpha=0.85, zorder=4, label=f"F_{scene.genus}"))
-    if scene.user_points:
-        ax.scatter([z.real for z in scene.user_points], [z.imag for z in scene.user_points], s=6, c=USER_VERTEX,
-                   zorder=5, label="vertices")
+    user = [place for point in scene.user_points for place in scene.places(point)]
+    if user:
+        ax.scatter([x for x, _ in user], [y for _, y in user], s=(1.3 * dot) ** 2, c=USER_VERTEX, zorder=5,
+                   label="vertices")
     if dummies and scene.dummy_points:
-        ax.scatter([z.real for z in scene.dummy_points], [z.imag for z in scene.dummy_points], s=22,
-                   c=DUMMY_VERTEX, marker="D", zorder=6, label="dummy vertices")
+        places = [place for point in scene.dummy_points for place in scene.places(point)]
+        ax.scatter([x for x, _ in places], [y for _, y in places], s=(1.3 * (dot + 1)) ** 2, c=DUMMY_VERTEX, zorder=6,
+                   label="dummy vertices")
     ax.set_xlim(-1.03, 1.03)
     ax.set_ylim(-1.03, 1.03)
     ax.set_aspect("equal")
     ax.set_axis_off()
-    ax.set_title(scene.caption(neighbours, dummies, "\n"), fontsize=9)
+    ax.set_title(scene.caption(neighbours, dummies), fontsize=9)
     return ax

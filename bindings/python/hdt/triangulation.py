@@ -36,6 +36,9 @@ from ._convert import c_coordinate, c_genus, c_translation, c_vertex, call_doubl
 from ._errors import HandleClosed, InternalError, InvalidArgument, Status, check, error_for_status
 from ._lib import lib
 
+# hdt_svg's flags (include/hdt.h).
+_SVG_NEIGHBOURS, _SVG_HIDE_DUMMIES = 1, 2
+
 #: :meth:`Triangulation.vertices`: the live vertices by increasing id.
 Vertices = collections.namedtuple("Vertices", "ids points dummy")
 Vertices.__doc__ = """The live vertices of a triangulation, by increasing id.
@@ -378,20 +381,46 @@ class Triangulation:
     # ---- pictures ----
 
     def to_svg(self, path=None, *, size=800, dummies=True, neighbours=False, title=None):
-        """The picture of the triangulation as SVG text, also written to path
-        (a file name) when given; needs no third-party package.
+        """The picture of the triangulation as SVG text, drawn by libhdt
+        (hdt_svg, as hdt-triangulate's --svg), also written to path (a file
+        name) when given; needs no third-party package.
 
-        Every face's canonical copy is drawn with geodesic edges in the
-        Poincare disk, F_g outlined, user vertices dark and (when dummies is
-        true) dummy vertices red and larger. neighbours also draws F_g and
-        the faces translated by the 4g generators. size is the width in
-        pixels; title replaces the caption. See :mod:`hdt.picture`.
+        M_g is shown as F_g in the Poincare disk with its sides paired: every
+        copy of a face that meets F_g, with geodesic edges, cut at F_g's
+        sides; F_g outlined, user vertices dark dots and (when dummies is
+        true) dummy vertices red and larger. neighbours also draws the 4g
+        tiles across F_g's sides, lighter. size is the width in pixels
+        (0 < size <= 100000, else :class:`hdt.InvalidArgument`); title
+        replaces the caption's first line (plain text; the library escapes
+        it), by default "Delaunay triangulation of N points on M_g". See
+        :mod:`hdt.picture`.
         """
-        text = picture.svg(self, size=size, dummies=dummies, neighbours=neighbours, title=title)
+        size = float(size)
+        flags = (0 if dummies else _SVG_HIDE_DUMMIES) | (_SVG_NEIGHBOURS if neighbours else 0)
+        if title is not None:
+            # A NUL would end the C string: shown as '?', as the library shows
+            # control characters; lone surrogates likewise.
+            title = str(title).replace("\0", "?").encode("utf-8", "replace")
+        length = ctypes.c_size_t()
+        with self._lock:
+            handle = self._live("to_svg")
+            # A guess (about 200 bytes a face, in F_g and in each tile), so
+            # that one call usually does (each call draws the whole picture);
+            # the exact size when it is too small.
+            copies = 4 * self._genus + 1 if neighbours else 1
+            capacity = 4096 + 256 * copies * lib.hdt_face_count(handle) + 64 * lib.hdt_vertex_count(handle)
+            for _ in range(2):
+                buffer = ctypes.create_string_buffer(capacity)
+                status = lib.hdt_svg(handle, size, title, flags, buffer, capacity, ctypes.byref(length))
+                if status != Status.EBUFS:
+                    break
+                capacity = length.value + 1
+            check(status)
+        data = buffer.raw[: length.value]
         if path is not None:
-            with open(path, "w", encoding="utf-8") as file:
-                file.write(text)
-        return text
+            with open(path, "wb") as file:
+                file.write(data)
+        return data.decode("utf-8")
 
     def plot(self, ax=None, *, dummies=True, neighbours=False):
         """Draws the triangulation on a matplotlib Axes (a new figure's when

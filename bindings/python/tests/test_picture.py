@@ -1,10 +1,11 @@
-"""Pictures: the geodesic geometry, to_svg (well-formed, complete, right arcs)
-and plot (matplotlib, Agg backend; skipped without matplotlib)."""
+"""Pictures: the geodesic geometry of hdt.picture, its Scene (the pieces the
+library draws), and plot (matplotlib, Agg backend; skipped without
+matplotlib), which must draw the pieces of to_svg. to_svg itself, the
+library's picture: test_svg.py."""
 
 import cmath
 import math
 import random
-import re
 import sys
 import xml.etree.ElementTree as ElementTree
 
@@ -75,99 +76,80 @@ def test_moebius_agrees_with_word_apply():
         z = 0.2 - 0.1j
         x, y = hdt.word_apply(2, word, z.real, z.imag)
         assert abs(picture.moebius(hdt.word_matrix(2, word), z) - complex(x, y)) < 1e-12
+        u, v = picture._apply(picture._real_matrix(hdt.word_matrix(2, word)), z.real, z.imag)
+        assert abs(complex(u, v) - complex(x, y)) < 1e-12
 
 
-def test_the_scene_holds_each_face_once_in_its_canonical_copy(small):
+def test_the_scene_holds_each_face_in_its_canonical_copy(small):
     scene = picture.Scene(small)
     faces = small.faces()
     assert len(scene.faces) == small.face_count == scene.face_count
     assert len(scene.user_points) + len(scene.dummy_points) == small.vertex_count
     assert len(scene.dummy_points) == small.dummy_count
     for corners, row, translations in zip(scene.faces, as_lists(faces.vertices), as_lists(faces.translations)):
-        for z, v, h in zip(corners, row, translations):
+        for (x, y), v, h in zip(corners, row, translations):
             if h == 0:
-                assert z == complex(*small.vertex_point(v))
-            assert abs(z) < 1
-    assert len(scene.polygon) == 8 and len(scene.neighbour_polygons()) == 8
+                assert (x, y) == small.vertex_point(v)
+            assert math.hypot(x, y) < 1
+    assert len(scene.polygon) == 8 and len(scene.generators) == 8 and len(scene.neighbours) == 49
 
 
-# ---- SVG ----
+def test_the_pieces_tile_f_g(small):
+    """A face's canonical copy meets F_g: it is among the pieces unless it
+    only touches F_g at a vertex on the boundary; the boundary vertices have
+    their places (v_0 at the 8 corners, a side's point on both sides)."""
+    scene = picture.Scene(small)
+    pieces = scene.pieces()
+    assert len(pieces) >= small.face_count
+    kept = set(pieces)
+    for face in scene.faces:
+        assert face in kept or any(len(scene.places(corner)) > 1 for corner in face)
+    places = [len(scene.places(p)) for p in scene.dummy_points]
+    assert set(places) <= {1, 2, 8}
+    v0 = hdt.polygon_vertex(2, 0)
+    assert all(n == 8 for p, n in zip(scene.dummy_points, places) if math.dist(p, v0) < 1e-9)
+    assert all(len(scene.places(p)) == 1 for p in scene.user_points)  # all inside F_g
 
-def parse(text):
+
+def svg_pieces(text, clip):
+    """The number of closed paths (M commands) in the SVG path clipped by `clip`."""
     root = ElementTree.fromstring(text.encode("utf-8"))
-    assert root.tag == SVG + "svg"
-    return root
+    paths = [p for p in root.iter(f"{SVG}path") if p.get("clip-path") == f"url(#{clip})"]
+    assert len(paths) == 1
+    return paths[0].get("d").count("M")
 
 
-def svg_arc_centre(x1, y1, r, sweep, x2, y2):
-    """The centre of an SVG arc with rx = ry = r, no rotation, large-arc 0
-    (the endpoint-to-centre conversion of the SVG specification)."""
-    hx, hy = (x1 - x2) / 2, (y1 - y2) / 2
-    d2 = hx * hx + hy * hy
-    coefficient = math.sqrt(max(0.0, (r * r - d2) / d2)) * (1 if sweep == 1 else -1)  # + when large-arc (0) != sweep
-    return coefficient * hy + (x1 + x2) / 2, -coefficient * hx + (y1 + y2) / 2
+def test_the_scene_has_the_pieces_of_the_library(small):
+    """The Scene's pieces (plot's) are those of the library's SVG, in F_g and
+    in each tile across a side."""
+    scene = picture.Scene(small)
+    text = small.to_svg(neighbours=True)
+    assert svg_pieces(text, "hdt-polygon") == len(scene.pieces())
+    pixel = 2.0 / (800 * 0.97)
+    for k, generator in enumerate(scene.generators):
+        assert svg_pieces(text, f"hdt-tile-{k}") == len(scene.pieces(generator, pixel))
+    root = ElementTree.fromstring(text.encode("utf-8"))
+    dummy_group = [g for g in root.iter(f"{SVG}g") if g.get("fill") == picture.DUMMY_VERTEX][0]
+    assert len(dummy_group) == sum(len(scene.places(p)) for p in scene.dummy_points)
+    captions = [t.text for t in root.iter(f"{SVG}text")]
+    assert "\n".join(captions) == scene.caption(True) + "; Poincare disk"
 
 
-def test_to_svg_writes_a_well_formed_complete_svg(arrays, small, tmp_path):
-    path = tmp_path / "t.svg"
-    text = small.to_svg(str(path))
-    assert path.read_text(encoding="utf-8") == text
-    root = parse(text)
-    assert root.get("viewBox") == "0 0 800 856"
-    circles = root.findall(f".//{SVG}circle")
-    assert len(circles) == 1 + small.vertex_count  # the disk and every vertex
-    red = [c for c in circles if c.get("r") == "2.6"]
-    assert len(red) == small.dummy_count > 0
-    paths = root.findall(f".//{SVG}path")
-    assert len(paths) == 3  # F_g filled, the faces, F_g outlined
-    faces_path = [p for p in paths if p.get("stroke") == picture.FACE_EDGE][0]
-    assert faces_path.get("d").count("M") == small.face_count
-    assert "Delaunay triangulation on M_2" in root.find(f"{SVG}title").text
-
-
-def test_svg_options(small, tmp_path):
-    plain = parse(small.to_svg(dummies=False))
-    assert all(c.get("r") != "2.6" for c in plain.iter(f"{SVG}circle"))
-    with_neighbours = parse(small.to_svg(neighbours=True, size=400, title='a <title> & "quotes"'))
-    assert with_neighbours.get("width") == "400"
-    assert len(with_neighbours.findall(f".//{SVG}path")) == 5
-    assert with_neighbours.find(f"{SVG}title").text == 'a <title> & "quotes"'
-    with pytest.raises(ValueError, match="size must be a positive number"):
-        small.to_svg(size=0)
-
-
-def test_svg_arcs_of_the_polygon_are_its_sides(small):
-    """End to end: each arc command of F_g's outline, read back with the SVG
-    rules, has the centre of the circle carrying that side (centre at angle
-    k pi / 2g, |c| = (mu + 1/mu) / 2 for mu the midpoints' radius)."""
-    root = parse(small.to_svg())
-    outline = [p for p in root.iter(f"{SVG}path") if p.get("stroke") == picture.POLYGON_EDGE][0].get("d")
-    numbers = [float(n) for n in re.findall(r"-?\d+(?:\.\d+)?", outline)]
-    commands = re.findall(r"[MAZL]", outline)
-    assert commands == ["M"] + ["A"] * 8 + ["Z"]
-    scale, top = 400 * 0.97, 56.0
-    mu = abs(complex(*hdt.polygon_side_midpoint(2, 0)))
-    centres = [cmath.rect((mu + 1 / mu) / 2, k * math.pi / 4) for k in range(8)]
-    x, y = numbers[0], numbers[1]
-    for k in range(8):
-        r, _, _, large, sweep, x2, y2 = numbers[2 + 7 * k : 9 + 7 * k]
-        assert large == 0
-        cx, cy = svg_arc_centre(x, y, r, sweep, x2, y2)
-        centre = complex((cx - 400) / scale, (top + 400 - cy) / scale)
-        assert min(abs(centre - c) for c in centres) < 0.02
-        x, y = x2, y2
+def test_svg_is_to_svg(small):
+    assert picture.svg(small, size=300, neighbours=True, title="t") == small.to_svg(size=300, neighbours=True,
+                                                                                  title="t")
 
 
 def test_to_svg_needs_no_matplotlib(small, monkeypatch):
     monkeypatch.setitem(sys.modules, "matplotlib", None)  # import matplotlib fails now
-    parse(small.to_svg())
+    ElementTree.fromstring(small.to_svg().encode("utf-8"))
     with pytest.raises(ImportError, match="needs matplotlib"):
         small.plot()
 
 
 # ---- matplotlib ----
 
-def test_plot_draws_on_given_or_new_axes(small):
+def test_plot_draws_the_pieces_of_the_svg_clipped_to_f_g(small):
     matplotlib = pytest.importorskip("matplotlib")
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -178,12 +160,20 @@ def test_plot_draws_on_given_or_new_axes(small):
         labels = {artist.get_label() for artist in ax.collections + ax.patches}
         assert {"faces", "vertices", "dummy vertices", "F_2"} <= labels
         faces = [c for c in ax.collections if c.get_label() == "faces"][0]
-        assert len(faces.get_segments()) == small.face_count
+        assert len(faces.get_segments()) == svg_pieces(small.to_svg(), "hdt-polygon") >= small.face_count
+        assert faces.get_clip_path() is not None  # cut at F_g's sides
+        dummies = [c for c in ax.collections if c.get_label() == "dummy vertices"][0]
+        root = ElementTree.fromstring(small.to_svg().encode("utf-8"))
+        dummy_dots = [g for g in root.iter(f"{SVG}g") if g.get("fill") == picture.DUMMY_VERTEX][0]
+        assert len(dummies.get_offsets()) == len(dummy_dots)
         ax.legend()
         fig.canvas.draw()
         ax2 = small.plot(dummies=False, neighbours=True)
         assert ax2 is not ax and ax2.figure is not fig
         assert "dummy vertices" not in {c.get_label() for c in ax2.collections}
+        text = small.to_svg(neighbours=True)
+        tiles = [c for c in ax2.collections if c.get_label() != "faces" and c.get_clip_path() is not None]
+        assert [len(c.get_segments()) for c in tiles] == [svg_pieces(text, f"hdt-tile-{k}") for k in range(8)]
         ax2.figure.canvas.draw()
     finally:
         plt.close("all")

@@ -1,0 +1,511 @@
+// lib/picture: the triangulation drawn in the Poincare disk as SVG text,
+// hdt_svg. The one drawing code of libhdt: the command-line tool
+// hdt-triangulate and the Python package both call it.
+//
+// A layer above lib/capi. The picture reads the triangulation only through
+// the public functions of include/hdt.h, as any caller could (hdt_vertices,
+// hdt_faces, hdt_translation_matrix, hdt_polygon_vertex, ...); it never
+// touches the core's types. It is C++ for what capi/guard.hpp gives every
+// exported function: guarded(), which turns each exception (std::bad_alloc
+// above all) into a status and hdt_last_error_message's text, so that none
+// crosses the ABI; and for std::string as the growable buffer the text is
+// written to. Everything here but hdt_svg has internal linkage (an anonymous
+// namespace), so nothing else is exported and no name clashes with hdt_*.
+//
+// The drawing came from the tool (bindings/cli/svg_picture.c): at size 800
+// the text is byte for byte what the tool wrote then (the meson test
+// `pictures` compares the committed pictures), which is why the arithmetic
+// below keeps the tool's formulas and their order of operations.
+#include <array>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "capi/guard.hpp"
+#include "hdt.h"
+
+using hdt::capi::ApiError;
+using hdt::capi::guarded;
+
+namespace {
+
+constexpr double kReferenceSize = 800.0; // the tool's width: the caption's layout is given for it
+constexpr double kTitleHeight = 56.0;    // a band above the disk for the caption, at size 800
+constexpr double kDiskScale = 0.97;      // the unit circle's radius, in half picture widths
+constexpr double kSizeMax = HDT_SVG_SIZE_MAX;
+constexpr unsigned kKnownFlags = HDT_SVG_NEIGHBOURS | HDT_SVG_HIDE_DUMMIES;
+
+// A failed call of the public API inside hdt_svg: its status, and its message
+// (which names the function) after "hdt_svg: ".
+void check(hdt_status status) {
+  if (status != HDT_OK) throw ApiError(status, hdt_last_error_message());
+}
+
+// ---- The text ----
+
+class Text {
+ public:
+  void put(const char *format, ...)
+#if defined(__GNUC__)
+      __attribute__((format(printf, 2, 3)))
+#endif
+  {
+    char small[160];
+    std::va_list args;
+    va_start(args, format);
+    const int n = std::vsnprintf(small, sizeof small, format, args);
+    va_end(args);
+    if (n < 0) throw std::logic_error("hdt_svg: a number could not be formatted");
+    if (std::size_t(n) < sizeof small) {
+      out_.append(small, std::size_t(n));
+      return;
+    }
+    std::vector<char> large(std::size_t(n) + 1);
+    va_start(args, format);
+    std::vsnprintf(large.data(), large.size(), format, args);
+    va_end(args);
+    out_.append(large.data(), std::size_t(n));
+  }
+  void puts(const char *text) { out_.append(text); }
+  void putc(char c) { out_.push_back(c); }
+  void write(const char *p, std::size_t n) { out_.append(p, n); }
+  const std::string &str() const { return out_; }
+
+ private:
+  std::string out_;
+};
+
+// ---- Moebius maps ----
+
+using Matrix = std::array<double, 4>; // SU(1,1), layout of hdt_word_matrix
+
+// z -> (a z + b) / (conj(b) z + conj(a)) for m = (Re a, Im a, Re b, Im b).
+void moebius_apply(const double m[4], double x, double y, double *ox, double *oy) {
+  const double ar = m[0], ai = m[1], br = m[2], bi = m[3];
+  const double nr = ar * x - ai * y + br, ni = ar * y + ai * x + bi; /* a z + b */
+  const double dr = br * x + bi * y + ar, di = br * y - bi * x - ai; /* conj(b) z + conj(a) */
+  const double d2 = dr * dr + di * di;
+  *ox = (nr * dr + ni * di) / d2;
+  *oy = (ni * dr - nr * di) / d2;
+}
+
+// ---- What the picture needs of the triangulation, read once ----
+
+struct Snapshot {
+  int genus = 0;
+  // The live vertices by increasing id: representative, and dummy or not.
+  std::vector<double> x, y;
+  std::vector<unsigned char> dummy;
+  std::size_t vertex_count = 0, dummy_count = 0, vertex_id_bound = 0;
+  // The canonical copy of each face, in hdt_faces order: 3 corners each.
+  std::size_t face_count = 0;
+  std::vector<double> cx, cy;
+};
+
+void take_snapshot(const hdt_triangulation *t, Snapshot &s) {
+  s.genus = hdt_genus(t);
+  s.vertex_id_bound = hdt_vertex_id_bound(t);
+
+  size_t count = 0;
+  check(hdt_vertices(t, nullptr, nullptr, nullptr, 0, &count));
+  std::vector<uint32_t> ids(count);
+  std::vector<double> xy(2 * count);
+  s.dummy.resize(count);
+  if (count > 0) check(hdt_vertices(t, ids.data(), xy.data(), s.dummy.data(), count, &count));
+  s.x.resize(count);
+  s.y.resize(count);
+  std::unordered_map<uint32_t, std::size_t> index_of;
+  index_of.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    s.x[i] = xy[2 * i];
+    s.y[i] = xy[2 * i + 1];
+    index_of.emplace(ids[i], i);
+    if (s.dummy[i]) ++s.dummy_count;
+  }
+  s.vertex_count = count;
+
+  size_t faces = 0;
+  check(hdt_faces(t, nullptr, nullptr, 0, &faces));
+  std::vector<uint32_t> vertices(3 * faces);
+  std::vector<int32_t> translations(3 * faces);
+  if (faces > 0) check(hdt_faces(t, vertices.data(), translations.data(), faces, &faces));
+  s.face_count = faces;
+  s.cx.resize(3 * faces);
+  s.cy.resize(3 * faces);
+  std::unordered_map<int32_t, Matrix> matrices;
+  for (std::size_t i = 0; i < 3 * faces; ++i) {
+    const auto v = index_of.find(vertices[i]);
+    if (v == index_of.end())
+      throw std::logic_error("hdt_svg: face " + std::to_string(i / 3) + " names vertex " +
+                             std::to_string(vertices[i]) + ", which is not live");
+    const double px = s.x[v->second], py = s.y[v->second];
+    const int32_t id = translations[i];
+    if (id == 0) {
+      s.cx[i] = px;
+      s.cy[i] = py;
+      continue;
+    }
+    auto m = matrices.find(id);
+    if (m == matrices.end()) {
+      Matrix matrix;
+      check(hdt_translation_matrix(t, id, matrix.data()));
+      m = matrices.emplace(id, matrix).first;
+    }
+    moebius_apply(m->second.data(), px, py, &s.cx[i], &s.cy[i]);
+  }
+}
+
+// ---- The polygon F_g and the neighbour set N ----
+
+struct Geometry {
+  int n = 0;                            // 4g sides
+  std::vector<double> vx, vy;           // F_g's vertices v_0 .. v_{n-1}
+  std::vector<double> cx, cy;           // centres of the sides' circles (orthogonal to the unit circle)
+  std::vector<Matrix> generator;        // g_0 .. g_{n-1}
+  std::vector<Matrix> neighbour;        // the elements of N, by translation id
+};
+
+void take_geometry(int genus, Geometry &g) {
+  const int n = 4 * genus;
+  g.n = n;
+  g.vx.resize(std::size_t(n));
+  g.vy.resize(std::size_t(n));
+  g.cx.resize(std::size_t(n));
+  g.cy.resize(std::size_t(n));
+  g.generator.resize(std::size_t(n));
+  for (int k = 0; k < n; ++k) {
+    const int32_t letter = k;
+    double mx, my;
+    check(hdt_polygon_vertex(genus, k, &g.vx[std::size_t(k)], &g.vy[std::size_t(k)]));
+    check(hdt_polygon_side_midpoint(genus, k, &mx, &my));
+    check(hdt_word_matrix(genus, &letter, 1, g.generator[std::size_t(k)].data()));
+    // The circle through m_k orthogonal to the unit circle has its centre on
+    // the ray through m_k, at |c| = (|m| + 1/|m|) / 2.
+    const double m2 = mx * mx + my * my, scale = (1 + m2) / (2 * m2);
+    g.cx[std::size_t(k)] = mx * scale;
+    g.cy[std::size_t(k)] = my * scale;
+  }
+  size_t count = 0;
+  check(hdt_neighbour_count(genus, &count));
+  g.neighbour.resize(count);
+  std::vector<int32_t> word(2 * std::size_t(genus) + 1); // the words of N have at most 2g letters
+  for (std::size_t id = 0; id < count; ++id) {
+    size_t length = 0;
+    check(hdt_neighbour_word(genus, id, word.data(), word.size(), &length));
+    check(hdt_word_matrix(genus, word.data(), length, g.neighbour[id].data()));
+  }
+}
+
+// The power of the disk point (x, y) with respect to the circle of side k:
+// negative beyond the side's geodesic (outside F_g's half-plane), zero on it.
+double side_power(const Geometry &g, int k, double x, double y) {
+  return 1 + x * x + y * y - 2 * (g.cx[std::size_t(k)] * x + g.cy[std::size_t(k)] * y);
+}
+
+bool beyond(const Geometry &g, int k, double x, double y) { return side_power(g, k, x, y) < 0; }
+
+// Whether the triangle with corners x, y can meet F_g.
+bool may_meet_polygon(const Geometry &g, const double x[3], const double y[3]) {
+  for (int k = 0; k < g.n; ++k)
+    if (beyond(g, k, x[0], y[0]) && beyond(g, k, x[1], y[1]) && beyond(g, k, x[2], y[2])) return false;
+  return true;
+}
+
+// ---- Drawing ----
+
+class Picture {
+ public:
+  Picture(const Snapshot &s, const Geometry &g, double size) : s_(s), g_(g), size_(size) {}
+
+  // Disk coordinates to SVG coordinates (y points down in SVG), rounded to
+  // 0.01 px when printed (about 3e-5 in the disk at size 800): enough for
+  // the eye and for zooming in, and it keeps the files small.
+  double sx(double x) const { return size_ / 2 * (1 + kDiskScale * x); }
+  double sy(double y) const { return title_height() + size_ / 2 * (1 - kDiskScale * y); }
+  double title_height() const { return kTitleHeight * size_ / kReferenceSize; }
+
+  // Path data for the geodesic from p to q: an arc of the circle orthogonal
+  // to the unit circle through both, or a segment when p, q and 0 are
+  // collinear (within a rounding-size margin, where the arc's radius would
+  // exceed any visible curvature). Inside the disk that arc is less than a
+  // half circle (large-arc flag 0). The sweep flag follows the turn from p
+  // to q about the circle's centre c: counterclockwise in the disk (y up) is
+  // flag 0 in SVG's y-down coordinates.
+  void geodesic_to(Text &f, double px, double py, double qx, double qy) const {
+    const double cross = px * qy - py * qx;
+    const double bp = (1 + px * px + py * py) / 2, bq = (1 + qx * qx + qy * qy) / 2;
+    if (std::fabs(cross) <= 1e-9 * bp * bq) {
+      f.put("L%.2f %.2f", sx(qx), sy(qy));
+      return;
+    }
+    // c solves c.p = (1 + |p|^2)/2 and c.q = (1 + |q|^2)/2.
+    const double cx = (bp * qy - bq * py) / cross, cy = (px * bq - qx * bp) / cross;
+    const double r = std::sqrt(std::fmax(cx * cx + cy * cy - 1, 0)) * size_ / 2 * kDiskScale;
+    const bool counterclockwise = (px - cx) * (qy - cy) - (py - cy) * (qx - cx) > 0;
+    f.put("A%.2f %.2f 0 0 %d %.2f %.2f", r, r, counterclockwise ? 0 : 1, sx(qx), sy(qy));
+  }
+
+  // A closed geodesic polygon through n disk points, as path data.
+  void geodesic_polygon(Text &f, const double *x, const double *y, int n) const {
+    f.put("M%.2f %.2f", sx(x[0]), sy(y[0]));
+    for (int k = 0; k < n; ++k) geodesic_to(f, x[k], y[k], x[(k + 1) % n], y[(k + 1) % n]);
+    f.putc('Z');
+  }
+
+  // A triangle whose corners are all within a pixel of each other.
+  bool too_small(const double x[3], const double y[3]) const {
+    const double pixel = 2.0 / (size_ * kDiskScale);
+    for (int a = 0; a < 3; ++a)
+      if (std::hypot(x[a] - x[(a + 1) % 3], y[a] - y[(a + 1) % 3]) > pixel) return false;
+    return true;
+  }
+
+  // ---- The surface's pieces in F_g ----
+  //
+  // The picture shows M_g as F_g with its sides paired: every copy h(T) of a
+  // face T that meets F_g, cut at F_g's sides by a clip path, so that F_g is
+  // tiled exactly and an edge leaving through side s_k comes back through
+  // s_{k+2g}. The canonical copy T of a face has its smallest vertex in F_g
+  // and lies in D_N, the union of the tiles n(F_g), n in N; so a tile
+  // h^{-1}(F_g) meeting T is one of those, and the copies to look at are
+  // h(T), h in N (N = N^{-1}). A copy is dropped when its three corners lie
+  // beyond one side of F_g (then all of it does: half-planes are convex); the
+  // few others that miss F_g are cut away by the clip path.
+
+  // Path data for the copies h(T) meeting F_g, each then mapped by `then`
+  // (nullptr: the identity); with `skip_small`, copies below a pixel are left
+  // out.
+  void pieces(Text &f, const double *then, bool skip_small) const {
+    std::size_t drawn = 0;
+    for (std::size_t i = 0; i < s_.face_count; ++i) {
+      const double *tx = &s_.cx[3 * i], *ty = &s_.cy[3 * i];
+      for (std::size_t h = 0; h < g_.neighbour.size(); ++h) {
+        double x[3], y[3];
+        for (int c = 0; c < 3; ++c) {
+          x[c] = tx[c];
+          y[c] = ty[c];
+          if (h != 0) moebius_apply(g_.neighbour[h].data(), tx[c], ty[c], &x[c], &y[c]);
+        }
+        if (!may_meet_polygon(g_, x, y)) continue;
+        if (then)
+          for (int c = 0; c < 3; ++c) moebius_apply(then, x[c], y[c], &x[c], &y[c]);
+        if (skip_small && too_small(x, y)) continue;
+        geodesic_polygon(f, x, y, 3);
+        if (++drawn % 8 == 0) f.putc('\n');
+      }
+    }
+  }
+
+  // The polygon F_g, or its image under m (nullptr: the identity).
+  void polygon_copy(Text &f, const double *m) const {
+    std::vector<double> x(g_.vx), y(g_.vy);
+    if (m)
+      for (std::size_t k = 0; k < x.size(); ++k) moebius_apply(m, g_.vx[k], g_.vy[k], &x[k], &y[k]);
+    geodesic_polygon(f, x.data(), y.data(), g_.n);
+  }
+
+  // A dot at each place a vertex appears in the closed F_g: its
+  // representative, and for a vertex on F_g's boundary its other copies
+  // there (on the paired side; at every corner for a vertex at v_0).
+  void vertex_dots(Text &f, bool dummies, const char *colour, double radius) const {
+    const double eps = 1e-9;
+    f.put("<g fill=\"%s\">\n", colour);
+    for (std::size_t v = 0; v < s_.vertex_count; ++v) {
+      if (bool(s_.dummy[v]) != dummies) continue;
+      const double px = s_.x[v], py = s_.y[v];
+      f.put("<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%g\"/>\n", sx(px), sy(py), radius);
+      bool on_boundary = false;
+      for (int k = 0; k < g_.n && !on_boundary; ++k) on_boundary = std::fabs(side_power(g_, k, px, py)) < eps;
+      for (std::size_t h = 1; on_boundary && h < g_.neighbour.size(); ++h) {
+        double x, y;
+        moebius_apply(g_.neighbour[h].data(), px, py, &x, &y);
+        bool inside = true;
+        for (int k = 0; k < g_.n && inside; ++k) inside = side_power(g_, k, x, y) > -eps;
+        if (inside) f.put("<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%g\"/>\n", sx(x), sy(y), radius);
+      }
+    }
+    f.puts("</g>\n");
+  }
+
+ private:
+  const Snapshot &s_;
+  const Geometry &g_;
+  double size_;
+};
+
+// The length of the valid UTF-8 sequence at p (1 to 4 bytes), or 0.
+int utf8_sequence(const unsigned char *p) {
+  int n;
+  unsigned int min;
+  if (p[0] < 0x80) return 1;
+  if ((p[0] & 0xe0) == 0xc0) n = 2, min = 0x80;
+  else if ((p[0] & 0xf0) == 0xe0) n = 3, min = 0x800;
+  else if ((p[0] & 0xf8) == 0xf0) n = 4, min = 0x10000;
+  else return 0;
+  unsigned int code = p[0] & (0x7fu >> n);
+  for (int i = 1; i < n; ++i) {
+    if ((p[i] & 0xc0) != 0x80) return 0; // also stops at the terminating NUL
+    code = (code << 6) | (p[i] & 0x3f);
+  }
+  if (code < min || code > 0x10ffff || (code >= 0xd800 && code <= 0xdfff)) return 0;
+  return n;
+}
+
+// Plain text as SVG character data: markup and quotes escaped, and what XML
+// 1.0 does not allow (control characters, bytes that are not UTF-8, as in a
+// file name) shown as '?'.
+void put_escaped(Text &f, const char *text) {
+  const unsigned char *p = reinterpret_cast<const unsigned char *>(text);
+  while (*p) {
+    const int n = utf8_sequence(p);
+    if (n == 0 || (*p < 0x20 && *p != '\t')) {
+      f.putc('?');
+      ++p;
+    } else if (*p == '&') {
+      f.puts("&amp;"), ++p;
+    } else if (*p == '<') {
+      f.puts("&lt;"), ++p;
+    } else if (*p == '>') {
+      f.puts("&gt;"), ++p;
+    } else if (*p == '"') {
+      f.puts("&quot;"), ++p;
+    } else {
+      f.write(reinterpret_cast<const char *>(p), std::size_t(n));
+      p += n;
+    }
+  }
+}
+
+// The caption's first line when the caller gives none.
+std::string default_title(const Snapshot &s) {
+  char text[160];
+  const std::size_t user = s.vertex_count - s.dummy_count;
+  if (user == 0)
+    std::snprintf(text, sizeof text, "The dummy point set of M_%d%s and its Delaunay triangulation", s.genus,
+                  s.vertex_count == s.vertex_id_bound ? ", before any insertion," : "");
+  else
+    std::snprintf(text, sizeof text, "Delaunay triangulation of %zu point%s on M_%d", user, user == 1 ? "" : "s",
+                  s.genus);
+  return text;
+}
+
+void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char *title, unsigned flags) {
+  const bool neighbours = flags & HDT_SVG_NEIGHBOURS, hide_dummies = flags & HDT_SVG_HIDE_DUMMIES;
+  const Picture p(s, g, size);
+  const double scale = size / kReferenceSize; // the caption's layout
+  // Sizes are printed with 10 digits (%g's 6 would round a width such as
+  // 1234.567); at size 800 they are the integers the tool always wrote.
+  const double height = size + p.title_height(), r = size / 2 * kDiskScale;
+  // Thinner lines and smaller dots for large triangulations.
+  const double line = s.face_count > 6000 ? 0.3 : 0.6;
+  const double dot = s.vertex_count > 3000 ? 0.9 : 1.6;
+
+  f.put("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.10g\" height=\"%.10g\" viewBox=\"0 0 %.10g %.10g\">\n",
+        size, height, size, height);
+  f.puts("<defs><clipPath id=\"hdt-polygon\"><path d=\"");
+  p.polygon_copy(f, nullptr);
+  f.puts("\"/></clipPath></defs>\n");
+  f.puts("<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n");
+  f.put("<circle cx=\"%.10g\" cy=\"%.10g\" r=\"%.10g\" fill=\"#f4f6fb\" stroke=\"#333\" stroke-width=\"1.5\"/>\n", p.sx(0),
+        p.sy(0), r);
+
+  // F_g, lightly filled under everything.
+  f.puts("<path fill=\"#ffd98a\" fill-opacity=\"0.35\" stroke=\"none\" d=\"");
+  p.polygon_copy(f, nullptr);
+  f.puts("\"/>\n");
+
+  // Across the sides, lighter: the tiles g_k(F_g), each with the
+  // triangulation drawn in it (F_g's pieces mapped by g_k, cut at the tile).
+  if (neighbours) {
+    f.puts("<defs>\n");
+    for (int k = 0; k < g.n; ++k) {
+      f.put("<clipPath id=\"hdt-tile-%d\"><path d=\"", k);
+      p.polygon_copy(f, g.generator[std::size_t(k)].data());
+      f.puts("\"/></clipPath>\n");
+    }
+    f.puts("</defs>\n<g fill=\"none\" stroke-linejoin=\"round\">\n");
+    for (int k = 0; k < g.n; ++k) {
+      f.put("<path clip-path=\"url(#hdt-tile-%d)\" stroke=\"#8a9ac0\" stroke-width=\"%g\" d=\"", k, line * 2 / 3);
+      p.pieces(f, g.generator[std::size_t(k)].data(), true);
+      f.puts("\"/>\n");
+    }
+    f.puts("<path stroke=\"#e0b070\" stroke-width=\"1\" d=\"");
+    for (int k = 0; k < g.n; ++k) p.polygon_copy(f, g.generator[std::size_t(k)].data());
+    f.puts("\"/>\n</g>\n");
+  }
+
+  // The triangulation in F_g, cut at its sides.
+  f.put("<path clip-path=\"url(#hdt-polygon)\" fill=\"none\" stroke=\"#1f2a44\" stroke-width=\"%g\" "
+        "stroke-linejoin=\"round\" d=\"",
+        line);
+  p.pieces(f, nullptr, false);
+  f.puts("\"/>\n");
+
+  // F_g's boundary on top.
+  f.puts("<path fill=\"none\" stroke=\"#c05a00\" stroke-width=\"1.8\" stroke-opacity=\"0.85\" d=\"");
+  p.polygon_copy(f, nullptr);
+  f.puts("\"/>\n");
+
+  // The vertices: user points dark, dummies red.
+  p.vertex_dots(f, false, "#1f2a44", dot);
+  if (!hide_dummies) p.vertex_dots(f, true, "#d62728", dot + 1.0);
+
+  f.put("<text x=\"%.10g\" y=\"%.10g\" font-family=\"sans-serif\" font-size=\"%.10g\">", 12 * scale, 22 * scale, 16 * scale);
+  if (title) put_escaped(f, title);
+  else put_escaped(f, default_title(s).c_str());
+  f.puts("</text>\n");
+  f.put("<text x=\"%.10g\" y=\"%.10g\" font-family=\"sans-serif\" font-size=\"%.10g\" fill=\"#555\">%zu vertices",
+        12 * scale, 42 * scale, 13 * scale, s.vertex_count);
+  if (s.dummy_count)
+    f.put(" (%zu dumm%s, %s)", s.dummy_count, s.dummy_count == 1 ? "y" : "ies", hide_dummies ? "not marked" : "red");
+  f.put(", %zu faces, drawn in F_%d and cut at its sides", s.face_count, s.genus);
+  if (neighbours) f.put(", and in the %d tiles across them", g.n);
+  f.puts("; Poincare disk</text>\n");
+  f.puts("</svg>\n");
+}
+
+} // namespace
+
+extern "C" {
+
+HDT_API hdt_status hdt_svg(const hdt_triangulation *t, double size, const char *title, unsigned flags, char *text,
+                           size_t capacity, size_t *length) HDT_NOEXCEPT {
+  return guarded("hdt_svg", [&] {
+    if (!t) throw ApiError(HDT_EINVAL, "the triangulation handle is NULL");
+    if (!length) throw ApiError(HDT_EINVAL, "length must not be NULL");
+    if (!(size > 0 && size <= kSizeMax)) {
+      char message[128];
+      std::snprintf(message, sizeof message, "size must be a number of pixels in (0, %g], got %g", kSizeMax, size);
+      throw ApiError(HDT_EINVAL, message);
+    }
+    if (flags & ~kKnownFlags)
+      throw ApiError(HDT_EINVAL, "unknown flags " + std::to_string(flags & ~kKnownFlags) +
+                                     " (HDT_SVG_NEIGHBOURS = 1 and HDT_SVG_HIDE_DUMMIES = 2 are known)");
+    if (capacity > 0 && !text)
+      throw ApiError(HDT_EINVAL, "text is NULL but capacity is " + std::to_string(capacity));
+
+    Snapshot s;
+    take_snapshot(t, s);
+    Geometry g;
+    take_geometry(s.genus, g);
+    Text f;
+    draw(f, s, g, size, title, flags);
+
+    const std::string &out = f.str();
+    *length = out.size();
+    if (capacity < out.size() + 1) {
+      if (capacity == 0) return HDT_OK;
+      throw ApiError(HDT_EBUFS, "the picture has " + std::to_string(out.size()) + " bytes and its NUL, capacity is " +
+                                    std::to_string(capacity));
+    }
+    std::memcpy(text, out.c_str(), out.size() + 1);
+    return HDT_OK;
+  });
+}
+
+} // extern "C"
