@@ -19,15 +19,19 @@ struct hdt_triangulation {
 
 namespace {
 
-// The triangulation behind a handle. Queries on a const handle still fill
-// the kernel's caches (translation products, matrices), hence mutable.
-Triangulation &of(const hdt_triangulation *t) {
+// The triangulation behind a handle: const for a const handle (queries fill
+// only the core's documented caches).
+Triangulation &of(hdt_triangulation *t) {
   if (!t) throw ApiError(HDT_EINVAL, "the triangulation handle is NULL");
-  return const_cast<hdt_triangulation *>(t)->tri;
+  return t->tri;
+}
+const Triangulation &of(const hdt_triangulation *t) {
+  if (!t) throw ApiError(HDT_EINVAL, "the triangulation handle is NULL");
+  return t->tri;
 }
 
-void check_translation(Triangulation &tri, int32_t id) {
-  if (id < 0 || std::size_t(id) >= tri.kernel().table().size())
+void check_translation(const Triangulation &tri, int32_t id) {
+  if (id < 0 || std::size_t(id) >= tri.table().size())
     throw ApiError(HDT_EINVAL, "unknown translation id " + std::to_string(id));
 }
 
@@ -97,7 +101,7 @@ HDT_API size_t hdt_face_count(const hdt_triangulation *t) HDT_NOEXCEPT { return 
 
 HDT_API hdt_status hdt_vertex_point(const hdt_triangulation *t, uint32_t v, double *x, double *y) HDT_NOEXCEPT {
   return guarded("hdt_vertex_point", [&] {
-    Triangulation &tri = of(t);
+    const Triangulation &tri = of(t);
     if (!x || !y) throw ApiError(HDT_EINVAL, "x and y must not be NULL");
     if (v >= tri.vertices().size() || !tri.vertices()[v].alive())
       throw ApiError(HDT_EINVAL, "vertex " + std::to_string(v) + " is not a live vertex");
@@ -116,7 +120,7 @@ HDT_API int hdt_vertex_is_dummy(const hdt_triangulation *t, uint32_t v) HDT_NOEX
 HDT_API hdt_status hdt_vertices(const hdt_triangulation *t, uint32_t *ids, double *xy, uint8_t *dummy, size_t capacity,
                                 size_t *count) HDT_NOEXCEPT {
   return guarded("hdt_vertices", [&] {
-    Triangulation &tri = of(t);
+    const Triangulation &tri = of(t);
     const std::size_t V = tri.vertex_count();
     if (!hdt::capi::list_fits(V, capacity, count, "vertices")) return HDT_OK;
     // The points first: vertex_point may allocate (and fail) before anything
@@ -148,22 +152,14 @@ HDT_API hdt_status hdt_vertices(const hdt_triangulation *t, uint32_t *ids, doubl
 HDT_API hdt_status hdt_faces(const hdt_triangulation *t, uint32_t *vertices, int32_t *translations, size_t capacity,
                              size_t *count) HDT_NOEXCEPT {
   return guarded("hdt_faces", [&] {
-    Triangulation &tri = of(t);
+    const Triangulation &tri = of(t);
     const auto &faces = tri.faces();
     const std::size_t F = faces.size();
     if (!hdt::capi::list_fits(F, capacity, count, "faces")) return HDT_OK;
     if (!vertices) throw ApiError(HDT_EINVAL, "vertices must not be NULL when capacity > 0");
-    // Corner translations relative to each vertex's representative: t h^-1.
+    // Computed before anything is written: it may allocate (and fail).
     std::vector<int32_t> relative;
-    if (translations) {
-      auto &T = tri.kernel().table();
-      relative.resize(3 * F);
-      for (std::size_t f = 0; f < F; ++f)
-        for (int i = 0; i < 3; ++i) {
-          const auto home = tri.vertices()[faces[f].v[i]].home;
-          relative[3 * f + i] = home == 0 ? faces[f].t[i] : T.compose(faces[f].t[i], T.inverse(home));
-        }
-    }
+    if (translations) tri.corner_translations(&relative);
     for (std::size_t f = 0; f < F; ++f)
       for (int i = 0; i < 3; ++i) vertices[3 * f + i] = faces[f].v[i];
     if (translations)
@@ -176,19 +172,19 @@ HDT_API hdt_status hdt_faces(const hdt_triangulation *t, uint32_t *vertices, int
 HDT_API hdt_status hdt_translation_word(const hdt_triangulation *t, int32_t id, int32_t *out, size_t capacity,
                                         size_t *out_length) HDT_NOEXCEPT {
   return guarded("hdt_translation_word", [&] {
-    Triangulation &tri = of(t);
+    const Triangulation &tri = of(t);
     if (!out_length) throw ApiError(HDT_EINVAL, "out_length must not be NULL");
     check_translation(tri, id);
-    return hdt::capi::copy_word(tri.kernel().table().word(id), out, capacity, out_length);
+    return hdt::capi::copy_word(tri.table().word(id), out, capacity, out_length);
   });
 }
 
 HDT_API hdt_status hdt_translation_matrix(const hdt_triangulation *t, int32_t id, double m[4]) HDT_NOEXCEPT {
   return guarded("hdt_translation_matrix", [&] {
-    Triangulation &tri = of(t);
+    const Triangulation &tri = of(t);
     if (!m) throw ApiError(HDT_EINVAL, "m must not be NULL");
     check_translation(tri, id);
-    const auto &f = tri.kernel().table().moebius(id);
+    const auto &f = tri.table().moebius(id);
     m[0] = f.a.re, m[1] = f.a.im, m[2] = f.b.re, m[3] = f.b.im;
     return HDT_OK;
   });
@@ -197,7 +193,7 @@ HDT_API hdt_status hdt_translation_matrix(const hdt_triangulation *t, int32_t id
 HDT_API hdt_status hdt_locate(const hdt_triangulation *t, double x, double y, size_t *face,
                               int32_t *translation) HDT_NOEXCEPT {
   return guarded("hdt_locate", [&] {
-    Triangulation &tri = of(t);
+    const Triangulation &tri = of(t);
     hdt::capi::check_disk_point(x, y);
     const Triangulation::Located r = tri.locate(x, y);
     if (face) *face = r.face;
@@ -208,7 +204,7 @@ HDT_API hdt_status hdt_locate(const hdt_triangulation *t, double x, double y, si
 
 HDT_API hdt_status hdt_nearest_vertex(const hdt_triangulation *t, double x, double y, uint32_t *vertex) HDT_NOEXCEPT {
   return guarded("hdt_nearest_vertex", [&] {
-    Triangulation &tri = of(t);
+    const Triangulation &tri = of(t);
     if (!vertex) throw ApiError(HDT_EINVAL, "vertex must not be NULL");
     hdt::capi::check_disk_point(x, y);
     *vertex = tri.nearest_vertex(x, y);

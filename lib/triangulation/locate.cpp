@@ -10,7 +10,7 @@
 
 namespace hdt::triangulation {
 
-Triangulation::Hint Triangulation::hint() {
+Triangulation::Hint Triangulation::hint() const {
   if (last_vertex_ < vertices_.size() && vertices_[last_vertex_].alive()) {
     const Vertex &u = vertices_[last_vertex_];
     const Face &F = faces_[u.face];
@@ -21,7 +21,7 @@ Triangulation::Hint Triangulation::hint() {
   return {last_face_ < faces_.size() ? last_face_ : 0, 0};
 }
 
-void Triangulation::jump_near(double x, double y, TranslationId home) {
+void Triangulation::jump_near(double x, double y, TranslationId home) const {
   // Jump and walk (Devroye, Mucke, Zhu): of the last vertex and about n^(1/3)
   // random ones, the walk starts at the one nearest to the query, so that
   // queries in no particular order walk about n^(1/4) faces instead of
@@ -57,7 +57,7 @@ void Triangulation::jump_near(double x, double y, TranslationId home) {
   if (best != kNone) last_vertex_ = best;
 }
 
-Triangulation::Walk Triangulation::walk(const TranslatedPoint &q, uint32_t start, TranslationId start_frame_inverse) {
+Triangulation::Walk Triangulation::walk(const TranslatedPoint &q, uint32_t start, TranslationId start_frame_inverse) const {
   group::TranslationTable &T = kernel_->table();
   uint32_t f = start;
   TranslationId qt = T.compose(start_frame_inverse, q.translation);  // q in the canonical frame of f
@@ -90,14 +90,14 @@ Triangulation::Walk Triangulation::walk(const TranslatedPoint &q, uint32_t start
   throw std::logic_error("point location does not end: the triangulation is broken");
 }
 
-Triangulation::Located Triangulation::locate(double x, double y) {
+Triangulation::Located Triangulation::locate(double x, double y) const {
   const surface::Representative r = surface::representative(*kernel_, x, y);
   jump_near(x, y, r.translation);
   const Walk w = walk_from_hint({x, y, r.translation, -1});
   return {w.face, kernel_->table().inverse(w.query)};
 }
 
-void Triangulation::star(uint32_t v, std::vector<StarFace> *out) {
+void Triangulation::star(uint32_t v, std::vector<StarFace> *out) const {
   const Vertex &u = vertices_.at(v);
   if (!u.alive()) throw std::invalid_argument("vertex " + std::to_string(v) + " is not live");
   group::TranslationTable &T = kernel_->table();
@@ -118,7 +118,7 @@ void Triangulation::star(uint32_t v, std::vector<StarFace> *out) {
   if (frame != 0) throw std::logic_error("the star of vertex " + std::to_string(v) + " winds onto another copy");
 }
 
-void Triangulation::vertex_point(uint32_t v, double *x, double *y) {
+void Triangulation::vertex_point(uint32_t v, double *x, double *y) const {
   const Vertex &u = vertices_.at(v);
   if (!u.alive()) throw std::invalid_argument("vertex " + std::to_string(v) + " is not live");
   if (u.home == 0) {
@@ -133,7 +133,17 @@ void Triangulation::vertex_point(uint32_t v, double *x, double *y) {
   *x = z.re, *y = z.im;
 }
 
-uint32_t Triangulation::nearest_vertex(double x, double y) {
+void Triangulation::corner_translations(std::vector<TranslationId> *out) const {
+  group::TranslationTable &T = table();
+  out->resize(3 * faces_.size());
+  for (std::size_t f = 0; f < faces_.size(); ++f)
+    for (int i = 0; i < 3; ++i) {
+      const TranslationId home = vertices_[faces_[f].v[i]].home;
+      (*out)[3 * f + i] = home == 0 ? faces_[f].t[i] : T.compose(faces_[f].t[i], T.inverse(home));
+    }
+}
+
+uint32_t Triangulation::nearest_vertex(double x, double y) const {
   group::TranslationTable &T = kernel_->table();
   const surface::Representative r = surface::representative(*kernel_, x, y);
   jump_near(x, y, r.translation);

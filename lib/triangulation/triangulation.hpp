@@ -32,8 +32,17 @@ class Triangulation {
 
   int genus() const { return genus_; }
   Kernel &kernel() { return *kernel_; }
+  // The translation ids of this triangulation. A query may add the ids of
+  // elements it meets (the table is a cache that only grows; ids stay
+  // valid), hence not const.
+  group::TranslationTable &table() const { return kernel_->table(); }
   const std::vector<Vertex> &vertices() const { return vertices_; }
   const std::vector<Face> &faces() const { return faces_; }
+  // The corner translations of every face relative to its vertices'
+  // representatives (3 per face, face order): corner i of face f is
+  // out[3f + i] applied to the representative of its vertex, t h^-1 for the
+  // stored translation t and the vertex's home h (hdt_faces' convention).
+  void corner_translations(std::vector<TranslationId> *out) const;
   std::size_t vertex_count() const { return live_vertices_; }
   std::size_t dummy_count() const { return dummies_; }
 
@@ -54,12 +63,15 @@ class Triangulation {
     uint32_t face;
     TranslationId translation;  // (x, y) lies in translation(canonical copy)
   };
-  Located locate(double x, double y);
-  uint32_t nearest_vertex(double x, double y);
+  // Queries are const: what they change is the walk's starting point and
+  // caches (mutable below), and the kernel's and translation table's caches,
+  // which only grow (ids stay valid); one thread at a time, as for changes.
+  Located locate(double x, double y) const;
+  uint32_t nearest_vertex(double x, double y) const;
 
   // Checks every invariant with exact predicates; throws std::logic_error
   // naming the first broken one.
-  void validate();
+  void validate() const;
 
   bool is_dummy(uint32_t v) const { return dummy_[v]; }
   // The kernel site of vertex v, or -1: sites 0 .. 2g are vertices 1 .. 2g+1.
@@ -71,7 +83,7 @@ class Triangulation {
   TranslatedPoint corner(const Face &f, int i) const { return point(f.v[i], f.t[i]); }
   // The representative of v in F_g, rounded. A vertex away from F_g pays
   // a multiprecision image once; later calls read it from a cache.
-  void vertex_point(uint32_t v, double *x, double *y);
+  void vertex_point(uint32_t v, double *x, double *y) const;
 
  private:
   friend class DummyBuilder;
@@ -127,7 +139,7 @@ class Triangulation {
   };
   // The walk starts in the copy start_frame(canonical copy of start); the
   // argument is the inverse of that frame.
-  Walk walk(const TranslatedPoint &q, uint32_t start, TranslationId start_frame_inverse);
+  Walk walk(const TranslatedPoint &q, uint32_t start, TranslationId start_frame_inverse) const;
   // Where the next walk starts: the copy of a face around the last vertex
   // touched, the one in which that vertex sits at its representative (so
   // near the next point of a spatially sorted sequence).
@@ -135,12 +147,12 @@ class Triangulation {
     uint32_t face;
     TranslationId frame_inverse;
   };
-  Hint hint();
+  Hint hint() const;
   // Before a walk to a point in no particular order: makes last_vertex_ the
   // nearest of it and a few random vertices to (x, y), whose representative
   // is home(x + iy).
-  void jump_near(double x, double y, TranslationId home);
-  Walk walk_from_hint(const TranslatedPoint &q) {
+  void jump_near(double x, double y, TranslationId home) const;
+  Walk walk_from_hint(const TranslatedPoint &q) const {
     const Hint h = hint();
     return walk(q, h.face, h.frame_inverse);
   }
@@ -159,7 +171,7 @@ class Triangulation {
     int corner;             // v's corner in the face
     TranslationId frame;    // frame(canonical copy) is the copy around v
   };
-  void star(uint32_t v, std::vector<StarFace> *out);
+  void star(uint32_t v, std::vector<StarFace> *out) const;
 
   int genus_;
   std::unique_ptr<Kernel> kernel_;
@@ -168,13 +180,15 @@ class Triangulation {
   // first query (NaN: not computed yet). A vertex's point and home never
   // change and ids are not reused, so entries stay true; it grows with the
   // ids lazily.
-  std::vector<group::Complex<double>> representatives_;
+  mutable std::vector<group::Complex<double>> representatives_;
   std::vector<bool> dummy_;  // per vertex
   std::vector<Face> faces_;
   std::size_t live_vertices_ = 0, dummies_ = 0;
-  uint32_t last_face_ = 0;     // where the last operation ended
-  uint32_t last_vertex_ = kNone;  // the vertex last inserted or found
-  uint64_t rng_ = 0x9E3779B97F4A7C15ull;
+  // Where the next walk starts, and the walk's random choices: queries
+  // move them too (mutable), which changes no answer.
+  uint32_t last_face_ = 0;                // where the last operation ended
+  mutable uint32_t last_vertex_ = kNone;  // the vertex last inserted or found
+  mutable uint64_t rng_ = 0x9E3779B97F4A7C15ull;
 
   // Scratch space reused by every operation (no allocation on the common path).
   struct CavityStep {  // a face of the conflict region and the edges still to cross
@@ -186,7 +200,7 @@ class Triangulation {
   std::vector<uint32_t> old_faces_, new_ids_;
   std::vector<NewFace> new_faces_;
   std::vector<BoundaryEdge> boundary_;
-  std::vector<StarFace> star_;
+  mutable std::vector<StarFace> star_;  // also validate()'s
   std::vector<HoleVertex> hole_;  // remove(): the link of the vertex
   std::vector<HoleFace> hole_faces_;
   std::vector<uint32_t> link_ids_;

@@ -19,7 +19,7 @@ std::string face_name(uint32_t f) { return "face " + std::to_string(f); }
 
 }  // namespace
 
-void Triangulation::validate() {
+void Triangulation::validate() const {
   group::TranslationTable &T = kernel_->table();
   const std::size_t F = faces_.size();
   std::size_t live = 0, dummies = 0;
