@@ -4,7 +4,9 @@
  * --repeat runs, and its ratio to the same for N random points of F_g.
  * Prints a Markdown table.
  *
- *   curves_bench [--n 10000] [--genus 2,3] [--repeat 3]
+ *   curves_bench [--n 10000] [--genus 2,3] [--repeat 3] [--shape NAME]
+ *
+ * --shape runs the reference and that one shape only (for profiling).
  */
 #define _GNU_SOURCE
 #include <stdio.h>
@@ -44,12 +46,14 @@ int main(int argc, char **argv) {
   size_t n = 10000;
   int repeat = 3;
   const char *genera = "2,3";
+  const char *only = NULL;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!strcmp(argv[i], "--n")) n = (size_t)strtoull(argv[i + 1], NULL, 10);
     else if (!strcmp(argv[i], "--genus")) genera = argv[i + 1];
     else if (!strcmp(argv[i], "--repeat")) repeat = atoi(argv[i + 1]);
+    else if (!strcmp(argv[i], "--shape")) only = argv[i + 1];
     else {
-      fprintf(stderr, "usage: curves_bench [--n N] [--genus 2,3] [--repeat R]\n");
+      fprintf(stderr, "usage: curves_bench [--n N] [--genus 2,3] [--repeat R] [--shape NAME]\n");
       return 2;
     }
   }
@@ -61,6 +65,7 @@ int main(int argc, char **argv) {
     const timing reference = run(g, CURVE_RANDOM, n, repeat);
     const double total = reference.insert_ms + reference.remove_ms;
     for (int s = CURVE_RANDOM; s < CURVE_SHAPES; ++s) {
+      if (only && s != CURVE_RANDOM && strcmp(only, curve_shape_names[s])) continue;
       const timing t = s == CURVE_RANDOM ? reference : run(g, (curve_shape)s, n, repeat);
       printf("| %d | %s | %.1f | %.1f | %.2fx | %zu |\n", g, curve_shape_names[s], t.insert_ms, t.remove_ms,
              (t.insert_ms + t.remove_ms) / total, t.left);

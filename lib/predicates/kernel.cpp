@@ -37,6 +37,14 @@ struct Difference {
   double error;
 };
 
+// The stored point of p, untranslated. Points in one frame (same_frame) have
+// the signs of their stored points; after the disk filter, the double-double
+// stage decides those near a tie (points sampled along one line or circle,
+// rounded to doubles, are rarely exactly on it) at a few hundred
+// instructions, and only exact ties go on to the integer stage
+// (disk_exact.hpp).
+TranslatedPoint stored(const TranslatedPoint &p) { return {p.x, p.y, 0, -1}; }
+
 Difference difference(const FilteredPoint &a, const FilteredPoint &b) {
   Difference r;
   for (int i = 0; i < 3; ++i) r.d[i] = a.n[i] - b.n[i];
@@ -160,7 +168,7 @@ std::size_t Kernel::cache_slot(const TranslatedPoint &p) {
   uint64_t h = bits * 0x9E3779B97F4A7C15ull;
   std::memcpy(&bits, &p.y, sizeof bits);
   h ^= (bits + uint64_t(uint32_t(p.translation)) * 0xC2B2AE3D27D4EB4Full) * 0x165667B19E3779F9ull;
-  return (h >> 58) & 63;
+  return h >> (64 - kCacheBits);
 }
 
 FilteredPoint Kernel::filtered(const TranslatedPoint &p) {
@@ -241,6 +249,7 @@ int Kernel::orientation_staged(const TranslatedPoint &p, const TranslatedPoint &
   if (same_frame(p, q, r)) {
     if (const int s = disk_orientation(p.x, p.y, q.x, q.y, r.x, r.y)) return ++statistics_.filtered, s;
     ++statistics_.exact;
+    if (const int s = orientation_fast(stored(p), stored(q), stored(r)); s != 2) return ++statistics_.fast, s;
     return disk_orientation_exact(p.x, p.y, q.x, q.y, r.x, r.y);
   }
   const FilteredPoint a = filtered(p);
@@ -253,6 +262,9 @@ int Kernel::orientation_staged(const TranslatedPoint &p, const TranslatedPoint &
   // onto its vertex, and these orientations are zero without the exact stage.
   if (identical(p, q) || identical(q, r) || identical(r, p)) return ++statistics_.filtered, 0;
   ++statistics_.exact;
+  const TranslatedPoint *points[3] = {&p, &q, &r};
+  const FilteredPoint *certified[3] = {&a, &b, &c};
+  if (common_zero_coordinate(points, certified, 3)) return ++statistics_.structural, 0;
   if (const int s = orientation_refined(p, q, r); s != 2) return s;
   return orientation_exact(p, q, r);
 }
@@ -271,6 +283,9 @@ int Kernel::in_circle_filter(const TranslatedPoint &p, const TranslatedPoint &q,
   const Det3 d = det3_filtered(db.d, db.error, dc.d, dc.error, de.d, de.error);
   if (const int sg = sign_of(d.value, d.bound)) return ++statistics_.filtered, -sg;
   ++statistics_.exact;
+  const TranslatedPoint *points[4] = {&p, &q, &r, &s};
+  const FilteredPoint *certified[4] = {&a, &b, &c, &e};
+  if (common_zero_coordinate(points, certified, 4)) return ++statistics_.structural, 0;
   return in_circle_refined(p, q, r, s);
 }
 
@@ -290,12 +305,18 @@ int Kernel::in_circle_perturbed_staged(const std::array<TranslatedPoint, 4> &pt,
       return ++statistics_.filtered,
              checked("in_circle_perturbed", s, [&] { return in_circle_exact(pt[0], pt[1], pt[2], pt[3]); });
     ++statistics_.exact;
+    if (const int s = in_circle_fast(stored(pt[0]), stored(pt[1]), stored(pt[2]), stored(pt[3])); s != 2)
+      return ++statistics_.fast,
+             checked("in_circle_perturbed", s, [&] { return in_circle_exact(pt[0], pt[1], pt[2], pt[3]); });
     const int s = disk_in_circle_exact(pt[0].x, pt[0].y, pt[1].x, pt[1].y, pt[2].x, pt[2].y, pt[3].x, pt[3].y);
     if (s != 0) return checked("in_circle_perturbed", s, [&] { return in_circle_exact(pt[0], pt[1], pt[2], pt[3]); });
     return perturbed_tie(pt, vertex, nullptr);
   }
-  if (const int s = in_circle_filter(pt[0], pt[1], pt[2], pt[3]); s != 2)
-    return checked("in_circle_perturbed", s, [&] { return in_circle_exact(pt[0], pt[1], pt[2], pt[3]); });
+  if (const int s = in_circle_filter(pt[0], pt[1], pt[2], pt[3]); s != 2) {
+    checked("in_circle_perturbed", s, [&] { return in_circle_exact(pt[0], pt[1], pt[2], pt[3]); });
+    if (s != 0) return s;
+    return perturbed_tie(pt, vertex, nullptr);  // a structural zero (structural_zero.cpp)
+  }
   const std::array<ExactRow, 4> rows{exact_row(pt[0]), exact_row(pt[1]), exact_row(pt[2]), exact_row(pt[3])};
   if (const int s = field_.sign(det4(rows))) return s;
   return perturbed_tie(pt, vertex, &rows);

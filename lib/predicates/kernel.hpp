@@ -5,8 +5,10 @@
 // h(x + iy), an algebraic point. Every predicate returns the mathematically
 // correct sign for every input: a double-precision evaluation with a
 // certified error bound decides when it can (static for untranslated points,
-// disk_filter.hpp; dynamic otherwise), then refined stages (double-double,
-// 133-bit MPFR); otherwise the value is computed exactly in the field K_g
+// disk_filter.hpp; dynamic otherwise), then exact zeros that follow from
+// the rows' structure (structural_zero.cpp: points on an axis of F_g and
+// translations along it), then refined stages (double-double, 133-bit
+// MPFR); otherwise the value is computed exactly in the field K_g
 // (exact/field.hpp).
 //
 // Formulas, on the hyperboloid (N = the point's hyperboloid vector):
@@ -102,6 +104,7 @@ struct FilterStatistics {
   unsigned long exact = 0;
   unsigned long fast = 0;     // decided by the double-double stage (counted in exact too)
   unsigned long refined = 0;  // decided by the 133-bit stage (counted in exact too)
+  unsigned long structural = 0;  // exact zeros of structural_zero.cpp (counted in exact too)
 };
 
 class Kernel {
@@ -247,10 +250,21 @@ class Kernel {
   int orientation_staged(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int large_circumdisk_staged(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int beyond_side_filtered(const FilteredPoint &a, int side, const TranslatedPoint &p);
-  // The filtered in-circle sign, or 2 when the filter cannot decide.
+  // The in-circle sign of the stages before exact (double filter,
+  // structural zero, refined): +1 or -1, 0 only for a structural zero, or 2
+  // when none decides.
   int in_circle_filter(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                        const TranslatedPoint &s);
   const group::ExactLorentz &exact_matrix(TranslationId id);
+  // The structural-zero stage (structural_zero.cpp): true when one of
+  // coordinates 1, 2 is exactly zero in the exact rows of all n points (a
+  // sufficient condition for the orientation and in-circle determinants to
+  // vanish). filtered[k] is points[k]'s certified double point.
+  bool common_zero_coordinate(const TranslatedPoint *const *points, const FilteredPoint *const *filtered, int n);
+  unsigned row_zeros(const TranslatedPoint &p);  // bit i: coordinate i (1, 2) of p's exact row is 0
+  unsigned matrix_zeros(TranslationId id);       // bit 3i + j: entry (i, j) of the exact matrix is 0
+  std::vector<uint16_t> matrix_zeros_;           // by translation id, lazily (bit 15: computed)
+  std::vector<uint16_t> site_zeros_;             // by site: bit 1 X = 0, bit 2 Y = 0 (bit 15: computed)
   exact::FieldElement det3(const std::array<const std::array<exact::FieldElement, 4> *, 3> &rows) const;
   exact::FieldElement det4(const std::array<ExactRow, 4> &rows) const;
 
@@ -259,14 +273,18 @@ class Kernel {
   FilteredPoint filtered(const TranslatedPoint &p);
   FilteredPoint compute_filtered(const TranslatedPoint &p);
   // A small direct-mapped cache of filtered points: a walk or a conflict
-  // search asks for the same few corners and query again and again.
+  // search asks for the same few corners and query again and again. 256
+  // slots: points along a curve that crosses the sides of F_g make conflict
+  // searches of a few dozen translated points, and 64 slots missed a
+  // quarter of their lookups (to 5% more instructions per insertion).
   template <class Point>
   struct CachedPoint {
     TranslatedPoint key{NAN, NAN, -1, -1};  // NaN: identical to no point
     Point point;
   };
-  static std::size_t cache_slot(const TranslatedPoint &p);  // 0 .. 63
-  std::array<CachedPoint<FilteredPoint>, 64> filtered_cache_{};
+  static constexpr int kCacheBits = 8;
+  static std::size_t cache_slot(const TranslatedPoint &p);  // 0 .. 2^kCacheBits - 1
+  std::array<CachedPoint<FilteredPoint>, std::size_t(1) << kCacheBits> filtered_cache_{};
   // The same for the double-double stage, which runs for most faces near
   // the corners of F_g at large genus (where the hyperboloid is nearly flat
   // in the coordinates and the double filter cannot decide in-circle tests).
@@ -274,7 +292,7 @@ class Kernel {
     bool ok;  // fast_point's answer
     FastPoint point;
   };
-  std::array<CachedPoint<FastEntry>, 64> fast_cache_{};
+  std::array<CachedPoint<FastEntry>, std::size_t(1) << kCacheBits> fast_cache_{};
 
   group::TranslationTable table_;
   struct SiteData {

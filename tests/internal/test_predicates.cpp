@@ -634,6 +634,44 @@ START_TEST(exact_zeros) {
 }
 END_TEST
 
+// The structural-zero stage (predicates/structural_zero.cpp): points on the
+// real or imaginary axis under powers of the generator along it have an
+// exactly zero row coordinate, so the stage decides their orientation and
+// in-circle zeros; points just off the axis, or moved off it by another
+// translation, must not be taken for zeros.
+START_TEST(structural_zeros) {
+  const int g = kGenera[_i];
+  Kernel kernel{Presentation(g)};
+  Reference ref(kernel);
+  const Presentation &p = kernel.presentation();
+  Rng rng(5000 + g);
+  kernel.reset_statistics();
+  for (int trial = 0; trial < 40; ++trial) {
+    const bool real = trial % 2 == 0;
+    const Letter k = real ? 0 : Letter(g);  // the generator along the axis
+    std::array<TranslatedPoint, 4> on, off, moved;
+    for (int i = 0; i < 4; ++i) {
+      const double t = dyadic(rng, 900) + (i + 1) * 0x1p-20;  // distinct points
+      const int n = std::uniform_int_distribution<int>(-2, 2)(rng);
+      const TranslationId h = translate_power(kernel, 0, Word{k}, n);
+      const TranslationId other = translate_power(kernel, 0, Word{Letter((k + 1) % p.letter_count())}, n == 0 ? 1 : n);
+      on[i] = real ? TranslatedPoint{t, 0, h} : TranslatedPoint{0, t, h};
+      off[i] = real ? TranslatedPoint{t, 0x1p-40, h} : TranslatedPoint{0x1p-40, t, h};
+      moved[i] = i == 3 ? (real ? TranslatedPoint{t, 0, other} : TranslatedPoint{0, t, other}) : on[i];
+    }
+    ck_assert_int_eq(check_orientation(kernel, ref, {on[0], on[1], on[2]}, "on an axis"), 0);
+    ck_assert_int_eq(check_in_circle(kernel, ref, on, "on an axis"), 0);
+    check_orientation(kernel, ref, {off[0], off[1], off[2]}, "just off an axis");
+    check_in_circle(kernel, ref, off, "just off an axis");
+    check_orientation(kernel, ref, {moved[3], moved[1], moved[2]}, "moved off an axis");
+    check_in_circle(kernel, ref, moved, "moved off an axis");
+  }
+  // Most of the zeros above have points in different frames: the stage, not
+  // the field, decides them.
+  ck_assert_uint_gt(kernel.statistics().structural, 40);
+}
+END_TEST
+
 // 3. in_circle_perturbed: the symbolic perturbation.
 static int permutation_sign(const std::array<int, 4> &perm) {
   int s = 1;
@@ -948,6 +986,7 @@ int main(void) {
     tcase_add_loop_test(tc, random_configurations_agree_with_reference, 0, 3);
     tcase_add_loop_test(tc, near_degenerate_configurations_agree_with_reference, 0, 3);
     tcase_add_loop_test(tc, exact_zeros, 0, 3);
+    tcase_add_loop_test(tc, structural_zeros, 0, 3);
     tcase_add_loop_test(tc, in_circle_perturbed_policy, 0, 3);
     tcase_add_test(tc, representative_is_canonical);
     tcase_add_test(tc, filter_decides_random_inputs);
