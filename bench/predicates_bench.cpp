@@ -25,7 +25,7 @@ double now() {
 std::vector<TranslatedPoint> random_points(predicates::Kernel &kernel, std::size_t count) {
   std::mt19937_64 rng(12345);
   std::uniform_real_distribution<double> coordinate(-0.8, 0.8);
-  std::uniform_int_distribution<int> id(0, int(kernel.table().neighbour_count()) - 1);
+  std::uniform_int_distribution<int> id(0, int(kernel.surface().table().neighbour_count()) - 1);
   std::vector<TranslatedPoint> points;
   while (points.size() < count) {
     const double x = coordinate(rng), y = coordinate(rng);
@@ -50,7 +50,8 @@ int main(int argc, char **argv) {
   const std::size_t calls = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 20000;
   std::printf("%-6s %-12s %14s %14s %10s\n", "genus", "predicate", "filtered ns", "exact ns", "exact/filt");
   for (int g : {2, 4, 8, 16}) {
-    predicates::Kernel kernel{group::Presentation(g)};
+    surface::Surface M(g);
+    predicates::Kernel kernel{M};
     const std::vector<TranslatedPoint> pts = random_points(kernel, calls + 4);
     // Exact calls cost far more: fewer of them, shrinking with the genus.
     const std::size_t exact_calls = std::max<std::size_t>(20, calls / (20 * std::size_t(g)));

@@ -1,13 +1,9 @@
 // Surface facts: systole, the polygon's vertices and side midpoints.
-#include <memory>
-
 #include "capi/guard.hpp"
 #include "group/presentation.hpp"
 #include "hdt.h"
-#include "group/word_matrix.hpp"
-#include "predicates/kernel.hpp"
+#include "predicates/representative.hpp"
 #include "surface/polygon.hpp"
-#include "surface/representative.hpp"
 #include "surface/systole.hpp"
 
 using hdt::capi::ApiError;
@@ -26,16 +22,6 @@ hdt_status polygon_point(const char *function, int genus, int k, double *x, doub
     *y = z.im;
     return HDT_OK;
   });
-}
-
-// The kernel of the genus last asked for on this thread: building one costs
-// far more than a representative (the table of N), and a caller usually asks
-// many times in a row for one genus.
-hdt::predicates::Kernel &thread_kernel(int genus) {
-  thread_local std::unique_ptr<hdt::predicates::Kernel> kernel;
-  if (!kernel || kernel->presentation().genus() != genus)
-    kernel = std::make_unique<hdt::predicates::Kernel>(hdt::group::Presentation(genus));
-  return *kernel;
 }
 
 }  // namespace
@@ -63,17 +49,10 @@ HDT_API hdt_status hdt_point_representative(int genus, double x, double y, doubl
     hdt::capi::check_genus(genus);
     if (!length) throw ApiError(HDT_EINVAL, "length must not be NULL");
     hdt::capi::check_disk_point(x, y);
-    const hdt::group::Presentation p(genus);
-    hdt::predicates::Kernel &kernel = thread_kernel(genus);
-    const hdt::surface::Representative r = hdt::surface::representative(kernel, x, y);
-    const hdt::group::Word &w = kernel.table().word(r.translation);
-    const hdt_status status = hdt::capi::copy_word(w, word, capacity, length);
-    if (rx || ry) {
-      const auto image = r.translation == 0 ? hdt::group::Complex<double>{x, y}
-                                            : hdt::group::accurate_image(p, w, {x, y});
-      if (rx) *rx = image.re;
-      if (ry) *ry = image.im;
-    }
+    const hdt::predicates::RepresentativeImage r = hdt::predicates::representative_image(genus, x, y, rx || ry);
+    const hdt_status status = hdt::capi::copy_word(r.word, word, capacity, length);
+    if (rx) *rx = r.image.re;
+    if (ry) *ry = r.image.im;
     return status;
   });
 }

@@ -9,6 +9,7 @@
 #include "group/word_matrix.hpp"
 #include "predicates/disk_exact.hpp"
 #include "predicates/filtered_point.hpp"
+#include "surface/systole.hpp"
 
 namespace hdt::predicates {
 
@@ -54,37 +55,30 @@ Difference difference(const FilteredPoint &a, const FilteredPoint &b) {
 
 }  // namespace
 
-Kernel::Kernel(const group::Presentation &p) : table_(p), field_(exact::field_of_genus(p.genus())) {
-  for (group::Letter k = 0; k < p.letter_count(); ++k) {
-    const auto L = group::accurate_lorentz(p, group::Word{k});
-    side_normals_.push_back({1.0 - L.m[0][0], L.m[1][0], L.m[2][0]});  // O - g_k(O), as <N, .> coefficients
-    exact_generators_.push_back(std::make_unique<group::ExactLorentz>(group::exact_generator(field_, k)));
-  }
-  const exact::CyclotomicField &K = field_.cyclotomic();
-  const Cyclotomic s = K.sin_2pi(1);
-  sin2_ = K.mul(s, s);
-  // Side k's line is the bisector of O and g_k(O), at distance r (the
-  // inradius) from O across the direction theta_k of g_k(O); its ends lie at
-  // theta_k +- beta on the circle, cos beta = tanh r, and the line and all
-  // beyond it lie in the sector |arg z - theta_k| < beta. Each side is listed
-  // in the sectors (2 per side, of 2 pi / 8g) meeting that sector widened by
-  // 1e-6 radians, far more than the roundings of atan2 and of theta_k.
-  const int n = p.letter_count(), sectors = 2 * n;
-  sides_by_sector_.assign(std::size_t(sectors), {});
-  for (int k = 0; k < n; ++k) {
-    const double L00 = 1 - side_normals_[k][0];  // cosh 2r
-    const double beta = std::acos(std::sqrt((L00 - 1) / (L00 + 1))) + 1e-6;
-    const double theta = std::atan2(side_normals_[k][2], side_normals_[k][1]);
-    const double width = 2 * M_PI / sectors;
-    const long first = long(std::floor((theta - beta + M_PI) / width)), last = long(std::floor((theta + beta + M_PI) / width));
-    for (long j = first; j <= last; ++j) sides_by_sector_[std::size_t(((j % sectors) + sectors) % sectors)].push_back(k);
-  }
-}
+Kernel::Kernel(surface::Surface &surface)
+    : surface_(surface), table_(surface.table()), field_(surface.field()) {}
 
-const std::vector<int> &Kernel::sides_near(double angle) const {
-  const int sectors = int(sides_by_sector_.size());
-  const long j = long(std::floor((angle + M_PI) / (2 * M_PI / sectors)));
-  return sides_by_sector_[std::size_t(((j % sectors) + sectors) % sectors)];
+const Kernel::SiteStages &Kernel::site_stages(int32_t site) {
+  while (site_stages_.size() <= std::size_t(site)) {
+    const surface::Site &d = surface_.site(int32_t(site_stages_.size()));
+    const ExactSite &e = d.exact;
+    // N = (Z^2 + X^2 + Y^2, 2XZ, 2YZ) / w, w = Z^2 - X^2 - Y^2, each part
+    // exact before rounding.
+    const FieldElement zz = field_.mul(e.Z, e.Z);
+    const FieldElement r2 = field_.add(field_.mul(e.X, e.X), field_.mul(e.Y, e.Y));
+    const FieldElement two_z = field_.add(e.Z, e.Z);
+    const double den = field_.approximate(field_.sub(zz, r2));
+    SiteStages stages;
+    stages.n[0] = field_.approximate(field_.add(zz, r2)) / den;
+    stages.n[1] = field_.approximate(field_.mul(e.X, two_z)) / den;
+    stages.n[2] = field_.approximate(field_.mul(e.Y, two_z)) / den;
+    if (d.has_approximation) {
+      stages.has_mid = true, stages.mid = d.approximation;
+      stages.fast = {round_to_fast(stages.mid.re), round_to_fast(stages.mid.im)};
+    }
+    site_stages_.push_back(stages);
+  }
+  return site_stages_[std::size_t(site)];
 }
 
 const group::ExactLorentz &Kernel::exact_matrix(TranslationId id) {
@@ -98,7 +92,7 @@ Kernel::ExactRow Kernel::exact_row(const TranslatedPoint &p) {
   // z = (X + iY)/Z: p^ = (Z^2 + X^2 + Y^2, 2XZ, 2YZ) and w = Z^2 - X^2 - Y^2,
   // both Z^2 times the values for z (a positive factor).
   const exact::CyclotomicField &K = field_.cyclotomic();
-  const ExactSite site = p.site >= 0 ? sites_.at(p.site).exact
+  const ExactSite site = p.site >= 0 ? surface_.site(p.site).exact
                                      : ExactSite{field_.from_double(p.x), field_.from_double(p.y),
                                                  field_.from_cyclotomic(K.integer(1))};
   const FieldElement xx = field_.mul(site.X, site.X), yy = field_.mul(site.Y, site.Y);
@@ -120,45 +114,12 @@ const Cyclotomic &Kernel::scale(int letters) {
   // sin(pi/4g)^(2 letters), by repeated multiplication, kept for reuse.
   const exact::CyclotomicField &K = field_.cyclotomic();
   if (scale_powers_.empty()) scale_powers_.push_back(K.integer(1));
-  while (int(scale_powers_.size()) <= letters) scale_powers_.push_back(K.mul(scale_powers_.back(), sin2_));
+  while (int(scale_powers_.size()) <= letters) scale_powers_.push_back(K.mul(scale_powers_.back(), surface_.sin2()));
   return scale_powers_[letters];
 }
 
-int32_t Kernel::add_site(const ExactSite &site, double *x, double *y, const group::Complex<MidReal> *approximation,
-                         const group::Complex<double> *rounded) {
-  if (field_.sign(site.Z) <= 0) throw std::domain_error("add_site: Z must be positive");
-  const FieldElement zz = field_.mul(site.Z, site.Z);
-  const FieldElement w = field_.sub(zz, field_.add(field_.mul(site.X, site.X), field_.mul(site.Y, site.Y)));
-  if (field_.sign(w) <= 0) throw std::domain_error("add_site: the point is not inside the open unit disk");
-  // X, Y and Z rounded, then divided: within 3u |.| of exact, and a
-  // correctly rounded value (within u |.|) is no further from these than 4u.
-  const double z = field_.approximate(site.Z);
-  SiteData data{site, field_.approximate(site.X) / z, field_.approximate(site.Y) / z, 0, {0, 0, 0}, false, {}, {}};
-  data.rounding = 4 * kUnit * std::max(std::abs(data.x), std::abs(data.y)) + 0x1p-100;
-  if (rounded) {
-    if (!(std::abs(rounded->re - data.x) <= data.rounding && std::abs(rounded->im - data.y) <= data.rounding))
-      throw std::logic_error("add_site: the given rounding is not this point's");
-    data.x = rounded->re, data.y = rounded->im;
-  }
-  // N = (Z^2 + X^2 + Y^2, 2XZ, 2YZ) / w, each part exact before rounding.
-  const FieldElement r2 = field_.add(field_.mul(site.X, site.X), field_.mul(site.Y, site.Y));
-  const FieldElement two_z = field_.add(site.Z, site.Z);
-  const double den = field_.approximate(w);
-  data.n[0] = field_.approximate(field_.add(zz, r2)) / den;
-  data.n[1] = field_.approximate(field_.mul(site.X, two_z)) / den;
-  data.n[2] = field_.approximate(field_.mul(site.Y, two_z)) / den;
-  if (approximation) {
-    data.has_mid = true, data.mid = *approximation;
-    data.fast = {round_to_fast(data.mid.re), round_to_fast(data.mid.im)};
-  }
-  sites_.push_back(data);
-  *x = data.x;
-  *y = data.y;
-  return int32_t(sites_.size() - 1);
-}
-
 TranslatedPoint Kernel::site_point(int32_t site, TranslationId translation) const {
-  const SiteData &d = sites_.at(site);
+  const surface::Site &d = surface_.site(site);
   return {d.x, d.y, translation, site};
 }
 
@@ -185,7 +146,7 @@ FilteredPoint Kernel::compute_filtered(const TranslatedPoint &p) {
   if (p.site < 0) return filtered_point(p.x, p.y, L);
   // A site's hyperboloid vector is stored rounded (4u per entry): apply L
   // (u per entry) with three more roundings.
-  const double *n = sites_[p.site].n;
+  const double *n = site_stages(p.site).n;
   FilteredPoint r;
   double worst = 0;
   for (int i = 0; i < 3; ++i) {
@@ -233,8 +194,8 @@ int Kernel::in_circle_exact(const TranslatedPoint &p, const TranslatedPoint &q, 
 int Kernel::beyond_side_exact(const TranslatedPoint &p, int side) {
   // <M_h p^, s^2 e0 - M_k e0>, a positive multiple of <N, O - g_k(O)>.
   const ExactRow row = exact_row(p);
-  const group::ExactLorentz &G = *exact_generators_.at(side);
-  const FieldElement n0 = field_.sub(field_.from_cyclotomic(sin2_), G.m[0][0]);
+  const group::ExactLorentz &G = surface_.exact_generator(side);
+  const FieldElement n0 = field_.sub(field_.from_cyclotomic(surface_.sin2()), G.m[0][0]);
   FieldElement value = field_.mul(row.v[0], n0);
   value = field_.add(value, field_.mul(row.v[1], G.m[1][0]));
   value = field_.add(value, field_.mul(row.v[2], G.m[2][0]));
@@ -373,13 +334,13 @@ FieldElement Kernel::perturbation_coefficient(const std::array<ExactRow, 4> &row
 
 void Kernel::beyond_sides(const TranslatedPoint &p, int *signs) {
   const FilteredPoint a = filtered(p);
-  for (int k = 0; k < int(side_normals_.size()); ++k) signs[k] = beyond_side_filtered(a, k, p);
+  for (int k = 0; k < surface_.side_count(); ++k) signs[k] = beyond_side_filtered(a, k, p);
 }
 
 int Kernel::beyond_side(const TranslatedPoint &p, int side) { return beyond_side_filtered(filtered(p), side, p); }
 
 int Kernel::beyond_side_filtered(const FilteredPoint &a, int side, const TranslatedPoint &p) {
-  const auto &n = side_normals_.at(side);
+  const auto &n = surface_.side_normal(side);
   // <N, n> with the Minkowski signs folded into n (n = (1 - Q0, Q1, Q2)).
   const double value = a.n[0] * n[0] + a.n[1] * n[1] + a.n[2] * n[2];
   const double size = std::abs(a.n[0] * n[0]) + std::abs(a.n[1] * n[1]) + std::abs(a.n[2] * n[2]);
@@ -452,8 +413,7 @@ int Kernel::large_circumdisk_exact(const TranslatedPoint &p, const TranslatedPoi
   const FieldElement mm =
       field_.sub(field_.mul(c[0], c[0]), field_.add(field_.mul(c[1], c[1]), field_.mul(c[2], c[2])));
   if (field_.sign(mm) <= 0) return 1;  // not a circle: unbounded
-  const exact::CyclotomicField &K = field_.cyclotomic();
-  const FieldElement k = field_.from_cyclotomic(K.add(K.integer(1), K.cos_2pi(2)));  // 1 + cos(pi/2g)
+  const FieldElement &k = surface_.quarter_systole_cosh2();  // 1 + cos(pi/2g)
   return field_.sign(field_.sub(field_.mul(c[3], c[3]), field_.mul(k, mm))) >= 0 ? 1 : -1;
 }
 
@@ -479,7 +439,7 @@ int Kernel::large_circumdisk_staged(const TranslatedPoint &p, const TranslatedPo
   // <m, m> = c0^2 - c1^2 - c2^2 and Q = c3^2 - k <m, m>, k = 1 + cos(pi/2g) in [1, 2].
   const double mm = c[0] * c[0] - c[1] * c[1] - c[2] * c[2];
   const double emm = 3 * (2 * cmax * ec) + 6 * kUnit * 3 * cmax * cmax;
-  const double k = 1 + std::cos(M_PI / (2.0 * presentation().genus()));  // within 4u of the exact value
+  const double k = surface::quarter_systole_cosh2<double>(surface_.genus());  // within 4u of the exact value
   const double Q = c3 * c3 - k * mm;
   const double eQ = 2 * c3max * e3 + 2 * emm + 8 * kUnit * k * 3 * cmax * cmax + 4 * kUnit * c3max * c3max;
   const double bound_mm = emm * 1.01, bound_Q = eQ * 1.01;

@@ -44,22 +44,18 @@
 #include "predicates/disk_filter.hpp"
 #include "predicates/double_double.hpp"
 #include "predicates/filtered_point.hpp"
+#include "surface/surface.hpp"
 
 namespace hdt::predicates {
 
 using group::TranslationId;
 
-// A point of the disk with exact algebraic coordinates: z = (X + iY) / Z
-// with X, Y, Z in K_g and Z > 0 (the points of Q0, rotated images of
-// rational points). Registered with Kernel::add_site.
-struct ExactSite {
-  exact::FieldElement X, Y, Z;
-};
+using surface::ExactSite;
 
 struct TranslatedPoint {
   double x, y;  // the stored point, |x + iy| < 1: exact, or a site's rounding
   TranslationId translation;
-  int32_t site = -1;  // >= 0: the point is kernel site `site`, (x, y) its rounding
+  int32_t site = -1;  // >= 0: the point is the surface's site `site`, (x, y) its rounding
 };
 
 // The point is (x, y) itself, exactly: the disk filters apply.
@@ -109,11 +105,10 @@ struct FilterStatistics {
 
 class Kernel {
  public:
-  explicit Kernel(const group::Presentation &p);
+  // The predicates on `surface`, which must outlive the kernel.
+  explicit Kernel(surface::Surface &surface);
 
-  const group::Presentation &presentation() const { return table_.presentation(); }
-  group::TranslationTable &table() { return table_; }
-  const exact::Field &field() const { return field_; }
+  surface::Surface &surface() const { return surface_; }
 
   int orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
 #ifndef HDT_CHECK_PREDICATES
@@ -144,11 +139,6 @@ class Kernel {
     return in_circle_perturbed_staged(points, vertex);
   }
   int beyond_side(const TranslatedPoint &p, int side);
-  // The sides whose line may hold or have beyond it a disk point of
-  // argument `angle` (radians, atan2's): every other side has
-  // beyond_side = -1 there. Half the sides of F_g at genus 2, one or two at
-  // large genus.
-  const std::vector<int> &sides_near(double angle) const;
   // beyond_side for every side k = 0..4g-1 into signs[k], the point's
   // filtered vector computed once.
   void beyond_sides(const TranslatedPoint &p, int *signs);
@@ -180,16 +170,7 @@ class Kernel {
   bool same_point_exact(const TranslatedPoint &p, const TranslatedPoint &q);
   int compare_distance_exact(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b);
 
-  // Registers an exact algebraic point; returns its site id and sets *x, *y
-  // to its coordinates rounded to double. Throws std::domain_error unless
-  // Z > 0 and the point lies in the open unit disk.
-  // approximation (may be null): the point's coordinates within 2^-128,
-  // which lets the second filter stage handle the site. rounded (may be
-  // null): the coordinates correctly rounded, when the caller knows them
-  // (the kernel's own rounding can be an ulp off); checked against the
-  // kernel's, used as the site's doubles.
-  int32_t add_site(const ExactSite &site, double *x, double *y, const group::Complex<MidReal> *approximation = nullptr,
-                   const group::Complex<double> *rounded = nullptr);
+  // The surface's site `site` under `translation`.
   TranslatedPoint site_point(int32_t site, TranslationId translation) const;
 
   const FilterStatistics &statistics() const { return statistics_; }
@@ -294,25 +275,21 @@ class Kernel {
   };
   std::array<CachedPoint<FastEntry>, std::size_t(1) << kCacheBits> fast_cache_{};
 
-  group::TranslationTable table_;
-  struct SiteData {
-    ExactSite exact;
-    double x, y, rounding;  // |rounded - exact| <= rounding per coordinate
-    double n[3];            // the hyperboloid vector, each entry within 4u relative
-    bool has_mid = false;   // mid: the coordinates within 2^-128
+  surface::Surface &surface_;
+  group::TranslationTable &table_;  // surface_'s
+  const exact::Field &field_;       // surface_'s
+  // What the stages need of a site, derived from the surface's site once.
+  struct SiteStages {
+    double n[3];           // the hyperboloid vector, each entry within 4u relative
+    bool has_mid = false;  // mid: the coordinates within 2^-128
     group::Complex<MidReal> mid;
     group::Complex<FastReal> fast;  // mid rounded: within 2^-128 + 2^-106 (has_mid only)
   };
-  std::vector<SiteData> sites_;
-  const exact::Field &field_;
+  const SiteStages &site_stages(int32_t site);
+  std::vector<SiteStages> site_stages_;  // by site id, filled up to the last one asked for
   std::vector<std::unique_ptr<group::ExactLorentz>> exact_matrices_;  // by translation id, lazily
-  std::vector<std::array<double, 3>> side_normals_;  // O - g_k(O), rounded
-  std::vector<std::vector<int>> sides_by_sector_;     // sides_near, by sector of angle
-  std::vector<std::unique_ptr<group::ExactLorentz>> exact_generators_;
   // sin(pi/4g)^(2 letters): the positive factor of an exact matrix's rows.
   const exact::Cyclotomic &scale(int letters);
-
-  exact::Cyclotomic sin2_;  // sin(pi/4g)^2
   std::vector<exact::Cyclotomic> scale_powers_;
   FilterStatistics statistics_;
 };

@@ -30,6 +30,7 @@
 #include <cmath>
 
 #include "exact/precision_ladder.hpp"
+#include "surface/systole.hpp"
 #include "group/generators.hpp"
 #include "group/word_matrix.hpp"
 #include "predicates/kernel.hpp"
@@ -206,13 +207,13 @@ const group::Lorentz<Mid> &Kernel::mid_matrix(TranslationId id) {
   if (std::size_t(id) >= mid_matrices_.size()) mid_matrices_.resize(table_.size());
   auto &slot = mid_matrices_.at(id);
   if (!slot)
-    slot = std::make_unique<group::Lorentz<Mid>>(group::accurate_lorentz_as<Mid>(presentation(), table_.word(id)));
+    slot = std::make_unique<group::Lorentz<Mid>>(group::accurate_lorentz_as<Mid>(surface_.presentation(), table_.word(id)));
   return *slot;
 }
 
 bool Kernel::mid_point(const TranslatedPoint &p, MidPoint *out) {
   if (p.site >= 0) {
-    const SiteData &site = sites_[p.site];
+    const SiteStages &site = site_stages(p.site);
     if (!site.has_mid) return false;
     return refined_point(site.mid.re, site.mid.im, 0x1p-128, &mid_matrix(p.translation), kMidUnit, out);
   }
@@ -240,7 +241,7 @@ int Kernel::large_circumdisk_mid(const TranslatedPoint &p, const TranslatedPoint
   using std::cos;
   // pi and pi/2g within U each, cos within U plus its argument's error
   // (|sin| <= 1, the argument <= pi/4), the sum U: within 4U of k >= 1.
-  const Mid k = Mid(1) + cos(exact::pi<Mid>() / Mid(2 * presentation().genus()));
+  const Mid k = surface::quarter_systole_cosh2<Mid>(surface_.genus());
   return large_circumdisk_sign(a, b, e, k, kMidUnit);
 }
 
@@ -261,7 +262,7 @@ const group::Lorentz<Fast> &Kernel::fast_matrix(TranslationId id) {
   // Lorentz product of accurate_lorentz_as loses about twice as many bits
   // per letter: this puts most words of N on a lower rung.)
   const group::Word &word = table_.word(id);
-  const double bits = group::moebius_precision_bits(presentation(), word.size(), 127);
+  const double bits = group::moebius_precision_bits(surface_.presentation(), word.size(), 127);
   if (bits > exact::ladder_top_bits()) {
     // The mid matrix (within 2^-133 |L_ij| + 2^-197 of the exact one, see
     // word_matrix.hpp) rounded to double-double (2^-106 relative).
@@ -275,7 +276,7 @@ const group::Lorentz<Fast> &Kernel::fast_matrix(TranslationId id) {
   slot = exact::with_precision(bits, [&](auto zero) {
     using U = decltype(zero);
     const group::Lorentz<U> M =
-        group::Lorentz<U>::from_moebius(group::shared_generators<U>(presentation()).moebius(word));
+        group::Lorentz<U>::from_moebius(group::shared_generators<U>(surface_.presentation()).moebius(word));
     auto L = std::make_unique<group::Lorentz<Fast>>();
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) L->m[i][j] = round_mp(M.m[i][j]);
@@ -300,7 +301,7 @@ bool Kernel::compute_fast_point(const TranslatedPoint &p, FastPoint *out) {
   if (p.site >= 0) {
     // site.fast: the mid coordinates (within 2^-128 of the exact ones) rounded
     // (2^-106 |.| < 2^-106 more, |x|, |y| < 1).
-    const SiteData &site = sites_[p.site];
+    const SiteStages &site = site_stages(p.site);
     if (!site.has_mid) return false;
     return refined_point(site.fast.re, site.fast.im, 0x1p-128 + 0x1p-106, &fast_matrix(p.translation), kFastUnit, out);
   }
@@ -327,7 +328,7 @@ int Kernel::large_circumdisk_fast(const TranslatedPoint &p, const TranslatedPoin
   if (fast_circumdisk_k_.hi == 0) {
     // The mid stage's k (within 4 * 2^-133) rounded (2^-106): within U.
     using std::cos;
-    fast_circumdisk_k_ = round_mp(Mid(1) + cos(exact::pi<Mid>() / Mid(2 * presentation().genus())));
+    fast_circumdisk_k_ = round_mp(surface::quarter_systole_cosh2<Mid>(surface_.genus()));
   }
   return large_circumdisk_sign(a, b, e, fast_circumdisk_k_, kFastUnit);
 }

@@ -53,10 +53,10 @@ unsigned Kernel::row_zeros(const TranslatedPoint &p) {
   // Bit j of hat_zeros: hat_j = 0 exactly.
   unsigned hat_zeros;
   if (p.site >= 0) {
-    if (site_zeros_.size() < sites_.size()) site_zeros_.resize(sites_.size(), 0);
+    if (site_zeros_.size() < surface_.site_count()) site_zeros_.resize(surface_.site_count(), 0);
     uint16_t &mask = site_zeros_[std::size_t(p.site)];
     if (!(mask & kKnown)) {
-      const ExactSite &s = sites_[std::size_t(p.site)].exact;
+      const ExactSite &s = surface_.site(p.site).exact;
       mask = uint16_t((field_.is_zero(s.X) ? 2u : 0u) | (field_.is_zero(s.Y) ? 4u : 0u) | kKnown);
     }
     hat_zeros = mask & ~kKnown;

@@ -11,7 +11,7 @@ int wrap(int k, int n) { return ((k % n) + n) % n; }
 
 }  // namespace
 
-predicates::ExactSite exact_vertex(const exact::Field &field, int k) {
+ExactSite exact_vertex(const exact::Field &field, int k) {
   const exact::CyclotomicField &K = field.cyclotomic();
   const long angle = 2L * wrap(k, 4 * field.genus()) + 1;  // in units of 2 pi / 8g
   // sigma cos, sigma sin: the sigma part of a FieldElement.
@@ -19,7 +19,7 @@ predicates::ExactSite exact_vertex(const exact::Field &field, int k) {
           field.from_cyclotomic(K.integer(1))};
 }
 
-predicates::ExactSite exact_side_midpoint(const exact::Field &field, int k) {
+ExactSite exact_side_midpoint(const exact::Field &field, int k) {
   const exact::CyclotomicField &K = field.cyclotomic();
   const long angle = 2L * wrap(k, 4 * field.genus());
   const Cyclotomic radius = K.sub(K.cos_2pi(1), K.sin_2pi(1));  // c - s

@@ -6,11 +6,11 @@
 // since tanh(d/2)^2 = (A-1)/(A+1) = (c-s)^2 / cos(pi/2g).
 #pragma once
 
-#include "predicates/kernel.hpp"
+#include "surface/surface.hpp"
 
 namespace hdt::surface {
 
-predicates::ExactSite exact_vertex(const exact::Field &field, int k);
-predicates::ExactSite exact_side_midpoint(const exact::Field &field, int k);
+ExactSite exact_vertex(const exact::Field &field, int k);
+ExactSite exact_side_midpoint(const exact::Field &field, int k);
 
 }  // namespace hdt::surface

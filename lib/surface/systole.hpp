@@ -15,6 +15,15 @@ T systole(int genus) {
   return T(2) * acosh(T(1) + T(2) * cos(exact::pi<T>() / (T(2) * T(genus))));
 }
 
+// cosh^2(sys/4) = (1 + cosh(sys/2)) / 2 = 1 + cos(pi/2g), in [1, 2]: a circle
+// has diameter < sys/2 when cosh^2 of its radius is below it (the
+// dummy-point condition). Exactly: Surface::quarter_systole_cosh2.
+template <class T>
+T quarter_systole_cosh2(int genus) {
+  using std::cos;
+  return T(1) + cos(exact::pi<T>() / T(2 * genus));
+}
+
 // The systole correctly rounded to double (systole<double> can be an ulp
 // off); NaN when genus < 2.
 double systole_or_nan(int genus);

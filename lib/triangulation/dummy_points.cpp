@@ -21,7 +21,7 @@
 
 #include "surface/exact_polygon.hpp"
 #include "surface/polygon.hpp"
-#include "surface/representative.hpp"
+#include "predicates/representative.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
@@ -29,7 +29,7 @@ namespace hdt::triangulation {
 class DummyBuilder {
  public:
   // t: a triangulation with no vertices and a fresh kernel; it receives the set.
-  explicit DummyBuilder(Triangulation &t) : t_(t), K_(*t_.kernel_), T_(K_.table()) {}
+  explicit DummyBuilder(Triangulation &t) : t_(t), K_(*t_.kernel_), T_(t.table()) {}
 
   std::shared_ptr<const DummyTemplate> build() {
     initial_triangulation();
@@ -56,10 +56,10 @@ class DummyBuilder {
   };
 
   void initial_triangulation() {
-    const group::Presentation &p = K_.presentation();
+    const group::Presentation &p = t_.surface().presentation();
     const int g = p.genus(), n = p.letter_count();
     std::vector<double> sx(2 * g + 1), sy(2 * g + 1);
-    register_q0_sites(K_, sx.data(), sy.data());
+    register_q0_sites(t_.surface(), sx.data(), sy.data());
     t_.vertices_.push_back({0, 0, 0, kNone});  // 0: the centre of F_g
     for (int s = 0; s <= 2 * g; ++s) t_.vertices_.push_back({sx[s], sy[s], 0, kNone});  // 1: v_0; 2 + k: m_k
     t_.dummy_.assign(t_.vertices_.size(), true);
@@ -173,7 +173,7 @@ class DummyBuilder {
       x = std::nextafter(x, 0.0) * (1 - 0x1p-30);
       y = std::nextafter(y, 0.0) * (1 - 0x1p-29);
     }
-    const surface::Representative r = surface::representative(K_, x, y);
+    const predicates::Representative r = predicates::representative(K_, x, y);
     const auto id = uint32_t(t_.vertices_.size());
     const Face F = t_.faces_[w.face];
     std::vector<NewFace> created;
@@ -269,19 +269,21 @@ class DummyBuilder {
   uint64_t rng_ = 0x2545F4914F6CDD1Dull;
 };
 
-void register_q0_sites(predicates::Kernel &kernel, double *x, double *y) {
+void register_q0_sites(surface::Surface &surface, double *x, double *y) {
   using predicates::MidReal;
-  const int g = kernel.presentation().genus();
+  const int g = surface.genus();
   // The sites' doubles are v_0 and m_k correctly rounded, as
   // hdt_polygon_vertex and hdt_polygon_side_midpoint give them.
   const group::Complex<MidReal> v = surface::polygon_vertex<MidReal>(g, 0);
-  const group::Complex<double> v_rounded = surface::vertex(kernel.presentation(), 0);
-  if (kernel.add_site(surface::exact_vertex(kernel.field(), 0), &x[0], &y[0], &v, &v_rounded) != 0)
-    throw std::logic_error("Q0 sites: the kernel has sites already");
+  const group::Complex<double> v_rounded = surface::vertex(surface.presentation(), 0);
+  if (surface.add_site(surface::exact_vertex(surface.field(), 0), &v, &v_rounded) != 0)
+    throw std::logic_error("Q0 sites: the surface has sites already");
+  x[0] = v_rounded.re, y[0] = v_rounded.im;
   for (int k = 0; k < 2 * g; ++k) {
     const group::Complex<MidReal> m = surface::polygon_side_midpoint<MidReal>(g, k);
-    const group::Complex<double> m_rounded = surface::side_midpoint(kernel.presentation(), k);
-    kernel.add_site(surface::exact_side_midpoint(kernel.field(), k), &x[1 + k], &y[1 + k], &m, &m_rounded);
+    const group::Complex<double> m_rounded = surface::side_midpoint(surface.presentation(), k);
+    surface.add_site(surface::exact_side_midpoint(surface.field(), k), &m, &m_rounded);
+    x[1 + k] = m_rounded.re, y[1 + k] = m_rounded.im;
   }
 }
 

@@ -22,9 +22,9 @@ struct DummyTemplate {
   std::vector<group::Word> extra_words;
 };
 
-// Registers the sites of Q0 with a fresh kernel: site 0 is v_0, site 1 + k
+// Registers the sites of Q0 with a fresh surface: site 0 is v_0, site 1 + k
 // is m_k (k < 2g); *x, *y receive their roundings (2g + 1 entries each).
-void register_q0_sites(predicates::Kernel &kernel, double *x, double *y);
+void register_q0_sites(surface::Surface &surface, double *x, double *y);
 
 class Triangulation;
 

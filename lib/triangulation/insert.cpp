@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "surface/representative.hpp"
+#include "predicates/representative.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
@@ -30,7 +30,7 @@ uint32_t Triangulation::vertex_at(const Walk &at) const {
 }
 
 Triangulation::Inserted Triangulation::insert(double x, double y) {
-  const surface::Representative r = surface::representative(*kernel_, x, y);
+  const predicates::Representative r = predicates::representative(*kernel_, x, y);
   jump_near(x, y, r.translation);
   const Walk at = walk_from_hint({x, y, r.translation, -1});
   const uint32_t existing = vertex_at(at);
@@ -45,7 +45,7 @@ Triangulation::Inserted Triangulation::insert(double x, double y) {
 }
 
 uint32_t Triangulation::insert_located(double x, double y, TranslationId home, bool dummy, const Walk &at) {
-  group::TranslationTable &T = kernel_->table();
+  group::TranslationTable &T = table();
   const auto id = uint32_t(vertices_.size());
   if (id == kNone) throw std::length_error("too many vertices");
   old_faces_.clear();
@@ -175,7 +175,7 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
     const double x = xy[2 * i], y = xy[2 * i + 1];
     TranslationId home;
     try {
-      home = surface::representative(*kernel_, x, y).translation;
+      home = predicates::representative(*kernel_, x, y).translation;
     } catch (const std::domain_error &) {
       char text[128];  // %.17g: the coordinates read back as the same doubles
       std::snprintf(text, sizeof text, "point %zu (%.17g, %.17g) is not a finite point of the open unit disk", i, x, y);
@@ -183,7 +183,7 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
     }
     double rx = x, ry = y;
     if (home != 0) {
-      const auto z = kernel_->table().moebius(home).apply({x, y});
+      const auto z = table().moebius(home).apply({x, y});
       rx = z.re, ry = z.im;
     }
     order[i] = {hilbert_index(grid(rx), grid(ry)) | (home == 0 ? kAtHome : 0), uint32_t(i), x, y};
@@ -197,7 +197,7 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
   if (out) std::fill(out, out + n, kNone);
   for (const Item &item : order) {
     const double x = item.x, y = item.y;
-    const TranslationId home = (item.key & kAtHome) ? 0 : surface::representative(*kernel_, x, y).translation;
+    const TranslationId home = (item.key & kAtHome) ? 0 : predicates::representative(*kernel_, x, y).translation;
     const Walk at = walk_from_hint({x, y, home, -1});
     uint32_t v = vertex_at(at);
     if (v != kNone) {

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "group/word_matrix.hpp"
-#include "surface/representative.hpp"
+#include "predicates/representative.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
@@ -14,7 +14,7 @@ Triangulation::Hint Triangulation::hint() const {
   if (last_vertex_ < vertices_.size() && vertices_[last_vertex_].alive()) {
     const Vertex &u = vertices_[last_vertex_];
     const Face &F = faces_[u.face];
-    group::TranslationTable &T = kernel_->table();
+    group::TranslationTable &T = table();
     const TranslationId t = F.t[corner_of(F, last_vertex_)];
     return {u.face, u.home == 0 ? t : T.compose(t, T.inverse(u.home))};
   }
@@ -30,7 +30,7 @@ void Triangulation::jump_near(double x, double y, TranslationId home) const {
   // exact predicates decide.
   const std::size_t n = vertices_.size();
   if (n < 64) return;
-  group::TranslationTable &T = kernel_->table();
+  group::TranslationTable &T = table();
   auto at_home = [&](double px, double py, TranslationId h) {
     if (h == 0) return group::Complex<double>{px, py};
     return T.moebius(h).apply({px, py});
@@ -58,7 +58,7 @@ void Triangulation::jump_near(double x, double y, TranslationId home) const {
 }
 
 Triangulation::Walk Triangulation::walk(const TranslatedPoint &q, uint32_t start, TranslationId start_frame_inverse) const {
-  group::TranslationTable &T = kernel_->table();
+  group::TranslationTable &T = table();
   uint32_t f = start;
   TranslationId qt = T.compose(start_frame_inverse, q.translation);  // q in the canonical frame of f
   int entry = -1;  // the edge we came in by: q is on its inner side
@@ -91,16 +91,16 @@ Triangulation::Walk Triangulation::walk(const TranslatedPoint &q, uint32_t start
 }
 
 Triangulation::Located Triangulation::locate(double x, double y) const {
-  const surface::Representative r = surface::representative(*kernel_, x, y);
+  const predicates::Representative r = predicates::representative(*kernel_, x, y);
   jump_near(x, y, r.translation);
   const Walk w = walk_from_hint({x, y, r.translation, -1});
-  return {w.face, kernel_->table().inverse(w.query)};
+  return {w.face, table().inverse(w.query)};
 }
 
 void Triangulation::star(uint32_t v, std::vector<StarFace> *out) const {
   const Vertex &u = vertices_.at(v);
   if (!u.alive()) throw std::invalid_argument("vertex " + std::to_string(v) + " is not live");
-  group::TranslationTable &T = kernel_->table();
+  group::TranslationTable &T = table();
   out->clear();
   uint32_t f = u.face;
   TranslationId frame = 0;
@@ -129,7 +129,7 @@ void Triangulation::vertex_point(uint32_t v, double *x, double *y) const {
     representatives_.resize(vertices_.size(), {std::numeric_limits<double>::quiet_NaN(), 0.0});
   group::Complex<double> &z = representatives_[v];
   // In multiprecision: near the unit circle a double Moebius map loses digits.
-  if (std::isnan(z.re)) z = group::accurate_image(kernel_->presentation(), kernel_->table().word(u.home), {u.x, u.y});
+  if (std::isnan(z.re)) z = group::accurate_image(surface_->presentation(), table().word(u.home), {u.x, u.y});
   *x = z.re, *y = z.im;
 }
 
@@ -144,8 +144,8 @@ void Triangulation::corner_translations(std::vector<TranslationId> *out) const {
 }
 
 uint32_t Triangulation::nearest_vertex(double x, double y) const {
-  group::TranslationTable &T = kernel_->table();
-  const surface::Representative r = surface::representative(*kernel_, x, y);
+  group::TranslationTable &T = table();
+  const predicates::Representative r = predicates::representative(*kernel_, x, y);
   jump_near(x, y, r.translation);
   const Walk w = walk_from_hint({x, y, r.translation, -1});
   const TranslatedPoint q{x, y, w.query, -1};  // the frame: w.face's canonical copy

@@ -13,7 +13,7 @@ namespace hdt::triangulation {
 bool Triangulation::remove(uint32_t v) {
   if (v >= vertices_.size() || !vertices_[v].alive())
     throw std::invalid_argument("vertex " + std::to_string(v) + " is not a live vertex");
-  group::TranslationTable &T = kernel_->table();
+  group::TranslationTable &T = table();
   star(v, &star_);
   old_faces_.clear();
   boundary_.clear();

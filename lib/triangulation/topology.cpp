@@ -19,7 +19,7 @@ int Triangulation::twin_by_translations(uint32_t f, int i) const {
   const Face &F = faces_[f];
   const Face &N = faces_.at(F.n[i]);
   const uint32_t a = F.v[next(i)], b = F.v[prev(i)];
-  group::TranslationTable &T = kernel_->table();
+  group::TranslationTable &T = table();
   for (int k = 0; k < 3; ++k)
     if (N.n[k] == f && N.v[next(k)] == b && N.v[prev(k)] == a && T.compose(F.nt[i], N.t[prev(k)]) == F.t[next(i)] &&
         T.compose(F.nt[i], N.t[next(k)]) == F.t[prev(i)])
@@ -29,7 +29,7 @@ int Triangulation::twin_by_translations(uint32_t f, int i) const {
 
 void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<NewFace> &created,
                             const std::vector<BoundaryEdge> &boundary, std::vector<uint32_t> *ids) {
-  group::TranslationTable &T = kernel_->table();
+  group::TranslationTable &T = table();
   const std::size_t k = created.size();
   const std::size_t base = faces_.size();
   auto slot = [&](std::size_t j) { return j < old.size() ? old[j] : uint32_t(base + (j - old.size())); };

@@ -9,7 +9,7 @@
 namespace hdt::triangulation {
 
 Triangulation::Triangulation(int genus, Empty)
-    : genus_(genus), kernel_(std::make_unique<Kernel>(group::Presentation(genus))) {}
+    : genus_(genus), surface_(std::make_unique<surface::Surface>(genus)), kernel_(std::make_unique<Kernel>(*surface_)) {}
 
 Triangulation::Triangulation(int genus) : Triangulation(genus, Empty{}) {
   const std::shared_ptr<const DummyTemplate> q = cached_dummy_template(genus);
@@ -17,10 +17,10 @@ Triangulation::Triangulation(int genus) : Triangulation(genus, Empty{}) {
     build_dummy_points(*this);
     return;
   }
-  // The same sites and translation ids as the template's kernel had.
+  // The same sites and translation ids as the template's surface had.
   std::vector<double> sx(2 * genus + 1), sy(2 * genus + 1);
-  register_q0_sites(*kernel_, sx.data(), sy.data());
-  group::TranslationTable &T = kernel_->table();
+  register_q0_sites(*surface_, sx.data(), sy.data());
+  group::TranslationTable &T = surface_->table();
   for (const group::Word &w : q->extra_words)
     if (std::size_t(T.intern_canonical(w)) + 1 != T.size()) throw std::logic_error("dummy template: translation ids");
   vertices_ = q->vertices;

@@ -31,11 +31,12 @@ class Triangulation {
   explicit Triangulation(int genus);
 
   int genus() const { return genus_; }
+  // The surface: presentation, translation table, sides, sites. A query may
+  // add the ids of elements it meets to the translation table (a cache
+  // that only grows; ids stay valid), hence a mutable surface.
+  surface::Surface &surface() const { return *surface_; }
+  group::TranslationTable &table() const { return surface_->table(); }
   Kernel &kernel() { return *kernel_; }
-  // The translation ids of this triangulation. A query may add the ids of
-  // elements it meets (the table is a cache that only grows; ids stay
-  // valid), hence not const.
-  group::TranslationTable &table() const { return kernel_->table(); }
   const std::vector<Vertex> &vertices() const { return vertices_; }
   const std::vector<Face> &faces() const { return faces_; }
   // The corner translations of every face relative to its vertices'
@@ -74,7 +75,7 @@ class Triangulation {
   void validate() const;
 
   bool is_dummy(uint32_t v) const { return dummy_[v]; }
-  // The kernel site of vertex v, or -1: sites 0 .. 2g are vertices 1 .. 2g+1.
+  // The surface's site of vertex v, or -1: sites 0 .. 2g are vertices 1 .. 2g+1.
   int32_t site_of(uint32_t v) const { return v >= 1 && v <= uint32_t(2 * genus_ + 1) ? int32_t(v - 1) : -1; }
   TranslatedPoint point(uint32_t v, TranslationId t) const {
     const Vertex &u = vertices_[v];
@@ -174,7 +175,8 @@ class Triangulation {
   void star(uint32_t v, std::vector<StarFace> *out) const;
 
   int genus_;
-  std::unique_ptr<Kernel> kernel_;
+  std::unique_ptr<surface::Surface> surface_;
+  std::unique_ptr<Kernel> kernel_;  // on *surface_
   std::vector<Vertex> vertices_;
   // vertex_point's results for vertices with home != 0, by id, filled on
   // first query (NaN: not computed yet). A vertex's point and home never

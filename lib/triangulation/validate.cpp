@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "surface/representative.hpp"
+#include "predicates/representative.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
@@ -20,7 +20,7 @@ std::string face_name(uint32_t f) { return "face " + std::to_string(f); }
 }  // namespace
 
 void Triangulation::validate() const {
-  group::TranslationTable &T = kernel_->table();
+  group::TranslationTable &T = table();
   const std::size_t F = faces_.size();
   std::size_t live = 0, dummies = 0;
   for (uint32_t v = 0; v < vertices_.size(); ++v)
@@ -68,7 +68,7 @@ void Triangulation::validate() const {
     corner_of(faces_[u.face], v);
     // (The sites are v_0 and the m_k, k < 2g, in the half-open domain by its
     // definition; they lie on side lines, where the test is exact and slow.)
-    if (site_of(v) < 0 && surface::representative(*kernel_, point(v, u.home)).translation != u.home)
+    if (site_of(v) < 0 && predicates::representative(*kernel_, point(v, u.home)).translation != u.home)
       broken("vertex " + std::to_string(v) + " is not stored at its representative");
     star(v, &star_);
     corners += star_.size();

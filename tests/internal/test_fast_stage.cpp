@@ -111,8 +111,8 @@ struct RefPoint {
 };
 
 RefPoint reference_point(Kernel &kernel, const TranslatedPoint &p) {
-  const group::Word &word = kernel.table().word(p.translation);
-  const group::Lorentz<Ref> L = group::shared_generators<Ref>(kernel.presentation()).lorentz(word);
+  const group::Word &word = kernel.surface().table().word(p.translation);
+  const group::Lorentz<Ref> L = group::shared_generators<Ref>(kernel.surface().presentation()).lorentz(word);
   const Ref x(p.x), y(p.y), s = x * x + y * y, w = Ref(1) - s;
   const Ref hat[3] = {Ref(1) + s, x + x, y + y};
   RefPoint r;
@@ -168,7 +168,8 @@ int reference_large_circumdisk(const RefPoint &a, const RefPoint &b, const RefPo
 START_TEST(corner_clusters_agree_with_reference) {
   const int g = _i == 0 ? 16 : 32;
   const auto t0 = std::chrono::steady_clock::now();
-  Kernel kernel{group::Presentation(g)};
+  surface::Surface M(g);
+  Kernel kernel{M};
   const int n = 4 * g;
   // The copies of F_g around v_0: h(v_j) = v_0 for a neighbour h (in double
   // the Minkowski product may be off by 1e-2 at genus 32; other vertices of
@@ -179,9 +180,9 @@ START_TEST(corner_clusters_agree_with_reference) {
     group::TranslationId h;
   };
   std::vector<Copy> copies;
-  for (group::TranslationId h = 0; std::size_t(h) < kernel.table().neighbour_count(); ++h)
+  for (group::TranslationId h = 0; std::size_t(h) < kernel.surface().table().neighbour_count(); ++h)
     for (int j = 0; j < n; ++j) {
-      const auto image = kernel.table().lorentz(h).apply(group::to_hyperboloid(surface::polygon_vertex<double>(g, j)));
+      const auto image = kernel.surface().table().lorentz(h).apply(group::to_hyperboloid(surface::polygon_vertex<double>(g, j)));
       if (group::minkowski(image, v0) < 1.5) copies.push_back({j, h});
     }
   ck_assert_int_eq(int(copies.size()), n);

@@ -39,7 +39,7 @@
 #include "group/word_matrix.hpp"
 #include "predicates/kernel.hpp"
 #include "surface/polygon.hpp"
-#include "surface/representative.hpp"
+#include "predicates/representative.hpp"
 
 // Last: check.h defines a macro named fail that breaks <iostream>.
 #include <check.h>
@@ -74,12 +74,12 @@ class Reference {
   using Vec = std::array<Real, 3>;
 
   explicit Reference(Kernel &kernel)
-      : kernel_(kernel), gens_(group::shared_generators<Real>(kernel.presentation())), tiny_("1e-450") {}
+      : kernel_(kernel), gens_(group::shared_generators<Real>(kernel.surface().presentation())), tiny_("1e-450") {}
 
   const group::Lorentz<Real> &lorentz(TranslationId id) {
     if (std::size_t(id) >= matrices_.size()) matrices_.resize(std::size_t(id) + 1);
     auto &slot = matrices_[std::size_t(id)];
-    if (!slot) slot = std::make_unique<group::Lorentz<Real>>(gens_.lorentz(kernel_.table().word(id)));
+    if (!slot) slot = std::make_unique<group::Lorentz<Real>>(gens_.lorentz(kernel_.surface().table().word(id)));
     return *slot;
   }
 
@@ -156,12 +156,12 @@ class Reference {
 std::string show(Kernel &kernel, const TranslatedPoint &p) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "{%a, %a, %d}", p.x, p.y, int(p.translation));
-  return std::string(buf) + "=[" + group::word_to_string(kernel.table().word(p.translation)) + "]";
+  return std::string(buf) + "=[" + group::word_to_string(kernel.surface().table().word(p.translation)) + "]";
 }
 
 template <std::size_t n>
 std::string show(Kernel &kernel, const std::array<TranslatedPoint, n> &pts) {
-  std::string s = "g=" + std::to_string(kernel.presentation().genus()) + ":";
+  std::string s = "g=" + std::to_string(kernel.surface().presentation().genus()) + ":";
   for (const auto &p : pts) s += " " + show(kernel, p);
   return s;
 }
@@ -208,7 +208,7 @@ int check_beyond_side(Kernel &kernel, Reference &ref, const TranslatedPoint &p, 
 // Random and degenerate inputs.
 
 TranslationId random_neighbour(Rng &rng, Kernel &kernel) {
-  return TranslationId(std::uniform_int_distribution<int>(0, int(kernel.table().neighbour_count()) - 1)(rng));
+  return TranslationId(std::uniform_int_distribution<int>(0, int(kernel.surface().table().neighbour_count()) - 1)(rng));
 }
 
 Complex<double> random_in_disk(Rng &rng, double radius) {
@@ -260,7 +260,7 @@ Word power(const Presentation &p, const Word &w, int n) {
 
 // The id of c h^n.
 TranslationId translate_power(Kernel &kernel, TranslationId c, const Word &h, int n) {
-  return kernel.table().intern(concat(kernel.table().word(c), power(kernel.presentation(), h, n)));
+  return kernel.surface().table().intern(concat(kernel.surface().table().word(c), power(kernel.surface().presentation(), h, n)));
 }
 
 enum class Kind { circle, hypercycle, star, geodesic };
@@ -294,7 +294,7 @@ Quad hypercycle_quad(Rng &rng, Kernel &kernel, TranslationId c) {
   TranslationId h;
   do h = random_neighbour(rng, kernel);
   while (h == 0);
-  const Word hw = kernel.table().word(h);
+  const Word hw = kernel.surface().table().word(h);
   std::array<int, 4> n{-1, 0, 1, 2};
   std::shuffle(n.begin(), n.end(), rng);
   Quad q{{}, Kind::hypercycle};
@@ -305,11 +305,11 @@ Quad hypercycle_quad(Rng &rng, Kernel &kernel, TranslationId c) {
 // The ids h in N with h(F) containing v_0 (4g of them): their centres h(0)
 // are cocircular about v_0.
 std::vector<TranslationId> vertex_star(Kernel &kernel) {
-  const Presentation &p = kernel.presentation();
+  const Presentation &p = kernel.surface().presentation();
   const auto v0 = surface::polygon_vertex<double>(p.genus(), 0);
   std::vector<TranslationId> star;
-  for (TranslationId id = 0; std::size_t(id) < kernel.table().neighbour_count(); ++id) {
-    const auto pre = kernel.table().moebius(id).inverse().apply(v0);
+  for (TranslationId id = 0; std::size_t(id) < kernel.surface().table().neighbour_count(); ++id) {
+    const auto pre = kernel.surface().table().moebius(id).inverse().apply(v0);
     for (int j = 0; j < p.letter_count(); ++j) {
       const auto v = surface::polygon_vertex<double>(p.genus(), j);
       if (std::hypot(pre.re - v.re, pre.im - v.im) < 1e-9) {
@@ -327,7 +327,7 @@ Quad star_quad(Rng &rng, Kernel &kernel, const std::vector<TranslationId> &star,
   std::shuffle(ids.begin(), ids.end(), rng);
   Quad q{{}, Kind::star};
   for (int i = 0; i < 4; ++i) {
-    const TranslationId id = kernel.table().intern(concat(kernel.table().word(c), kernel.table().word(ids[i])));
+    const TranslationId id = kernel.surface().table().intern(concat(kernel.surface().table().word(c), kernel.surface().table().word(ids[i])));
     q.p[i] = {0.0, 0.0, id};
   }
   return q;
@@ -337,7 +337,7 @@ Quad star_quad(Rng &rng, Kernel &kernel, const std::vector<TranslationId> &star,
 // when g is even), translated by powers of the generator whose axis it is
 // (g_k has its axis at angle k pi/2g), then by c.
 Quad geodesic_quad(Rng &rng, Kernel &kernel, TranslationId c) {
-  const Presentation &p = kernel.presentation();
+  const Presentation &p = kernel.surface().presentation();
   const int g = p.genus();
   const int choices = (g % 2 == 0) ? 4 : 2;
   const int line = std::uniform_int_distribution<int>(0, choices - 1)(rng);
@@ -409,7 +409,8 @@ Quad random_quad(Rng &rng, Kernel &kernel, const std::vector<TranslationId> &sta
 
 // The sign conventions of the header, on inputs whose answer is known.
 START_TEST(sign_conventions) {
-  Kernel kernel(Presentation(2));
+  surface::Surface M(2);
+  Kernel kernel{M};
   Reference ref(kernel);
   const TranslatedPoint a{0.5, 0.0, 0}, b{0.0, 0.5, 0}, c{-0.5, 0.0, 0}, o{0.0, 0.0, 0}, far{0.0, -0.75, 0};
   ck_assert_int_eq(check_orientation(kernel, ref, {a, b, c}, "ccw"), 1);
@@ -418,10 +419,10 @@ START_TEST(sign_conventions) {
   ck_assert_int_eq(check_in_circle(kernel, ref, {a, b, c, far}, "outside"), -1);
   ck_assert_int_eq(check_in_circle(kernel, ref, {b, a, c, o}, "centre, cw"), -1);
   // O is on F's side of every side; g_k(O) beyond s_k; g_k^-1(O) not beyond s_k.
-  const Presentation &p = kernel.presentation();
+  const Presentation &p = kernel.surface().presentation();
   for (int k = 0; k < p.letter_count(); ++k) {
-    const TranslationId gk = kernel.table().intern(Word{k});
-    const TranslationId gk_inv = kernel.table().intern(Word{p.inverse(k)});
+    const TranslationId gk = kernel.surface().table().intern(Word{k});
+    const TranslationId gk_inv = kernel.surface().table().intern(Word{p.inverse(k)});
     ck_assert_int_eq(check_beyond_side(kernel, ref, o, k, "O"), -1);
     ck_assert_int_eq(check_beyond_side(kernel, ref, {0.0, 0.0, gk}, k, "g_k O"), 1);
     ck_assert_int_eq(check_beyond_side(kernel, ref, {0.0, 0.0, gk_inv}, k, "g_k^-1 O"), -1);
@@ -436,7 +437,8 @@ static const int kRandomConfigs[] = {20000, 8000, 4000};
 START_TEST(random_configurations_agree_with_reference) {
   const int g = kGenera[_i], configs = kRandomConfigs[_i];
   const auto t0 = std::chrono::steady_clock::now();
-  Kernel kernel{Presentation(g)};
+  surface::Surface M(g);
+  Kernel kernel{M};
   Reference ref(kernel);
   const group::GeneratorSet<double> gens{Presentation(g)};
   Rng rng(1000 + g);
@@ -468,7 +470,8 @@ static const int kDegenerateQuads[] = {2500, 1200, 700};
 START_TEST(near_degenerate_configurations_agree_with_reference) {
   const int g = kGenera[_i], quads = kDegenerateQuads[_i];
   const auto t0 = std::chrono::steady_clock::now();
-  Kernel kernel{Presentation(g)};
+  surface::Surface M(g);
+  Kernel kernel{M};
   Reference ref(kernel);
   const auto star = vertex_star(kernel);
   Rng rng(2000 + g);
@@ -505,12 +508,12 @@ START_TEST(near_degenerate_configurations_agree_with_reference) {
   // Points close to the lines of the sides: rounded midpoints and vertices,
   // translated by neighbours (g_k maps m_{k+2g} onto m_k, so {m_{k+2g}, g_k}
   // is within rounding of s_k), and moved by a few ulps.
-  const Presentation &p = kernel.presentation();
+  const Presentation &p = kernel.surface().presentation();
   const int n = p.letter_count();
   for (int j = 0; j < n; ++j) {
     const auto mid = surface::polygon_side_midpoint<double>(g, j);
     const auto v = surface::polygon_vertex<double>(g, j);
-    const TranslationId gk = kernel.table().intern(Word{Letter(j)});
+    const TranslationId gk = kernel.surface().table().intern(Word{Letter(j)});
     const auto opposite = surface::polygon_side_midpoint<double>(g, p.inverse(j));
     std::vector<long> moves{-2, -1, 0, 1, 2};
     for (int e = 3; e <= 24; e += 3) moves.insert(moves.end(), {1L << e, -(1L << e)});
@@ -554,9 +557,10 @@ END_TEST
 // 2. Exact zeros, each made of exact double inputs.
 START_TEST(exact_zeros) {
   const int g = kGenera[_i];
-  Kernel kernel{Presentation(g)};
+  surface::Surface M(g);
+  Kernel kernel{M};
   Reference ref(kernel);
-  const Presentation &p = kernel.presentation();
+  const Presentation &p = kernel.surface().presentation();
   const auto star = vertex_star(kernel);
   Rng rng(3000 + g);
 
@@ -609,8 +613,8 @@ START_TEST(exact_zeros) {
   }
   // The centres 0, g_k(0), g_k^2(0), g_k^-1(0) lie on the axis of g_k.
   for (Letter k = 0; k < p.letter_count(); ++k) {
-    const TranslationId a = kernel.table().intern(Word{k}), b = kernel.table().intern(Word{k, k}),
-                        c = kernel.table().intern(Word{p.inverse(k)});
+    const TranslationId a = kernel.surface().table().intern(Word{k}), b = kernel.surface().table().intern(Word{k, k}),
+                        c = kernel.surface().table().intern(Word{p.inverse(k)});
     ck_assert_int_eq(check_orientation(kernel, ref, {{{0, 0, 0}, {0, 0, a}, {0, 0, b}}}, "axis of g_k"), 0);
     ck_assert_int_eq(check_in_circle(kernel, ref, {{{0, 0, c}, {0, 0, 0}, {0, 0, a}, {0, 0, b}}}, "axis of g_k"), 0);
   }
@@ -641,9 +645,10 @@ END_TEST
 // translation, must not be taken for zeros.
 START_TEST(structural_zeros) {
   const int g = kGenera[_i];
-  Kernel kernel{Presentation(g)};
+  surface::Surface M(g);
+  Kernel kernel{M};
   Reference ref(kernel);
-  const Presentation &p = kernel.presentation();
+  const Presentation &p = kernel.surface().presentation();
   Rng rng(5000 + g);
   kernel.reset_statistics();
   for (int trial = 0; trial < 40; ++trial) {
@@ -683,7 +688,8 @@ static int permutation_sign(const std::array<int, 4> &perm) {
 
 START_TEST(in_circle_perturbed_policy) {
   const int g = kGenera[_i];
-  Kernel kernel{Presentation(g)};
+  surface::Surface M(g);
+  Kernel kernel{M};
   Reference ref(kernel);
   const auto star = vertex_star(kernel);
   Rng rng(4000 + g);
@@ -747,7 +753,7 @@ START_TEST(in_circle_perturbed_policy) {
     ck_assert_int_eq(kernel.in_circle_perturbed(m.p, vertex), e);
   }
   // Random non-degenerate quadruples: the same as in_circle.
-  const group::GeneratorSet<double> gens(kernel.presentation());
+  const group::GeneratorSet<double> gens(kernel.surface().presentation());
   for (int trial = 0; trial < 500; ++trial) {
     const std::array<TranslatedPoint, 4> t{random_point(rng, kernel, gens), random_point(rng, kernel, gens),
                                            random_point(rng, kernel, gens), random_point(rng, kernel, gens)};
@@ -761,8 +767,8 @@ namespace {
 
 // Checks R against the half-open domain: h(z) in the closed F_g, with the
 // reported sides exactly zero (reference signs, independent of the kernel).
-void check_in_domain(Kernel &kernel, Reference &ref, double x, double y, const surface::Representative &R) {
-  const int n = kernel.presentation().letter_count(), half = n / 2;
+void check_in_domain(Kernel &kernel, Reference &ref, double x, double y, const predicates::Representative &R) {
+  const int n = kernel.surface().presentation().letter_count(), half = n / 2;
   const TranslatedPoint pt{x, y, R.translation};
   std::vector<int> on;
   for (int k = 0; k < n; ++k) {
@@ -772,13 +778,13 @@ void check_in_domain(Kernel &kernel, Reference &ref, double x, double y, const s
     if (s == 0) on.push_back(k);
   }
   switch (R.where) {
-    case surface::Representative::interior: ck_assert_uint_eq(on.size(), 0); break;
-    case surface::Representative::side:
+    case predicates::Representative::interior: ck_assert_uint_eq(on.size(), 0); break;
+    case predicates::Representative::side:
       ck_assert_uint_eq(on.size(), 1);
       ck_assert_int_eq(on[0], R.side_index);
       ck_assert_int_lt(R.side_index, half);
       break;
-    case surface::Representative::vertex:
+    case predicates::Representative::vertex:
       ck_assert_uint_eq(on.size(), 2);
       ck_assert_int_eq(on[0], 0);
       ck_assert_int_eq(on[1], 1);
@@ -794,13 +800,14 @@ START_TEST(representative_is_canonical) {
   const auto t0 = std::chrono::steady_clock::now();
   long images_compared = 0, paired = 0;
   for (int g = 2; g <= 8; ++g) {
-    Kernel kernel{Presentation(g)};
+    surface::Surface M(g);
+    Kernel kernel{M};
     Reference ref(kernel);
-    const Presentation &p = kernel.presentation();
+    const Presentation &p = kernel.surface().presentation();
     const group::GeneratorSet<Mid> mid(p);
     Rng rng(5000 + g);
-    ck_assert_int_eq(surface::representative(kernel, 0, 0).translation, 0);
-    ck_assert(surface::representative(kernel, 0, 0).where == surface::Representative::interior);
+    ck_assert_int_eq(predicates::representative(kernel, 0, 0).translation, 0);
+    ck_assert(predicates::representative(kernel, 0, 0).where == predicates::Representative::interior);
     const int points = 160;
     for (int i = 0; i < points; ++i) {
       // Uniform in |z| < 0.999, or at 1 - 10^-e along a random direction.
@@ -829,12 +836,12 @@ START_TEST(representative_is_canonical) {
         z = {r * std::cos(angle), r * std::sin(angle)};
         if (!exact::inside_unit_disk(z.re, z.im)) continue;
       }
-      const auto R = surface::representative(kernel, z.re, z.im);
+      const auto R = predicates::representative(kernel, z.re, z.im);
       check_in_domain(kernel, ref, z.re, z.im, R);
       // A point in the interior of F_g is its own representative.
       bool inside = true;
       for (int k = 0; k < p.letter_count() && inside; ++k) inside = ref.beyond_side({z.re, z.im, 0}, k) < 0;
-      ck_assert_int_eq(inside, R.translation == 0 && R.where == surface::Representative::interior);
+      ck_assert_int_eq(inside, R.translation == 0 && R.where == predicates::Representative::interior);
       const Complex<double> P = ref.image(R.translation, z.re, z.im);
       // Images of z under random words: the same representative point up to
       // the side pairing. The image is rounded to doubles, which moves it by
@@ -847,7 +854,7 @@ START_TEST(representative_is_canonical) {
         const Complex<Mid> image = m.apply(Complex<Mid>{Mid(z.re), Mid(z.im)});
         const Complex<double> wz{static_cast<double>(image.re), static_cast<double>(image.im)};
         if (!(std::hypot(wz.re, wz.im) < 1 - 1e-6)) continue;
-        const auto R2 = surface::representative(kernel, wz.re, wz.im);
+        const auto R2 = predicates::representative(kernel, wz.re, wz.im);
         check_in_domain(kernel, ref, wz.re, wz.im, R2);
         const Complex<double> P2 = ref.image(R2.translation, wz.re, wz.im);
         ++images_compared;
@@ -855,7 +862,7 @@ START_TEST(representative_is_canonical) {
         // Otherwise both are near the boundary of F_g, related by a neighbour.
         ++paired;
         double best = INFINITY;
-        for (TranslationId id = 1; std::size_t(id) < kernel.table().neighbour_count(); ++id)
+        for (TranslationId id = 1; std::size_t(id) < kernel.surface().table().neighbour_count(); ++id)
           best = std::min(best, distance(ref.image(id, P.re, P.im), P2));
         ck_assert_msg(best < 1e-9, "g=%d: representatives %.17g%+.17gi of (%a, %a) and %.17g%+.17gi of (%a, %a) differ",
                       g, P.re, P.im, z.re, z.im, P2.re, P2.im, wz.re, wz.im);
@@ -866,7 +873,7 @@ START_TEST(representative_is_canonical) {
     // so where == side / vertex cannot be reached from doubles.)
     for (int k = 0; k < p.letter_count(); ++k) {
       const auto v = surface::polygon_vertex<double>(g, k);
-      const auto Rv = surface::representative(kernel, v.re, v.im);
+      const auto Rv = predicates::representative(kernel, v.re, v.im);
       check_in_domain(kernel, ref, v.re, v.im, Rv);
       const auto Pv = ref.image(Rv.translation, v.re, v.im);
       double best = INFINITY;
@@ -874,7 +881,7 @@ START_TEST(representative_is_canonical) {
         best = std::min(best, distance(Pv, surface::polygon_vertex<double>(g, j)));
       ck_assert_msg(best < 1e-12, "g=%d: rounded v_%d maps %g from every vertex", g, k, best);
       const auto m = surface::polygon_side_midpoint<double>(g, k);
-      const auto Rm = surface::representative(kernel, m.re, m.im);
+      const auto Rm = predicates::representative(kernel, m.re, m.im);
       check_in_domain(kernel, ref, m.re, m.im, Rm);
       const auto Pm = ref.image(Rm.translation, m.re, m.im);
       const double to_m = distance(Pm, m), to_pair = distance(Pm, surface::polygon_side_midpoint<double>(g, p.inverse(k)));
@@ -892,7 +899,8 @@ END_TEST
 // 5. The filter decides almost every non-degenerate input.
 START_TEST(filter_decides_random_inputs) {
   for (const int g : {2, 4, 8}) {
-    Kernel kernel{Presentation(g)};
+    surface::Surface M(g);
+    Kernel kernel{M};
     const group::GeneratorSet<double> gens{Presentation(g)};
     Rng rng(6000 + g);
     const int calls = 20000;
@@ -930,7 +938,8 @@ END_TEST
 // on a diameter are on a geodesic. Moved by a few ulps, or by 2^e ulps so
 // that some land near the bound, every decision must match the reference.
 START_TEST(disk_filter_near_degenerate) {
-  Kernel kernel{Presentation(2)};
+  surface::Surface M(2);
+  Kernel kernel{M};
   Reference ref(kernel);
   Rng rng(7000);
   std::uniform_real_distribution<double> unit(-1, 1);

@@ -8,7 +8,7 @@
 #include "predicates/kernel.hpp"
 #include "surface/exact_polygon.hpp"
 #include "surface/polygon.hpp"
-#include "surface/representative.hpp"
+#include "predicates/representative.hpp"
 #include "surface/systole.hpp"
 
 // Last: check.h defines a macro named fail that breaks <iostream>.
@@ -28,12 +28,11 @@ struct Q0 {
 
 Q0 polygon_sites(Kernel &kernel) {
   Q0 q;
-  const int n = kernel.presentation().letter_count();
+  const int n = kernel.surface().presentation().letter_count();
   for (int k = 0; k < n; ++k) {
-    double x, y;
-    q.vertices.push_back(kernel.site_point(kernel.add_site(surface::exact_vertex(kernel.field(), k), &x, &y), 0));
+    q.vertices.push_back(kernel.site_point(kernel.surface().add_site(surface::exact_vertex(kernel.surface().field(), k)), 0));
     q.midpoints.push_back(
-        kernel.site_point(kernel.add_site(surface::exact_side_midpoint(kernel.field(), k), &x, &y), 0));
+        kernel.site_point(kernel.surface().add_site(surface::exact_side_midpoint(kernel.surface().field(), k)), 0));
   }
   return q;
 }
@@ -47,7 +46,8 @@ double error_in_units(double a, double b, double modulus) { return std::abs(a - 
 START_TEST(site_coordinates_match_multiprecision_formulas) {
   using T = exact::mp_real<60>;
   for (int g = 2; g <= 8; ++g) {
-    Kernel kernel{group::Presentation(g)};
+    surface::Surface M(g);
+    Kernel kernel{M};
     const Q0 q = polygon_sites(kernel);
     for (int k = 0; k < 4 * g; ++k) {
       const auto v = surface::polygon_vertex<T>(g, k), m = surface::polygon_side_midpoint<T>(g, k);
@@ -63,7 +63,8 @@ END_TEST
 
 START_TEST(polygon_points_are_exactly_cocircular_and_on_sides) {
   for (int g = 2; g <= 5; ++g) {
-    Kernel kernel{group::Presentation(g)};
+    surface::Surface M(g);
+    Kernel kernel{M};
     const Q0 q = polygon_sites(kernel);
     const int n = 4 * g;
     const TranslatedPoint origin{0, 0, 0};
@@ -80,7 +81,7 @@ START_TEST(polygon_points_are_exactly_cocircular_and_on_sides) {
         ck_assert_int_eq(kernel.beyond_side(q.vertices[k], s), (s == k || s == b) ? 0 : -1);
       }
       // A translated copy of the circle stays exactly a circle.
-      const group::TranslationId t = group::TranslationId(1 + k % (kernel.table().neighbour_count() - 1));
+      const group::TranslationId t = group::TranslationId(1 + k % (kernel.surface().table().neighbour_count() - 1));
       auto moved = [&](const TranslatedPoint &p) { return TranslatedPoint{p.x, p.y, t, p.site}; };
       ck_assert_int_eq(
           kernel.in_circle(moved(q.midpoints[a]), moved(q.midpoints[b]), moved(q.midpoints[c]), moved(q.midpoints[d])),
@@ -92,20 +93,21 @@ END_TEST
 
 START_TEST(paired_points_have_one_representative) {
   for (int g = 2; g <= 8; ++g) {
-    Kernel kernel{group::Presentation(g)};
+    surface::Surface M(g);
+    Kernel kernel{M};
     const Q0 q = polygon_sites(kernel);
     const int n = 4 * g, half = 2 * g;
-    const surface::Representative rv0 = surface::representative(kernel, q.vertices[0]);
-    ck_assert_int_eq(rv0.where, surface::Representative::vertex);
+    const predicates::Representative rv0 = predicates::representative(kernel, q.vertices[0]);
+    ck_assert_int_eq(rv0.where, predicates::Representative::vertex);
     ck_assert_int_eq(rv0.translation, 0);
     for (int k = 0; k < n; ++k) {
       // Every vertex goes to v_0 itself.
-      const surface::Representative rv = surface::representative(kernel, q.vertices[k]);
-      ck_assert_int_eq(rv.where, surface::Representative::vertex);
+      const predicates::Representative rv = predicates::representative(kernel, q.vertices[k]);
+      ck_assert_int_eq(rv.where, predicates::Representative::vertex);
       ck_assert(kernel.same_point({q.vertices[k].x, q.vertices[k].y, rv.translation, q.vertices[k].site}, q.vertices[0]));
       // m_k and m_{k+2g} share the representative m_{k mod 2g}.
-      const surface::Representative rm = surface::representative(kernel, q.midpoints[k]);
-      ck_assert_int_eq(rm.where, surface::Representative::side);
+      const predicates::Representative rm = predicates::representative(kernel, q.midpoints[k]);
+      ck_assert_int_eq(rm.where, predicates::Representative::side);
       ck_assert_int_eq(rm.side_index, k % half);
       ck_assert(kernel.same_point({q.midpoints[k].x, q.midpoints[k].y, rm.translation, q.midpoints[k].site},
                                   q.midpoints[k % half]));
@@ -118,8 +120,9 @@ END_TEST
 START_TEST(rotated_rational_points_are_cocircular) {
   // z = (5/16, 1/8) rotated by j pi/2g: 8g exact points on one circle about 0.
   for (int g : {2, 3, 4}) {
-    Kernel kernel{group::Presentation(g)};
-    const exact::Field &F = kernel.field();
+    surface::Surface M(g);
+    Kernel kernel{M};
+    const exact::Field &F = kernel.surface().field();
     const exact::CyclotomicField &K = F.cyclotomic();
     std::vector<TranslatedPoint> ring;
     for (int j = 0; j < 8 * g; ++j) {
@@ -128,8 +131,7 @@ START_TEST(rotated_rational_points_are_cocircular) {
       const predicates::ExactSite site{F.from_cyclotomic(K.sub(K.mul(x, c), K.mul(y, s))),
                                        F.from_cyclotomic(K.add(K.mul(x, s), K.mul(y, c))),
                                        F.from_cyclotomic(K.integer(1))};
-      double px, py;
-      ring.push_back(kernel.site_point(kernel.add_site(site, &px, &py), 0));
+      ring.push_back(kernel.site_point(kernel.surface().add_site(site), 0));
     }
     const int n = int(ring.size());
     for (int j = 0; j < n; ++j)
@@ -145,17 +147,17 @@ START_TEST(rotated_rational_points_are_cocircular) {
 END_TEST
 
 START_TEST(sites_reject_points_outside_the_disk) {
-  Kernel kernel{group::Presentation(2)};
-  const exact::Field &F = kernel.field();
+  surface::Surface M(2);
+  Kernel kernel{M};
+  const exact::Field &F = kernel.surface().field();
   const exact::CyclotomicField &K = F.cyclotomic();
-  double x, y;
   // sigma e^{i pi/8} / (1/2): outside.
   predicates::ExactSite outside = surface::exact_vertex(F, 0);
   outside.Z = F.from_cyclotomic(K.from_double(0.5));
   ck_assert_int_eq(int(kernel.statistics().exact), 0);
   bool thrown = false;
   try {
-    kernel.add_site(outside, &x, &y);
+    kernel.surface().add_site(outside);
   } catch (const std::domain_error &) {
     thrown = true;
   }
@@ -167,7 +169,8 @@ START_TEST(large_circumdisk_matches_the_systole_threshold) {
   // (r, 0), (0, r), (-r, 0) lie on the circle about 0 of hyperbolic radius
   // 2 artanh(r): its diameter reaches sys/2 exactly when r = tanh(sys/8).
   for (int g = 2; g <= 6; ++g) {
-    Kernel kernel{group::Presentation(g)};
+    surface::Surface M(g);
+    Kernel kernel{M};
     const double critical = std::tanh(surface::systole<double>(g) / 8);
     for (double offset : {-1e-3, -1e-9, 1e-9, 1e-3}) {
       const double r = std::ldexp(std::round(std::ldexp(critical + offset, 40)), -40);  // dyadic

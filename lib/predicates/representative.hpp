@@ -16,7 +16,7 @@
 
 #include "predicates/kernel.hpp"
 
-namespace hdt::surface {
+namespace hdt::predicates {
 
 struct Representative {
   group::TranslationId translation;  // h: h(x + iy) lies in the half-open domain
@@ -26,9 +26,20 @@ struct Representative {
 
 // The representative of the point p stands for (its translation is the
 // starting element: the result's translation includes it).
-Representative representative(predicates::Kernel &kernel, const predicates::TranslatedPoint &p);
+Representative representative(Kernel &kernel, const TranslatedPoint &p);
 // For a double point; throws std::domain_error when (x, y) is not a finite
 // point of the open disk.
-Representative representative(predicates::Kernel &kernel, double x, double y);
+Representative representative(Kernel &kernel, double x, double y);
 
-}  // namespace hdt::surface
+// For callers without a triangulation (hdt_point_representative): the
+// canonical word of the translation h and, when with_image, h(x + iy)
+// rounded from a multiprecision image (else (x, y)). A surface and kernel per thread, of the genus last
+// asked for, are kept: building them costs far more than a representative,
+// and callers usually ask many times for one genus.
+struct RepresentativeImage {
+  group::Word word;
+  group::Complex<double> image;
+};
+RepresentativeImage representative_image(int genus, double x, double y, bool with_image);
+
+}  // namespace hdt::predicates

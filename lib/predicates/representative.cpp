@@ -1,40 +1,56 @@
-#include "surface/representative.hpp"
+#include "predicates/representative.hpp"
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include "exact/unit_disk.hpp"
-#include "group/generators.hpp"
+#include "group/word_matrix.hpp"
 
-namespace hdt::surface {
+namespace hdt::predicates {
 
 using group::Letter;
 using group::TranslationId;
 
 namespace {
 
-// The id of g * h, where g is a single letter (ids 1..4g of N are the
-// letters 0..4g-1, in shortlex order); products are cached by the table.
-TranslationId prepend(predicates::Kernel &kernel, Letter g, TranslationId h) {
-  return kernel.table().compose(TranslationId(1 + g), h);
+// The id of g * h, where g is a single letter; products are cached by the
+// table.
+TranslationId prepend(Kernel &kernel, Letter g, TranslationId h) {
+  return kernel.surface().table().compose(surface::Surface::letter(g), h);
 }
 
 }  // namespace
 
-Representative representative(predicates::Kernel &kernel, double x, double y) {
+RepresentativeImage representative_image(int genus, double x, double y, bool with_image) {
+  thread_local std::unique_ptr<surface::Surface> surface;
+  thread_local std::unique_ptr<Kernel> kernel;
+  if (!surface || surface->genus() != genus) {
+    auto new_surface = std::make_unique<surface::Surface>(genus);  // may throw: nothing changed then
+    auto new_kernel = std::make_unique<Kernel>(*new_surface);
+    kernel = std::move(new_kernel);
+    surface = std::move(new_surface);
+  }
+  const Representative r = representative(*kernel, x, y);
+  const group::Word &w = surface->table().word(r.translation);
+  if (!with_image || r.translation == 0) return {w, {x, y}};
+  return {w, group::accurate_image(surface->presentation(), w, {x, y})};
+}
+
+Representative representative(Kernel &kernel, double x, double y) {
   if (!std::isfinite(x) || !std::isfinite(y) || !exact::inside_unit_disk(x, y))
     throw std::domain_error("the point is not a finite point of the open unit disk");
   // Most points of F_g lie in its inscribed circle (about 70% of the area),
   // where no side test is needed. The circle's Euclidean radius r has
   // r^2 = (c - 1) / (c + 1), c = cot(pi / 4g); shrunk by 1e-9 it bounds
   // the few roundings here and in x^2 + y^2 with room to spare.
-  const double c = group::half_trace<double>(kernel.presentation().genus());
+  const double c = kernel.surface().half_trace();
   if (x * x + y * y < (c - 1) / (c + 1) * (1 - 1e-9)) return {0, Representative::interior, 0};
   // Outside it, only the sides near the point's direction can hold it or
   // have it beyond them (one or two at large genus instead of 4g).
-  const predicates::TranslatedPoint point{x, y, 0};
+  const TranslatedPoint point{x, y, 0};
   bool inside = true;
-  for (int k : kernel.sides_near(std::atan2(y, x)))
+  for (int k : kernel.surface().sides_near(std::atan2(y, x)))
     if (kernel.beyond_side(point, k) >= 0) {
       inside = false;
       break;
@@ -43,11 +59,11 @@ Representative representative(predicates::Kernel &kernel, double x, double y) {
   return representative(kernel, point);
 }
 
-Representative representative(predicates::Kernel &kernel, const predicates::TranslatedPoint &point) {
-  const group::Presentation &p = kernel.presentation();
+Representative representative(Kernel &kernel, const TranslatedPoint &point) {
+  const group::Presentation &p = kernel.surface().presentation();
   const int n = p.letter_count(), half = p.half_relator();
   TranslationId h = point.translation;
-  auto at = [&](TranslationId t) { return predicates::TranslatedPoint{point.x, point.y, t, point.site}; };
+  auto at = [&](TranslationId t) { return TranslatedPoint{point.x, point.y, t, point.site}; };
   std::vector<int> on;  // the sides whose line holds h(z)
   thread_local std::vector<int> signs;  // no allocation per call
   signs.resize(std::size_t(n));
@@ -79,4 +95,4 @@ Representative representative(predicates::Kernel &kernel, const predicates::Tran
   return {h, Representative::vertex, 0};
 }
 
-}  // namespace hdt::surface
+}  // namespace hdt::predicates

@@ -1,0 +1,118 @@
+// One surface M_g: everything that describes it, in one object that the
+// predicates, the triangulation and the C API ask.
+//
+// It owns the presentation of Gamma_g, the translation table (the ids of the
+// group elements met so far; ids 0..|N|-1 are the neighbour set N, and
+// among them 1..4g are the letters g_0..g_{4g-1}), the sides of F_g with
+// their geometry (for the side predicates), the constants of the genus that
+// formulas need, and the registry of exact sites (points of the disk with
+// algebraic coordinates, such as F_g's vertex and side midpoints, which are
+// dummy points).
+//
+// The translation table and the site registry grow as a triangulation meets
+// new elements and registers sites; everything else is fixed at creation.
+// One thread at a time, like the triangulation that owns it.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "exact/cyclotomic.hpp"
+#include "exact/field.hpp"
+#include "exact/multiprecision.hpp"
+#include "group/exact_lorentz.hpp"
+#include "group/moebius.hpp"
+#include "group/presentation.hpp"
+#include "group/translation_table.hpp"
+
+namespace hdt::surface {
+
+using group::TranslationId;
+
+// A point of the disk with exact algebraic coordinates: z = (X + iY) / Z
+// with X, Y, Z in K_g and Z > 0 (the points of Q0, rotated images of
+// rational points).
+struct ExactSite {
+  exact::FieldElement X, Y, Z;
+};
+
+// The reals in which a site's coordinates may be known within 2^-128.
+using SiteReal = exact::mp_real<40>;
+
+// A registered site.
+struct Site {
+  ExactSite exact;
+  double x, y;  // the coordinates rounded to double (correctly when registered so)
+  bool has_approximation;                // whether `approximation` is set:
+  group::Complex<SiteReal> approximation;  // the coordinates within 2^-128
+};
+
+class Surface {
+ public:
+  explicit Surface(int genus);
+  Surface(const Surface &) = delete;
+  Surface &operator=(const Surface &) = delete;
+
+  int genus() const { return presentation_.genus(); }
+  const group::Presentation &presentation() const { return presentation_; }
+  const exact::Field &field() const { return field_; }
+  group::TranslationTable &table() { return table_; }
+  const group::TranslationTable &table() const { return table_; }
+
+  // Named translation ids.
+  static constexpr TranslationId identity = 0;
+  // The id of the generator g_k (k = 0..4g-1).
+  static TranslationId letter(group::Letter k) { return TranslationId(1 + k); }
+
+  // ---- The sides of F_g ----
+  int side_count() const { return presentation_.letter_count(); }
+  // O - g_k(O) rounded to double, with the Minkowski signs folded in: the
+  // sign of <N, side_normal(k)> tells on which side of side k's line a
+  // point with hyperboloid vector N lies (+1 beyond it).
+  const std::array<double, 3> &side_normal(int k) const { return side_normals_.at(std::size_t(k)); }
+  // g_k's exact Lorentz matrix, times sin(pi/4g)^2 (group/exact_lorentz.hpp).
+  const group::ExactLorentz &exact_generator(int k) const { return *exact_generators_.at(std::size_t(k)); }
+  // The sides whose line may hold or have beyond it a disk point of
+  // argument `angle` (radians, atan2's): every other side has the point
+  // strictly on F_g's side. Half the sides at genus 2, one or two at large
+  // genus.
+  const std::vector<int> &sides_near(double angle) const;
+
+  // ---- Constants of the genus ----
+  // A = cot(pi/4g) rounded (group::half_trace).
+  double half_trace() const { return half_trace_; }
+  // sin(pi/4g)^2, exactly: the positive factor of an exact matrix's rows
+  // per letter.
+  const exact::Cyclotomic &sin2() const { return sin2_; }
+  // 1 + cos(pi/2g) = cosh^2(sys/4), exactly: a circle has diameter < sys/2
+  // when cosh^2 of its radius is below it.
+  const exact::FieldElement &quarter_systole_cosh2() const { return quarter_systole_cosh2_; }
+
+  // ---- Exact sites ----
+  // Registers an exact point; returns its id (0, 1, ... in order). Throws
+  // std::domain_error unless Z > 0 and the point lies in the open unit
+  // disk. approximation (may be null): the coordinates within 2^-128.
+  // rounded (may be null): the coordinates correctly rounded, when the
+  // caller knows them (the quotient of rounded X, Y and Z can be an ulp
+  // off); checked against that quotient.
+  int32_t add_site(const ExactSite &site, const group::Complex<SiteReal> *approximation = nullptr,
+                   const group::Complex<double> *rounded = nullptr);
+  const Site &site(int32_t id) const { return sites_.at(std::size_t(id)); }
+  std::size_t site_count() const { return sites_.size(); }
+
+ private:
+  group::Presentation presentation_;
+  const exact::Field &field_;
+  group::TranslationTable table_;
+  std::vector<std::array<double, 3>> side_normals_;
+  std::vector<std::unique_ptr<group::ExactLorentz>> exact_generators_;
+  std::vector<std::vector<int>> sides_by_sector_;  // sides_near, by sector of angle
+  double half_trace_;
+  exact::Cyclotomic sin2_;
+  exact::FieldElement quarter_systole_cosh2_;
+  std::vector<Site> sites_;
+};
+
+}  // namespace hdt::surface
