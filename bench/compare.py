@@ -1,41 +1,50 @@
 #!/usr/bin/python3
-"""libhdt side by side with CGAL: build, run, print one markdown table.
+"""libhdt's benchmarks, side by side with CGAL: build, run, write docs/benchmarks.md.
 
-    /usr/bin/python3 bench/compare.py [--max 1000000] [--genera 2,3,4,8,16,32]
-    /usr/bin/python3 bench/compare.py --max 100000      (a quick run, ~3 min)
+    /usr/bin/python3 bench/compare.py --max 100000 --write docs/benchmarks.md   (a few minutes)
+    /usr/bin/python3 bench/compare.py                       (N up to 10^6: about ten minutes more)
 
-Installs Debian's libcgal-dev when missing (apt-get, as root or with sudo),
-configures the build directory build-bench (-Dbuildtype=release
--Dcgal_peers=enabled), builds the three benchmark programs, and runs, one at
-a time and each in its own process (so its peak memory is its own):
+Configures the build directory build-bench (-Dbuildtype=release, and
+-Dcgal_peers=enabled when CGAL is there), builds the benchmark programs, and
+runs, one at a time and each in its own process (so its peak memory is its
+own):
 
-  libhdt       bench/triangulation_bench: hdt_insert_many ("range") and
+  libhdt       bench/triangulation_bench.c: hdt_insert_many ("range") and
                hdt_insert one by one ("one"), then hdt_remove_dummies and
                hdt_validate; every genus of --genera;
-  cgal-bolza   bench/cgal_bolza_bench: CGAL 5.5's
+  cgal-bolza   bench/cgal_bolza_bench.cpp: CGAL 5.5's
                Periodic_4_hyperbolic_Delaunay_triangulation_2 (default
                traits) on the same genus-2 points, range and one by one,
                then try_to_remove_dummy_vertices() and is_valid();
-  cgal-euclid  bench/cgal_euclid_bench: CGAL's Delaunay_triangulation_2 with
-               Exact_predicates_inexact_constructions_kernel on as many
-               points uniform in the unit square, range and one by one.
+  cgal-euclid  bench/cgal_euclid_bench.cpp: CGAL's Delaunay_triangulation_2
+               with Exact_predicates_inexact_constructions_kernel on as many
+               points uniform in the unit square, range and one by one;
 
 for N = 10^3, 10^4, ... up to --max. All programs draw their points from the
 same generator (bench/uniform_points.h) with the same seed. At N <= the
 --compare-max the genus-2 programs also write their face sets (triangles as
-input point indices), and the script checks that libhdt and CGAL's Bolza
-triangulation are the same triangulation.
+input point indices), and the script checks that they are the same
+triangulation. Then, unless told not to: bench/curves_bench.c (points along
+curves against random points, side by side in one process), the predicates
+microbenchmark bench/predicates_bench.cpp, and callgrind's instruction count
+of hdt_insert_many (--callgrind).
+
+CGAL is used when Debian's libcgal-dev is installed; without it the CGAL
+columns are left out and the document says so (--install-cgal installs it
+with apt-get, as root or through sudo; --no-cgal leaves it out anyway).
 
 Per-point times are the process's CPU time over the insertion call(s) by
-default (--clock wall for the wall clock; the table shows both): every
-program is single-threaded, and CPU time is what other work sharing this
-2-core machine disturbs least. Runs predicted to take under --repeat-below
-seconds are repeated --repeat times and the fastest kept. A run whose
-predicted wall time (extrapolated from the smaller N of the same program,
-mode and genus) exceeds --budget seconds is skipped and noted.
+default (--clock wall for the wall clock; the tables show both): every
+program is single-threaded, and CPU time is what other work sharing the
+machine disturbs least. Runs predicted to take under --repeat-below seconds
+are repeated --repeat times and the fastest kept. A run whose predicted wall
+time (extrapolated from the smaller N of the same program, mode and genus)
+exceeds --budget seconds is skipped and noted.
 
-The table goes to stdout and to build-bench/bench-table.md (--out).
-Standard library only.
+The document (a header naming the date, machine, commit and compiler, the
+method, then the tables) goes to stdout, to BUILD_DIR/bench-table.md (--out)
+and, with --write FILE, to FILE: `--write docs/benchmarks.md` is how that
+file is made; it is never edited by hand. Standard library only.
 """
 import argparse
 import datetime
@@ -50,6 +59,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PROGRAMS = {"libhdt": "triangulation_bench", "cgal-bolza": "cgal_bolza_bench", "cgal-euclid": "cgal_euclid_bench"}
+EXTRA_PROGRAMS = ["curves_bench", "predicates_bench"]
 
 
 # The per-point time shown: "cpu_us_per_pt" (the process's CPU time: robust
@@ -68,11 +78,16 @@ def as_root():
     return [] if os.geteuid() == 0 else ["sudo"]
 
 
-def ensure_cgal():
-    """Installs libcgal-dev with apt-get when it is not installed."""
-    probe = subprocess.run(["dpkg-query", "-W", "-f=${Status}", "libcgal-dev"], capture_output=True, text=True)
-    if "install ok installed" in probe.stdout:
-        return
+def cgal_installed():
+    try:
+        probe = subprocess.run(["dpkg-query", "-W", "-f=${Status}", "libcgal-dev"], capture_output=True, text=True)
+    except OSError:
+        return False
+    return "install ok installed" in probe.stdout
+
+
+def install_cgal():
+    """Installs libcgal-dev with apt-get (--install-cgal)."""
     log("installing libcgal-dev (apt-get)")
     env = dict(os.environ, DEBIAN_FRONTEND="noninteractive")
     subprocess.run(as_root() + ["apt-get", "update", "-qq"], check=True, env=env)
@@ -80,15 +95,26 @@ def ensure_cgal():
                    check=True, env=env)
 
 
-def build(build_dir, cgal):
+def build(build_dir, cgal, jobs):
+    """Configures and builds the benchmark programs; returns the names of the
+    extra programs that failed to build (they are left out, not fatal)."""
     options = ["-Dbuildtype=release", "-Dcgal_peers=" + ("enabled" if cgal else "disabled")]
     if os.path.exists(os.path.join(build_dir, "build.ninja")):
         subprocess.run(["meson", "configure", build_dir] + options, check=True, cwd=ROOT, stdout=subprocess.DEVNULL)
     else:
         subprocess.run(["meson", "setup", build_dir] + options, check=True, cwd=ROOT, stdout=subprocess.DEVNULL)
     targets = ["bench/" + p for p in PROGRAMS.values() if cgal or not p.startswith("cgal")]
-    log("building " + " ".join(targets) + " in " + build_dir + " (CGAL's headers take a few minutes)")
-    subprocess.run(["ninja", "-C", build_dir] + targets, check=True, cwd=ROOT, stdout=subprocess.DEVNULL)
+    log("building " + " ".join(targets) + " in " + build_dir + (" (CGAL's headers take a few minutes)" if cgal else ""))
+    subprocess.run(["ninja", "-C", build_dir, "-j", str(jobs)] + targets, check=True, cwd=ROOT,
+                   stdout=subprocess.DEVNULL)
+    failed = []
+    for program in EXTRA_PROGRAMS:
+        built = subprocess.run(["ninja", "-C", build_dir, "-j", str(jobs), "bench/" + program], cwd=ROOT,
+                               capture_output=True, text=True)
+        if built.returncode != 0:
+            log(f"bench/{program} does not build; left out")
+            failed.append(program)
+    return failed
 
 
 # ---- runs ------------------------------------------------------------------
@@ -220,7 +246,76 @@ def compare_faces(path_a, path_b):
     return oriented, sa == sb, only_a, only_b, len(a)
 
 
-# ---- table -----------------------------------------------------------------
+# ---- the other benchmarks -----------------------------------------------------
+
+def run_curves(build_dir, repeat, seconds_limit):
+    """curves_bench's Markdown table (its own header line dropped), or None."""
+    cmd = [os.path.join(build_dir, "bench", "curves_bench"), "--repeat", str(repeat)]
+    log("run " + shlex.join(cmd[1:]) + " (curves_bench)")
+    try:
+        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=seconds_limit)
+    except (OSError, subprocess.TimeoutExpired) as e:
+        return None, f"curves_bench did not finish: {e}"
+    if proc.returncode != 0:
+        return None, f"curves_bench failed (exit {proc.returncode}): {proc.stderr.strip()[:300]}"
+    rows = [line for line in proc.stdout.splitlines() if line.startswith("|")]
+    return rows, None
+
+
+def run_predicates(build_dir, calls, seconds_limit):
+    """predicates_bench's lines, parsed: ([(g, name, filtered, exact, ratio)], {g: decided text})."""
+    cmd = [os.path.join(build_dir, "bench", "predicates_bench"), str(calls)]
+    log(f"run predicates_bench {calls}")
+    try:
+        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=seconds_limit)
+    except (OSError, subprocess.TimeoutExpired) as e:
+        return None, f"predicates_bench did not finish: {e}"
+    if proc.returncode != 0:
+        return None, f"predicates_bench failed (exit {proc.returncode}): {proc.stderr.strip()[:300]}"
+    rows, decided = [], {}
+    for line in proc.stdout.splitlines():
+        m = re.match(r"(\d+)\s+(\w+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)$", line.strip())
+        if m:
+            rows.append((int(m.group(1)), m.group(2), float(m.group(3)), float(m.group(4)), float(m.group(5))))
+        m = re.match(r"(\d+)\s+filter decided (\d+) of (\d+) calls \(([\d.]+)%\)", line.strip())
+        if m:
+            decided[int(m.group(1))] = (int(m.group(2)), int(m.group(3)), float(m.group(4)))
+    return (rows, decided), None
+
+
+def callgrind_command(build_dir, g, n, out_file=None):
+    cmd = ["valgrind", "--tool=callgrind", "--toggle-collect=hdt_insert_many"]
+    if out_file:
+        cmd.append("--callgrind-out-file=" + out_file)
+    return cmd + [os.path.join(build_dir, "bench", "triangulation_bench"), "--n", str(n), "--genus", str(g)]
+
+
+def run_callgrind(build_dir, g, n, seed_dir):
+    """Instructions collected inside hdt_insert_many, or (None, why)."""
+    out_file = os.path.join(seed_dir, f"callgrind.g{g}.out")
+    cmd = callgrind_command(build_dir, g, n, out_file)
+    log(f"run callgrind g={g} N={n} (a minute or two)")
+    t0 = time.monotonic()
+    try:
+        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=1800)
+    except (OSError, subprocess.TimeoutExpired) as e:
+        return None, f"callgrind g={g}: {e}"
+    if proc.returncode != 0:
+        return None, f"callgrind g={g} failed (exit {proc.returncode}): {proc.stderr.strip()[-300:]}"
+    total = None
+    with open(out_file) as f:
+        for line in f:
+            m = re.match(r"(?:summary|totals):\s+(\d+)", line)
+            if m:
+                total = int(m.group(1))
+    if total is None:
+        return None, f"callgrind g={g}: no total in {out_file}"
+    seconds = time.monotonic() - t0
+    log(f"    {total} instructions, {total / n:.0f} per point, {seconds:.0f} s")
+    return (total, seconds), None
+
+
+# ---- the document ------------------------------------------------------------
 
 def fmt(x, digits=2):
     if x is None:
@@ -310,16 +405,16 @@ def cgal_version():
 
 
 def source_description(label):
-    """Which libhdt was measured: --label, else the git commit of the tree
-    (with a mark when lib/ or include/ have uncommitted changes)."""
+    """Which libhdt was measured: --label, else `git describe` of the tree
+    (with a word when lib/ or include/ have uncommitted changes)."""
     if label:
         return label
-    head = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True)
+    head = subprocess.run(["git", "-C", ROOT, "describe", "--always", "--dirty"], capture_output=True, text=True)
     if head.returncode != 0:
-        return f"the source tree {ROOT}"
+        return f"the source tree {ROOT} (not a git checkout)"
     dirty = subprocess.run(["git", "-C", ROOT, "status", "--porcelain", "--", "lib", "include"],
                            capture_output=True, text=True).stdout.strip()
-    return f"commit {head.stdout.strip()}" + (" with uncommitted changes in lib/ or include/" if dirty else "")
+    return f"`{head.stdout.strip()}` (git describe)" + (", with uncommitted changes in lib/ or include/" if dirty else "")
 
 
 def loadavg():
@@ -330,8 +425,89 @@ def loadavg():
         return "?"
 
 
-def make_table(runner, args, sizes, started, elapsed, build_s, load_start):
+def header(w, args, info):
+    w("# Benchmarks")
+    w("")
+    w("Written by `bench/compare.py`; rerun it rather than editing this file:")
+    w("")
+    w("```sh")
+    w(shlex.join(["/usr/bin/python3", "bench/compare.py"] + sys.argv[1:]))
+    w("```")
+    w("")
+    w("| | |")
+    w("|---|---|")
+    w(f"| date | {info['started']:%Y-%m-%d %H:%M} UTC |")
+    w(f"| machine | {machine_description()} |")
+    w(f"| load average | {info['load_start']} at the start, {loadavg()} at the end (other work on the machine) |")
+    w(f"| libhdt | {source_description(args.label)} |")
+    w(f"| compiler | {tool_version(['c++', '--version'])} |")
+    w(f"| build | `{os.path.relpath(info['build_dir'], ROOT)}`: release (`-Dbuildtype=release`: -O3, NDEBUG) |")
+    w(f"| CGAL | {info['cgal_text']} |")
+    w(f"| duration | {info['elapsed'] / 60:.1f} min of runs"
+      + (f", {info['build_s'] / 60:.1f} min of building before them" if info['build_s'] >= 1 else "") + " |")
+    w("")
+
+
+def method(w, args, cgal, sizes):
+    w("## Method")
+    w("")
+    w("| program | what it runs |")
+    w("|---|---|")
+    w("| `bench/triangulation_bench.c` | libhdt through the public C API: `hdt_create` (first in the process, "
+      "then a second, cached), `hdt_insert_many` (range) or `hdt_insert` one point at a time in input order, "
+      "`hdt_remove_dummies`, `hdt_validate`; any genus (without `--n`, a per-genus sweep of its own) |")
+    w("| `bench/cgal_bolza_bench.cpp` | CGAL's `Periodic_4_hyperbolic_Delaunay_triangulation_2` with its default "
+      "traits (`Periodic_4_hyperbolic_Delaunay_triangulation_traits_2<>`, whose kernel is "
+      "`Exact_predicates_exact_constructions_kernel_with_sqrt`, i.e. `CORE::Expr` coordinates) on the same "
+      "genus-2 points: `insert(first, last, false)` (CGAL's spatial sort; dummies kept) or `insert(p)` one at a "
+      "time without a hint, then `try_to_remove_dummy_vertices()` and `is_valid()`"
+      + ("" if cgal else " (not run here)") + " |")
+    w("| `bench/cgal_euclid_bench.cpp` | the Euclidean reference: CGAL's `Delaunay_triangulation_2` with "
+      "`Exact_predicates_inexact_constructions_kernel` on as many points uniform in the unit square, range "
+      "insert or one at a time, then `is_valid()`" + ("" if cgal else " (not run here)") + " |")
+    w("| `bench/curves_bench.c` | points along curves (`bench/curve_points.h`) against random points, "
+      "side by side in one process |")
+    w("| `bench/predicates_bench.cpp` | the predicates alone: filtered and forced through the exact field |")
+    w("")
+    sizes_text = ", ".join(f"10^{len(str(n)) - 1}" if str(n).strip("0") == "1" else str(n) for n in sizes)
+    w(f"- **Points.** All programs draw from one generator, `bench/uniform_points.h` (splitmix64, seed "
+      f"{args.seed}): uniform for hyperbolic area in F_g (cosh r uniform in [1, cosh R] with R the circumradius "
+      "of F_g, a uniform angle, rejection outside F_g, keeping a margin of 1e-9 from every side so that no point "
+      "is on or within rounding of the boundary), or uniform in the unit square for the Euclidean reference. "
+      "The same seed gives the same points bit for bit in every program. CGAL's Bolza octagon is libhdt's F_2 "
+      "(vertices at the odd multiples of pi/8, side midpoints at the multiples of pi/4), so CGAL gets the "
+      f"points unchanged, converted exactly from double. N = {sizes_text}.")
+    clock = "the process's CPU time" if TIME_KEY == "cpu_us_per_pt" else "the wall clock"
+    w(f"- **Times.** The per-point time is {clock} over the insertion call(s) only (no point generation, no "
+      "dummy removal, no check), divided by N; the tables also show the "
+      + ("wall-clock" if TIME_KEY == "cpu_us_per_pt" else "CPU") + " time. Every program is single-threaded, "
+      "and CPU time is what other work on a shared machine disturbs least. Each run is a process of its own, "
+      f"one at a time; a run predicted to take under {args.repeat_below:g} s is repeated {args.repeat} times "
+      "and the fastest kept (best of). Dummy removal, creation and validation are timed on their own. "
+      "Ratios are libhdt / CGAL: below 1, libhdt is faster.")
+    w("- **Memory.** Peak MiB is the process's peak resident size (`VmHWM`) after insertion and dummy removal "
+      "(the validity check and the face export come later and are not counted); bytes/vertex is that peak "
+      "minus the resident size once the input array exists (before the triangulation is created), per vertex."
+      + (" CGAL's figure includes its `CORE::Expr` points, created from the doubles inside the measured span."
+         if cgal else ""))
+    w("- **Validity.** libhdt: `hdt_validate` (every invariant, empty circles included, with exact predicates)"
+      + (". CGAL Euclidean: `is_valid()` (combinatorics and the empty-circle property). CGAL Bolza: "
+         "`is_valid()`, which in a release build checks only that every face is positively oriented (its "
+         "other checks are assertions, compiled out with `NDEBUG`)." if cgal else "."))
+    w(f"- **Same triangulation.** Up to N = {args.compare_max} each genus-2 program writes its triangles as the "
+      "input indices of their 3 vertices, counterclockwise and rotated to start at the smallest, and the "
+      "script compares the sets as oriented triangles and as unordered triples: "
+      + ("between libhdt and CGAL's Bolza triangulation, and " if cgal else "")
+      + "between range and one-by-one insertion, once the dummies are gone.")
+    w(f"- **Skips.** Before each run the script extrapolates its wall time from the smaller N of the same "
+      f"series (last time x 10 x the growth of the per-point time); a run predicted over {args.budget:g} s is "
+      "skipped and listed under Notes.")
+    w("")
+
+
+def make_document(runner, args, sizes, info):
     R = runner.results
+    cgal = info["cgal"]
     get = lambda prog, mode, g, n: R.get((prog, mode, g, n))
     lines = []
     w = lines.append
@@ -340,65 +516,77 @@ def make_table(runner, args, sizes, started, elapsed, build_s, load_start):
         if (prog, mode, g, n) in runner.missing:
             return runner.missing[(prog, mode, g, n)]
         return us(R.get((prog, mode, g, n)))
-    w("## libhdt and CGAL side by side")
-    w("")
-    w(f"libhdt {source_description(args.label)}. "
-      f"Measured {started:%Y-%m-%d %H:%M} UTC on {machine_description()}; "
-      f"{tool_version(['c++', '--version'])}; CGAL {cgal_version()} (Debian libcgal-dev); "
-      f"release build (-O3, NDEBUG). Runs one at a time, each in its own process; seed {args.seed}; "
-      f"load average at start {load_start}, at end {loadavg()}; the runs took {elapsed / 60:.1f} min "
-      f"(the build before them {build_s / 60:.1f} min). "
-      f"Command: `{shlex.join(['bench/compare.py'] + sys.argv[1:])}`.")
-    w("")
-    clock = ("CPU-time (the process's CPU time, which other work on the machine disturbs less "
-             "than the wall clock; every program is single-threaded)" if TIME_KEY == "cpu_us_per_pt"
-             else "wall-clock")
-    w(f"Times are {clock} microseconds per inserted point (the insertion call(s) only: not the dummy "
-      "removal, not the check). Ratios are libhdt / CGAL (below 1: libhdt is faster). Peak MiB is the "
-      "process's peak resident size (VmHWM) after insertion and dummy removal; bytes/vertex is that peak "
-      "minus the resident size before the triangulation was created, per vertex. Valid: libhdt "
-      "hdt_validate, CGAL is_valid().")
-    w("")
 
-    w("### Genus 2, range insertion (libhdt hdt_insert_many, CGAL insert(first, last))")
+    header(w, args, info)
+    method(w, args, cgal, sizes)
+
+    clock = "CPU" if TIME_KEY == "cpu_us_per_pt" else "wall-clock"
+    w("## Genus 2, range insertion")
     w("")
-    w("| N | libhdt µs/pt | CGAL Bolza µs/pt | CGAL Euclid µs/pt | libhdt/Bolza | libhdt/Euclid "
-      "| wall µs/pt (libhdt / Bolza / Euclid) | dummy removal ms (libhdt / Bolza) "
-      "| peak MiB (libhdt / Bolza / Euclid) | bytes/vertex (libhdt / Bolza / Euclid) "
-      "| valid (libhdt / Bolza / Euclid) |")
-    w("|---:|---:|---:|---:|---:|---:|---|---|---|---|---|")
+    if cgal:
+        w(f"libhdt `hdt_insert_many`, CGAL `insert(first, last)`; {clock} µs per point.")
+        w("")
+        w("| N | libhdt µs/pt | CGAL Bolza µs/pt | CGAL Euclid µs/pt | libhdt/Bolza | libhdt/Euclid "
+          "| wall µs/pt (libhdt / Bolza / Euclid) | dummy removal ms (libhdt / Bolza) "
+          "| peak MiB (libhdt / Bolza / Euclid) | bytes/vertex (libhdt / Bolza / Euclid) "
+          "| valid (libhdt / Bolza / Euclid) |")
+        w("|---:|---:|---:|---:|---:|---:|---|---|---|---|---|")
+    else:
+        w(f"libhdt `hdt_insert_many`; {clock} µs per point.")
+        w("")
+        w("| N | libhdt µs/pt | wall µs/pt | dummy removal ms | peak MiB | bytes/vertex | valid |")
+        w("|---:|---:|---:|---:|---:|---:|---|")
     for n in sizes:
         h, b, e = get("libhdt", "range", 2, n), get("cgal-bolza", "range", 2, n), get("cgal-euclid", "range", 0, n)
         if not any(k in R for k in [("libhdt", "range", 2, n), ("cgal-bolza", "range", 2, n),
                                      ("cgal-euclid", "range", 0, n)]):
             continue
-        w(f"| {n} | {cell('libhdt', 'range', 2, n)} | {cell('cgal-bolza', 'range', 2, n)} "
-          f"| {cell('cgal-euclid', 'range', 0, n)} | {ratio(h, b)} | {ratio(h, e)} "
-          f"| {wall(h)} / {wall(b)} / {wall(e)} "
-          f"| {ms(h, 'remove_ms')} / {ms(b, 'remove_ms')} "
-          f"| {mib(h)} / {mib(b)} / {mib(e)} | {bpv(h)} / {bpv(b)} / {bpv(e)} "
-          f"| {valid(h)} / {valid(b)} / {valid(e)} |")
+        if cgal:
+            w(f"| {n} | {cell('libhdt', 'range', 2, n)} | {cell('cgal-bolza', 'range', 2, n)} "
+              f"| {cell('cgal-euclid', 'range', 0, n)} | {ratio(h, b)} | {ratio(h, e)} "
+              f"| {wall(h)} / {wall(b)} / {wall(e)} "
+              f"| {ms(h, 'remove_ms')} / {ms(b, 'remove_ms')} "
+              f"| {mib(h)} / {mib(b)} / {mib(e)} | {bpv(h)} / {bpv(b)} / {bpv(e)} "
+              f"| {valid(h)} / {valid(b)} / {valid(e)} |")
+        else:
+            w(f"| {n} | {cell('libhdt', 'range', 2, n)} | {wall(h)} | {ms(h, 'remove_ms')} | {mib(h)} "
+              f"| {bpv(h)} | {valid(h)} |")
     w("")
 
     if any(k[1] == "one" for k in R):
-        w("### Genus 2, one-by-one insertion (libhdt hdt_insert, CGAL insert(p), input order, no hint)")
+        w("## Genus 2, one-by-one insertion")
         w("")
-        w("| N | libhdt µs/pt | CGAL Bolza µs/pt | CGAL Euclid µs/pt | libhdt/Bolza | libhdt/Euclid "
-          "| wall µs/pt (libhdt / Bolza / Euclid) | peak MiB (libhdt / Bolza / Euclid) "
-          "| valid (libhdt / Bolza / Euclid) |")
-        w("|---:|---:|---:|---:|---:|---:|---|---|---|")
+        if cgal:
+            w(f"libhdt `hdt_insert`, CGAL `insert(p)`, in input order, no hint; {clock} µs per point.")
+            w("")
+            w("| N | libhdt µs/pt | CGAL Bolza µs/pt | CGAL Euclid µs/pt | libhdt/Bolza | libhdt/Euclid "
+              "| wall µs/pt (libhdt / Bolza / Euclid) | peak MiB (libhdt / Bolza / Euclid) "
+              "| valid (libhdt / Bolza / Euclid) |")
+            w("|---:|---:|---:|---:|---:|---:|---|---|---|")
+        else:
+            w(f"libhdt `hdt_insert` in input order; {clock} µs per point.")
+            w("")
+            w("| N | libhdt µs/pt | wall µs/pt | libhdt one / range | peak MiB | valid |")
+            w("|---:|---:|---:|---:|---:|---|")
         for n in sizes:
             h, b, e = get("libhdt", "one", 2, n), get("cgal-bolza", "one", 2, n), get("cgal-euclid", "one", 0, n)
             keys = [("libhdt", "one", 2, n), ("cgal-bolza", "one", 2, n), ("cgal-euclid", "one", 0, n)]
             if not any(k in R for k in keys):
                 continue
-            w(f"| {n} | " + " | ".join(cell(*k) for k in keys)
-              + f" | {ratio(h, b)} | {ratio(h, e)} | {wall(h)} / {wall(b)} / {wall(e)} "
-              f"| {mib(h)} / {mib(b)} / {mib(e)} | {valid(h)} / {valid(b)} / {valid(e)} |")
+            if cgal:
+                w(f"| {n} | " + " | ".join(cell(*k) for k in keys)
+                  + f" | {ratio(h, b)} | {ratio(h, e)} | {wall(h)} / {wall(b)} / {wall(e)} "
+                  f"| {mib(h)} / {mib(b)} / {mib(e)} | {valid(h)} / {valid(b)} / {valid(e)} |")
+            else:
+                w(f"| {n} | {cell(*keys[0])} | {wall(h)} | {ratio(h, get('libhdt', 'range', 2, n))} | {mib(h)} "
+                  f"| {valid(h)} |")
         w("")
 
     genera = args.genera
-    w("### libhdt per genus (range insertion)")
+    w("## libhdt per genus")
+    w("")
+    w(f"Range insertion; {clock} times. `hdt_create` is timed twice: the first in the process builds and "
+      "certifies the genus's dummy point set, a second copies it.")
     w("")
     w("| g | N | hdt_create ms (first / cached) | dummies | µs/pt | vs g = 2 | remove dummies ms | left "
       "| hdt_validate ms | peak MiB | bytes/vertex | valid |")
@@ -416,72 +604,153 @@ def make_table(runner, args, sizes, started, elapsed, build_s, load_start):
               f"| {ms(r, 'validate_ms')} | {mib(r)} | {bpv(r)} | {valid(r)} |")
     w("")
 
-    w("### Same triangulation? (genus 2, after dummy removal)")
+    w("## Same triangulation?")
     w("")
-    w("Counts: vertices / edges / faces of libhdt and of CGAL's Bolza triangulation, range insertion. "
-      "Face sets (N <= %d): each triangle as its 3 input point indices; 'oriented' compares them as "
-      "counterclockwise cycles, 'as sets' as unordered triples." % args.compare_max)
+    w(f"Genus 2, after dummy removal. Face sets (N <= {args.compare_max}): each triangle as its 3 input point "
+      "indices; 'oriented' compares them as counterclockwise cycles, 'as sets' as unordered triples.")
     w("")
-    w("| N | libhdt V / E / F | CGAL Bolza V / E / F | counts equal | libhdt vs CGAL Bolza faces "
-      "| libhdt one vs range | CGAL one vs range |")
-    w("|---:|---|---|---|---|---|---|")
+
+    def faces_cell(pa, ma, pb, mb, n):
+        if n > args.compare_max:
+            return "not written (N > --compare-max)"
+        c = compare_faces(runner.faces_path(pa, ma, n), runner.faces_path(pb, mb, n))
+        if c is None:
+            return "-"
+        oriented, unordered, only_a, only_b, count = c
+        if oriented:
+            return f"same ({count} faces, oriented)"
+        if unordered:
+            return f"same as sets ({count}), orientation differs"
+        return f"**differ**: {only_a} / {only_b} faces only in one"
+
+    vef = lambda r: f"{r['V']} / {r['E']} / {r['F']}"
+    if cgal:
+        w("| N | libhdt V / E / F | CGAL Bolza V / E / F | counts equal | libhdt vs CGAL Bolza faces "
+          "| libhdt one vs range | CGAL one vs range |")
+        w("|---:|---|---|---|---|---|---|")
+    else:
+        w("| N | libhdt V / E / F | libhdt one vs range |")
+        w("|---:|---|---|")
     for n in sizes:
         h, b = get("libhdt", "range", 2, n), get("cgal-bolza", "range", 2, n)
-        if not (h and b):
+        if not h or (cgal and not b):
             continue
-        vef = lambda r: f"{r['V']} / {r['E']} / {r['F']}"
+        if not cgal:
+            w(f"| {n} | {vef(h)} | {faces_cell('libhdt', 'one', 'libhdt', 'range', n)} |")
+            continue
         if h["dummies_left"] or b["dummies_left"]:
             eq = f"not compared: dummies left (libhdt {h['dummies_left']}, CGAL {b['dummies_left']})"
         else:
             eq = "yes" if (h["V"], h["E"], h["F"]) == (b["V"], b["E"], b["F"]) else "**NO**"
-
-        def faces_cell(pa, ma, pb, mb):
-            if n > args.compare_max:
-                return "not written (N > --compare-max)"
-            c = compare_faces(runner.faces_path(pa, ma, n), runner.faces_path(pb, mb, n))
-            if c is None:
-                return "-"
-            oriented, unordered, only_a, only_b, count = c
-            if oriented:
-                return f"same ({count} faces, oriented)"
-            if unordered:
-                return f"same as sets ({count}), orientation differs"
-            return f"**differ**: {only_a} / {only_b} faces only in one"
-
-        w(f"| {n} | {vef(h)} | {vef(b)} | {eq} | {faces_cell('libhdt', 'range', 'cgal-bolza', 'range')} "
-          f"| {faces_cell('libhdt', 'one', 'libhdt', 'range')} "
-          f"| {faces_cell('cgal-bolza', 'one', 'cgal-bolza', 'range')} |")
+        w(f"| {n} | {vef(h)} | {vef(b)} | {eq} | {faces_cell('libhdt', 'range', 'cgal-bolza', 'range', n)} "
+          f"| {faces_cell('libhdt', 'one', 'libhdt', 'range', n)} "
+          f"| {faces_cell('cgal-bolza', 'one', 'cgal-bolza', 'range', n)} |")
     w("")
 
-    w("### Targets (issue 6)")
+    w("## Summary")
     w("")
     big = max(sizes)
     h, b, e = get("libhdt", "range", 2, big), get("cgal-bolza", "range", 2, big), get("cgal-euclid", "range", 0, big)
-    w(f"- genus 2, N = {big}, range insertion: libhdt {us(h)} µs/pt, libhdt/CGAL-Bolza = {ratio(h, b)}, "
-      f"libhdt/CGAL-Euclidean = {ratio(h, e)}")
-    one_n = [n for n in sizes if get("libhdt", "one", 2, n) and get("cgal-bolza", "one", 2, n)]
+    if cgal:
+        w(f"- genus 2, N = {big}, range insertion: libhdt {us(h)} µs/pt, libhdt/CGAL-Bolza = {ratio(h, b)}, "
+          f"libhdt/CGAL-Euclidean = {ratio(h, e)}")
+    else:
+        w(f"- genus 2, N = {big}, range insertion: libhdt {us(h)} µs/pt")
+    one_n = [n for n in sizes if get("libhdt", "one", 2, n)]
     if one_n:
         n = 100000 if 100000 in one_n else max(one_n)
         h1, b1 = get("libhdt", "one", 2, n), get("cgal-bolza", "one", 2, n)
-        w(f"- genus 2, N = {n}, one by one: libhdt {us(h1)} µs/pt, CGAL Bolza {us(b1)} µs/pt, "
-          f"libhdt/CGAL-Bolza = {ratio(h1, b1)}")
+        if cgal and b1:
+            w(f"- genus 2, N = {n}, one by one: libhdt {us(h1)} µs/pt, CGAL Bolza {us(b1)} µs/pt, "
+              f"libhdt/CGAL-Bolza = {ratio(h1, b1)}")
+        else:
+            w(f"- genus 2, N = {n}, one by one: libhdt {us(h1)} µs/pt")
     per_genus = []
     for g in genera:
         r = get("libhdt", "range", g, big)
         if r and h:
             per_genus.append(f"g={g}: {us(r)} µs/pt ({ratio(r, h)}x)")
     if per_genus:
-        w(f"- per-point time vs genus 2 at N = {big}: " + ", ".join(per_genus))
+        w(f"- per-point time against genus 2 at N = {big}: " + ", ".join(per_genus))
     if h:
-        w(f"- libhdt peak memory at N = {big}, genus 2: {bpv(h)} bytes/vertex "
-          f"(CGAL Bolza {bpv(b)}, CGAL Euclidean {bpv(e)})")
-    if runner.notes:
+        w(f"- libhdt peak memory at N = {big}, genus 2: {bpv(h)} bytes/vertex"
+          + (f" (CGAL Bolza {bpv(b)}, CGAL Euclidean {bpv(e)})" if cgal else ""))
+    w("")
+
+    curves = info.get("curves")
+    if curves is not None:
+        w("## Points along curves")
         w("")
-        w("Notes:")
+        w("Points sampled along a curve give the dummies thousands of neighbours and put many points exactly on "
+          "one Euclidean line or circle. `bench/curves_bench.c` (shapes in `bench/curve_points.h`) times "
+          f"`hdt_insert_many` of 10^4 points and `hdt_remove_dummies`, CPU time, best of {args.curves_repeat}, "
+          "against 10^4 random points of F_g, side by side in the same process "
+          f"(`curves_bench --repeat {args.curves_repeat}`).")
+        w("")
+        for row in curves:
+            w(row)
+        w("")
+        within = []
+        beyond = []
+        for row in curves[2:]:
+            cells = [c.strip() for c in row.strip("|").split("|")]
+            if len(cells) >= 5 and cells[1] != "random":
+                try:
+                    factor = float(cells[4].rstrip("x"))
+                except ValueError:
+                    continue
+                (within if factor < 3 else beyond).append(f"{cells[1]} (g = {cells[0]}, {cells[4]})")
+        w("The target is under 3x random. Within it: " + (", ".join(within) or "none") + ". Beyond it: "
+          + (", ".join(beyond) or "none") + ".")
+        w("")
+
+    predicates = info.get("predicates")
+    if predicates is not None:
+        rows, decided = predicates
+        w("## Predicates")
+        w("")
+        w(f"`bench/predicates_bench.cpp` ({args.predicates_calls} calls per predicate and genus): nanoseconds per "
+          "call on random non-degenerate input (points of the disk of radius 0.8, random translations of N), "
+          "through the filters as the triangulation calls them, and the same calls forced through the exact "
+          "field K_g (fewer of them).")
+        w("")
+        w("| genus | predicate | filtered ns | exact ns | exact / filtered |")
+        w("|---:|---|---:|---:|---:|")
+        for g, name, filtered, exact, r in rows:
+            w(f"| {g} | {name} | {filtered:.0f} | {exact:,.0f} | {r:,.0f} |")
+        w("")
+        if decided:
+            w("The filters decided " + "; ".join(
+                f"{d} of {t} calls at genus {g} ({p:.4f}%)" for g, (d, t, p) in sorted(decided.items())) + ".")
+            w("")
+
+    callgrind = info.get("callgrind")
+    if callgrind is not None:
+        w("## Instructions per point (callgrind)")
+        w("")
+        w("Timings on a shared machine are noisy; instruction counts are not. The instructions executed inside "
+          f"`hdt_insert_many` for N = {args.callgrind_n} points uniform in F_g (seed 1), counted by callgrind "
+          "from the release build above:")
+        w("")
+        w("```sh")
+        w(shlex.join(callgrind_command(os.path.relpath(info["build_dir"], ROOT), "G", args.callgrind_n)))
+        w("```")
+        w("")
+        w(f"Instructions per point = the total / {args.callgrind_n}. The last column is the wall time of the "
+          "whole run under valgrind (the program's other work, such as `hdt_create`, runs instrumented too).")
+        w("")
+        w("| genus | instructions in hdt_insert_many | per point | run s |")
+        w("|---:|---:|---:|---:|")
+        for g, (total, seconds) in callgrind:
+            w(f"| {g} | {total:,} | {total / args.callgrind_n:,.0f} | {seconds:.0f} |")
+        w("")
+
+    if runner.notes:
+        w("## Notes")
         w("")
         for note in runner.notes:
             w(f"- {note}")
-    w("")
+        w("")
     return "\n".join(lines)
 
 
@@ -500,26 +769,50 @@ def main():
     ap.add_argument("--repeat", type=int, default=3, help="repeat cheap runs, keep the fastest")
     ap.add_argument("--repeat-below", type=float, default=5, help="a run is cheap below this predicted time (s)")
     ap.add_argument("--no-one", action="store_true", help="skip the one-by-one runs")
-    ap.add_argument("--no-cgal", action="store_true", help="libhdt only (no install, no CGAL build)")
+    ap.add_argument("--no-cgal", action="store_true", help="libhdt only, even when CGAL is installed")
+    ap.add_argument("--install-cgal", action="store_true",
+                    help="install Debian's libcgal-dev with apt-get when it is missing")
     ap.add_argument("--no-build", action="store_true", help="use the programs already built")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2, help="ninja's parallel jobs (default: the cores)")
+    ap.add_argument("--curves-repeat", type=int, default=5, help="curves_bench --repeat (best of)")
+    ap.add_argument("--no-curves", action="store_true", help="skip curves_bench")
+    ap.add_argument("--predicates-calls", type=int, default=50000, help="predicates_bench's calls per predicate")
+    ap.add_argument("--no-predicates", action="store_true", help="skip predicates_bench")
+    ap.add_argument("--callgrind", default="2,32",
+                    help="genera whose hdt_insert_many instructions callgrind counts ('' for none)")
+    ap.add_argument("--callgrind-n", type=int, default=100000, help="points of the callgrind runs")
     ap.add_argument("--build-dir", default=os.path.join(ROOT, "build-bench"))
-    ap.add_argument("--label", default=None, help="what libhdt is measured (default: its git commit)")
-    ap.add_argument("--out", default=None, help="markdown output (default BUILD_DIR/bench-table.md)")
+    ap.add_argument("--label", default=None, help="what libhdt is measured (default: git describe)")
+    ap.add_argument("--out", default=None, help="a copy of the document (default BUILD_DIR/bench-table.md)")
+    ap.add_argument("--write", default=None, metavar="FILE",
+                    help="write the document to FILE too: --write docs/benchmarks.md")
     args = ap.parse_args()
     global TIME_KEY
     TIME_KEY = "cpu_us_per_pt" if args.clock == "cpu" else "us_per_pt"
     args.genera = sorted({2} | {int(g) for g in args.genera.split(",") if g})
+    callgrind_genera = [int(g) for g in args.callgrind.split(",") if g.strip()]
     build_dir = os.path.abspath(args.build_dir)
     out = args.out or os.path.join(build_dir, "bench-table.md")
 
+    # CGAL: used when installed (or installed on request), else left out and said so.
+    if args.no_cgal:
+        cgal, cgal_text = False, "not measured (`--no-cgal`)"
+    else:
+        if not cgal_installed() and args.install_cgal:
+            install_cgal()
+        cgal = cgal_installed()
+        cgal_text = (f"{cgal_version()} (Debian libcgal-dev)" if cgal else
+                     "not measured: Debian's libcgal-dev is not installed on this machine, so the CGAL "
+                     "columns are left out (`--install-cgal` installs it)")
+    if not cgal and not args.no_cgal:
+        log("libcgal-dev is not installed: libhdt only (--install-cgal installs it)")
+
     build_t0 = time.monotonic()
+    failed_extra = []
     if not args.no_build:
-        if not args.no_cgal:
-            ensure_cgal()
         if shutil.which("meson") is None:
             sys.exit("meson not found: run bash .ci/install-deps first")
-        build(build_dir, not args.no_cgal)
-
+        failed_extra = build(build_dir, cgal, args.jobs)
     build_s = time.monotonic() - build_t0
     sizes = []
     n = args.min
@@ -530,8 +823,10 @@ def main():
     load_start = loadavg()
     t0 = time.monotonic()
     runner = Runner(args, build_dir)
+    for program in failed_extra:
+        runner.notes.append(f"bench/{program} did not build; its table is left out")
     modes = ["range"] + ([] if args.no_one else ["one"])
-    peers = [] if args.no_cgal else ["cgal-bolza", "cgal-euclid"]
+    peers = ["cgal-bolza", "cgal-euclid"] if cgal else []
     # Genus 2 first: every program and mode, N ascending, so that the
     # extrapolation of each series sees its smaller runs.
     for mode in modes:
@@ -544,14 +839,39 @@ def main():
             continue
         for n in sizes:
             runner.run("libhdt", "range", g, n)
-    elapsed = time.monotonic() - t0
 
-    table = make_table(runner, args, sizes, started, elapsed, build_s, load_start)
-    print(table)
-    os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
-    with open(out, "w") as f:
-        f.write(table + "\n")
-    log(f"table written to {out}")
+    info = {"started": started, "load_start": load_start, "build_dir": build_dir, "build_s": build_s,
+            "cgal": cgal, "cgal_text": cgal_text}
+    if not args.no_curves and "curves_bench" not in failed_extra:
+        info["curves"], why = run_curves(build_dir, args.curves_repeat, max(3 * args.budget, 60))
+        if why:
+            runner.notes.append(why)
+    if not args.no_predicates and "predicates_bench" not in failed_extra:
+        info["predicates"], why = run_predicates(build_dir, args.predicates_calls, max(3 * args.budget, 60))
+        if why:
+            runner.notes.append(why)
+    if callgrind_genera:
+        if shutil.which("valgrind") is None:
+            runner.notes.append("valgrind is not installed: no instruction counts")
+        else:
+            counts = []
+            for g in callgrind_genera:
+                total, why = run_callgrind(build_dir, g, args.callgrind_n, runner.faces_dir)
+                if why:
+                    runner.notes.append(why)
+                else:
+                    counts.append((g, total))
+            info["callgrind"] = counts
+    info["elapsed"] = time.monotonic() - t0
+
+    document = make_document(runner, args, sizes, info)
+    print(document)
+    targets = [out] + ([os.path.join(os.getcwd(), args.write)] if args.write else [])
+    for path in targets:
+        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+        with open(path, "w") as f:
+            f.write(document + "\n")
+        log(f"written to {path}")
     bad = [k for k, r in runner.results.items() if r and (r["valid"] == 0 or r.get("failed"))]
     return 1 if bad else 0
 

@@ -59,6 +59,7 @@ static void usage(FILE *f) {
           "  -o, --output FILE   write the triangulation to FILE (default standard output)\n"
           "      --svg FILE      also draw it in the Poincare disk, as SVG\n"
           "      --neighbours    with --svg: also the copies across the 4g sides of F_g\n"
+          "                      (also spelled --neighbors)\n"
           "      --keep-dummies  keep the dummy points (default: remove those that can go)\n"
           "      --validate      check every invariant with exact predicates first\n"
           "      --stats         counts and timings on standard error\n"
@@ -66,7 +67,9 @@ static void usage(FILE *f) {
           "  -V, --version       versions of the tool and of libhdt\n"
           "\n"
           "Exit status: 0 success, 1 bad input data or a failure (reported as\n"
-          "FILE:LINE: message for a bad line), 2 bad usage.\n",
+          "FILE:LINE: message for a bad line), 2 bad usage.\n"
+          "\n"
+          "See hdt-triangulate(1).\n",
           HDT_GENUS_MAX);
 }
 
