@@ -1,7 +1,7 @@
 /* libhdt: Delaunay triangulations of the symmetric hyperbolic surfaces M_g.
  *
  * The one public header. C99, no C++ type crosses it. Conventions
- * (README.md explains them at length):
+ * (docs/design.md of the source tree explains them at length):
  *   - every fallible function returns an hdt_status and writes its results
  *     through pointers; on failure nothing is written to the outputs unless
  *     the function says otherwise;
@@ -130,7 +130,7 @@ HDT_API hdt_status hdt_point_representative(int genus, double x, double y, doubl
    too small. The canonical word is never longer than the input, so
    capacity >= length always suffices and saves the second call (each call
    does the whole reduction). HDT_ENOTSUP when the reduced word is too long
-   for the built-in precision (hundreds of letters; see README). */
+   for the built-in precision (hundreds of letters; see docs/design.md). */
 HDT_API hdt_status hdt_word_reduce(int genus, const int32_t *word, size_t length,
                                    int32_t *out, size_t capacity, size_t *out_length) HDT_NOEXCEPT;
 
@@ -188,7 +188,7 @@ HDT_API hdt_status hdt_neighbour_word(int genus, size_t id, int32_t *out,
    triangle of the surface, with three distinct vertices).
 
    A new triangulation holds the dummy points of its genus (a certified set
-   Q with sys(M_g) > 2 delta_Q; see README). User points are inserted,
+   Q with sys(M_g) > 2 delta_Q; see docs/design.md). User points are inserted,
    dummies removed where the result keeps the guarantee.
 
    Vertices: ids are dense and stable. The dummy vertices take ids 0..d-1

@@ -1,6 +1,6 @@
 /* hdt-triangulate: the triangulation as text or JSON.
  *
- * Both formats hold the same things (README, section OUTPUT FORMATS):
+ * Both formats hold the same things (hdt-triangulate.1, OUTPUT FORMATS):
  *   - the genus;
  *   - the live vertices by increasing id: id, the representative (x, y) in
  *     the half-open F_g, and whether the vertex is a dummy point;

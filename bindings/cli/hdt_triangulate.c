@@ -5,7 +5,7 @@
  * Reads points (or draws random ones), triangulates them with libhdt's
  * public C API, and writes the faces as text or JSON, optionally an SVG
  * picture. Outputs appear whole or not at all. See usage() below and the
- * README's section on the tool.
+ * manual page, hdt-triangulate.1.
  *
  * This file: the options and the run. point_reader.c parses the input
  * (decimal_comma.c recognises "0,25" for its errors), random_points.c
