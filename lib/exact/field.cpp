@@ -147,15 +147,15 @@ int Field::sign(const FieldElement &a) const {
   }
   // Non-zero: rising precision terminates.
   int s = sign_at<double>(a);
-  if (s != 2) return ++rung_counts_[0], s;
+  if (s != 2) return s;
   s = sign_at<mp_real<40>>(a);
-  if (s != 2) return ++rung_counts_[1], s;
+  if (s != 2) return s;
   s = sign_at<mp_real<160>>(a);
-  if (s != 2) return ++rung_counts_[2], s;
+  if (s != 2) return s;
   s = sign_at<mp_real<640>>(a);
-  if (s != 2) return ++rung_counts_[3], s;
+  if (s != 2) return s;
   s = sign_at<mp_real<2560>>(a);
-  if (s != 2) return ++rung_counts_[4], s;
+  if (s != 2) return s;
   throw std::logic_error("Field::sign: 8500 bits could not decide a non-zero value");
 }
 
@@ -167,12 +167,6 @@ double Field::approximate(const FieldElement &a) const {
   ev.evaluate(a.v, V, Vm);
   const T value = scale2(U, a.u.exponent()) + ev.sigma * scale2(V, a.v.exponent());
   return value.convert_to<double>();
-}
-
-std::array<unsigned long, 5> Field::rung_counts() const {
-  std::array<unsigned long, 5> r{};
-  for (int i = 0; i < 5; ++i) r[i] = rung_counts_[i].load();
-  return r;
 }
 
 const Field &field_of_genus(int genus) {

@@ -10,8 +10,6 @@
 // because a non-zero value eventually exceeds its bound.
 #pragma once
 
-#include <array>
-#include <atomic>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -52,10 +50,6 @@ class Field {
   // A double approximation (for tests and heuristics only).
   double approximate(const FieldElement &a) const;
 
-  // How many evaluations each precision rung decided: [0] double, then the
-  // MPFR rungs (for benchmarks and tests).
-  std::array<unsigned long, 5> rung_counts() const;
-
  private:
   template <class T>
   struct Evaluator;
@@ -73,7 +67,6 @@ class Field {
   Cyclotomic sigma_squared_;  // cos(pi/2g)
   mutable std::mutex mutex_;
   mutable std::vector<std::shared_ptr<void>> evaluators_;
-  mutable std::array<std::atomic<unsigned long>, 5> rung_counts_{};
 };
 
 // One shared Field per genus, built on first use, alive for the process.
