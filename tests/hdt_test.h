@@ -148,6 +148,20 @@ static inline void apply_word(int g, const word_t *w, double x, double y, double
          hdt_last_error_message());
 }
 
+/* UNDER_SANITIZER: 1 in an AddressSanitizer or ThreadSanitizer build, where
+   an address-space limit (RLIMIT_AS) means nothing (they reserve address
+   space of their own): the tests that limit memory skip themselves. */
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define UNDER_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define UNDER_SANITIZER 1
+#endif
+#endif
+#ifndef UNDER_SANITIZER
+#define UNDER_SANITIZER 0
+#endif
+
 /* Asserts that a call failed with `expected` and that the thread's error
    message names `function`. */
 static inline void expect_failure(hdt_status got, hdt_status expected, const char *function) {

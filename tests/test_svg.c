@@ -11,17 +11,6 @@
 
 #include "hdt_test.h"
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define UNDER_SANITIZER 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define UNDER_SANITIZER 1
-#endif
-#endif
-#ifndef UNDER_SANITIZER
-#define UNDER_SANITIZER 0
-#endif
-
 #define USER_COLOUR "#1f2a44"
 #define DUMMY_COLOUR "#d62728"
 #define CANARY ((char)0x5a)
