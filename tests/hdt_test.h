@@ -35,6 +35,18 @@ static inline uint64_t rng_next(uint64_t *s) {
 }
 /* Uniform in 0..n-1 (n > 0; the bias is irrelevant here). */
 static inline int rng_below(uint64_t *s, int n) { return (int)(rng_next(s) % (uint64_t)n); }
+/* Uniform in [0, 1), 53 random bits. */
+static inline double uniform01(uint64_t *s) { return (double)(rng_next(s) >> 11) * 0x1p-53; }
+
+#if defined(_POSIX_C_SOURCE) && _POSIX_C_SOURCE >= 199309L
+#include <time.h>
+/* Monotonic seconds, for the timings a test prints (never asserts). */
+static inline double seconds(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+#endif
 
 /* Sign of x^2 + y^2 - 1 computed exactly, for x and y multiples of 2^-60
    below 2 in magnitude (each is then m 2^-60 with |m| < 2^61, and the sum of

@@ -43,14 +43,6 @@
 
 #include "hdt_test.h"
 
-static double seconds(void) {
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static double uniform01(uint64_t *rng) { return (double)(rng_next(rng) >> 11) * 0x1p-53; }
-
 /* Uniform by Euclidean area in the disk of radius 0.95: most points lie
    outside F_g and are mapped to their representatives. */
 static void random_point(uint64_t *rng, double *x, double *y) {

@@ -27,14 +27,6 @@
 
 enum { THREADS = 4 };
 
-static double seconds(void) {
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static double uniform01(uint64_t *rng) { return (double)(rng_next(rng) >> 11) * 0x1p-53; }
-
 /* Uniform (by Euclidean area) in the disk of radius 0.9 about 0; the library
    maps each point to its representative in F_g. */
 static void disk_points(uint64_t seed, size_t n, double *xy) {

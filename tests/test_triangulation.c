@@ -13,14 +13,6 @@
 
 static const double PI = 3.14159265358979323846;
 
-static double uniform01(uint64_t *rng) { return (double)(rng_next(rng) >> 11) * 0x1p-53; }
-
-static double seconds(void) {
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /* ---- Handles and snapshots ---- */
 
 static hdt_triangulation *create(int g) {
