@@ -78,8 +78,8 @@ int main(int argc, char **argv) {
            nanoseconds_per_call(exact_calls,
                                 [&](std::size_t i) { return kernel.beyond_side_exact(pts[i], int(i % (4 * g))); }));
     const auto &s = kernel.statistics();
-    std::printf("%-6d filter decided %lu of %lu calls (%.4f%%)\n", g, s.filtered, s.filtered + s.exact,
-                100.0 * double(s.filtered) / double(s.filtered + s.exact));
+    std::printf("%-6d filter decided %lu of %lu calls (%.4f%%)\n", g, s.filtered(), s.calls(),
+                100.0 * double(s.filtered()) / double(s.calls()));
   }
   return 0;
 }

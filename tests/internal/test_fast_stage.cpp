@@ -24,6 +24,7 @@
 #include "group/presentation.hpp"
 #include "predicates/double_double.hpp"
 #include "predicates/kernel.hpp"
+#include "surface/exact_polygon.hpp"
 #include "surface/polygon.hpp"
 
 // Last: check.h defines a macro named fail that breaks <iostream>.
@@ -34,6 +35,7 @@
 using namespace hdt;
 using predicates::DoubleDouble;
 using predicates::Kernel;
+using predicates::Stage;
 using predicates::TranslatedPoint;
 
 namespace {
@@ -213,11 +215,96 @@ START_TEST(corner_clusters_agree_with_reference) {
   }
   const auto s = kernel.statistics();
   std::printf("corner clusters g=%d: %d calls: filter %lu, double-double %lu, 133-bit %lu, exact %lu (%.1f s)\n", g,
-              calls, s.filtered, s.fast, s.refined, s.exact - s.fast - s.refined, seconds_since(t0));
+              calls, s.filtered(), s[Stage::double_double], s[Stage::mpfr], s[Stage::exact], seconds_since(t0));
   // The double filter fails on most of these; the double-double stage takes
   // nearly all of those.
-  ck_assert_uint_gt(s.exact, calls / 2);
-  ck_assert_uint_gt(s.fast, s.exact * 9 / 10);
+  ck_assert_uint_gt(s.past_filters(), calls / 2);
+  ck_assert_uint_gt(s[Stage::double_double], s.past_filters() * 9 / 10);
+}
+END_TEST
+
+// beyond_side, compare_distance and same_point through their refined stages
+// (double-double, MPFR) near exact ties, under the long translations of the
+// copies of F_g around v_0: h(v_j) = v_0. The sites v_j (with their 133-bit
+// approximations) under h are v_0 exactly: on the lines of the two sides
+// through v_0 (beyond_side 0), at equal distance from every copy's centre
+// h(O) (compare_distance 0), and the same point as v_0. Stored points near
+// v_j under h are near those ties. Every call that the double stage leaves
+// undecided is compared with the exact stage: a refined stage whose bound is
+// too small decides a tie as +1 or -1 and fails here.
+START_TEST(refined_stages_agree_with_exact_near_ties) {
+  const int g = _i == 0 ? 4 : 16;
+  const auto t0 = std::chrono::steady_clock::now();
+  surface::Surface M(g);
+  Kernel kernel{M};
+  const int n = 4 * g;
+  const group::HyperboloidPoint<double> v0 = group::to_hyperboloid(surface::polygon_vertex<double>(g, 0));
+  struct Copy {
+    int j;
+    group::TranslationId h;
+  };
+  std::vector<Copy> copies;
+  for (group::TranslationId h = 0; std::size_t(h) < M.table().neighbour_count(); ++h)
+    for (int j = 0; j < n; ++j) {
+      const auto image = M.table().lorentz(h).apply(group::to_hyperboloid(surface::polygon_vertex<double>(g, j)));
+      if (group::minkowski(image, v0) < 1.5) copies.push_back({j, h});
+    }
+  ck_assert_int_eq(int(copies.size()), n);
+  std::vector<int32_t> vertex_site(n);
+  for (int j = 0; j < n; ++j) {
+    const group::Complex<predicates::MidReal> v = surface::polygon_vertex<predicates::MidReal>(g, j);
+    const group::Complex<double> rounded = surface::vertex(M.presentation(), j);
+    vertex_site[j] = M.add_site(surface::exact_vertex(M.field(), j), &v, &rounded);
+  }
+  Rng rng(7200 + g);
+  auto near_point = [&](const Copy &c) {
+    const auto v = surface::polygon_vertex<double>(g, c.j);
+    const double gap = std::pow(10.0, std::uniform_real_distribution<double>(-15, -9)(rng));
+    const double side = std::uniform_real_distribution<double>(-1, 1)(rng) * gap;
+    return TranslatedPoint{v.re * (1 - gap) - v.im * side, v.im * (1 - gap) + v.re * side, c.h};
+  };
+  const TranslatedPoint v0_site = kernel.site_point(vertex_site[0], 0);
+  int compared = 0, ties = 0;
+  kernel.reset_statistics();
+  // A result that the double stage did not decide (the filtered count did
+  // not move), compared with exact().
+  auto check = [&](const char *what, int result, unsigned long filtered_before, auto exact) {
+    if (kernel.statistics().filtered() != filtered_before) return;
+    const int e = exact();
+    ++compared;
+    ties += e == 0;
+    ck_assert_msg(result == e, "g=%d %s: %d, exact %d", g, what, result, e);
+  };
+  for (const Copy &c : copies) {
+    const TranslatedPoint on = kernel.site_point(vertex_site[c.j], c.h);
+    for (const TranslatedPoint &p : {on, near_point(c), near_point(c)}) {
+      for (int k = 0; k < n; ++k) {
+        const unsigned long before = kernel.statistics().filtered();
+        const int s = kernel.beyond_side(p, k);
+        check("beyond_side", s, before, [&] { return kernel.beyond_side_exact(p, k); });
+      }
+      for (int t = 0; t < 3; ++t) {
+        const TranslatedPoint a{0, 0, copies[rng() % copies.size()].h}, b{0, 0, copies[rng() % copies.size()].h};
+        const unsigned long before = kernel.statistics().filtered();
+        const int s = kernel.compare_distance(p, a, b);
+        check("compare_distance", s, before, [&] { return kernel.compare_distance_exact(p, a, b); });
+      }
+      const unsigned long before = kernel.statistics().filtered();
+      const bool same = kernel.same_point(p, v0_site);
+      ck_assert_int_eq(same, kernel.same_point_exact(p, v0_site));
+      if (kernel.statistics().filtered() == before) ++compared, ties += same;
+    }
+    ck_assert(kernel.same_point(on, v0_site));
+  }
+  const auto s = kernel.statistics();
+  std::printf("ties g=%d: %d calls past the double stage (%d ties): double-double %lu, 133-bit %lu, exact %lu "
+              "(%.1f s)\n", g, compared, ties, s[Stage::double_double], s[Stage::mpfr], s[Stage::exact],
+              seconds_since(t0));
+  // Every site on v_0 is on two side lines: the ties reach the exact stage,
+  // and the refined stages decide the near ones.
+  ck_assert_int_ge(ties, 2 * n);
+  ck_assert_uint_ge(s[Stage::exact], (unsigned long)ties);
+  ck_assert_uint_gt(s[Stage::double_double], (unsigned long)n);
 }
 END_TEST
 
@@ -225,5 +312,6 @@ int main(void) {
   return run_suite("fast_stage", 600, [](TCase *tc) {
     tcase_add_test(tc, double_double_error_bounds);
     tcase_add_loop_test(tc, corner_clusters_agree_with_reference, 0, 2);
+    tcase_add_loop_test(tc, refined_stages_agree_with_exact_near_ties, 0, 2);
   });
 }

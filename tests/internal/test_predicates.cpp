@@ -638,7 +638,7 @@ START_TEST(exact_zeros) {
 }
 END_TEST
 
-// The structural-zero stage (predicates/structural_zero.cpp): points on the
+// The structural-zero stage (predicates/stage_structural.cpp): points on the
 // real or imaginary axis under powers of the generator along it have an
 // exactly zero row coordinate, so the stage decides their orientation and
 // in-circle zeros; points just off the axis, or moved off it by another
@@ -673,7 +673,7 @@ START_TEST(structural_zeros) {
   }
   // Most of the zeros above have points in different frames: the stage, not
   // the field, decides them.
-  ck_assert_uint_gt(kernel.statistics().structural, 40);
+  ck_assert_uint_gt(kernel.statistics()[predicates::Stage::structural], 40);
 }
 END_TEST
 
@@ -917,13 +917,13 @@ START_TEST(filter_decides_random_inputs) {
     kernel.reset_statistics();
     for (int i = 0; i < calls; ++i) kernel.beyond_side(random_point(rng, kernel, gens), int(rng() % unsigned(4 * g)));
     const auto b = kernel.statistics();
-    const double ro = double(o.exact) / double(o.filtered + o.exact);
-    const double rc = double(c.exact) / double(c.filtered + c.exact);
-    const double rb = double(b.exact) / double(b.filtered + b.exact);
+    const double ro = double(o.past_filters()) / double(o.calls());
+    const double rc = double(c.past_filters()) / double(c.calls());
+    const double rb = double(b.past_filters()) / double(b.calls());
     std::printf("filter g=%d: exact fraction orientation %.5f (%lu/%d), in_circle %.5f (%lu/%d), beyond_side %.5f (%lu/%d)\n",
-                g, ro, o.exact, calls, rc, c.exact, calls, rb, b.exact, calls);
-    ck_assert_uint_eq(o.filtered + o.exact, calls);
-    ck_assert_uint_eq(c.filtered + c.exact, calls);
+                g, ro, o.past_filters(), calls, rc, c.past_filters(), calls, rb, b.past_filters(), calls);
+    ck_assert_uint_eq(o.calls(), calls);
+    ck_assert_uint_eq(c.calls(), calls);
     ck_assert_msg(ro < 0.001, "g=%d: orientation exact fraction %g", g, ro);
     ck_assert_msg(rc < 0.001, "g=%d: in_circle exact fraction %g", g, rc);
     ck_assert_msg(rb < 0.001, "g=%d: beyond_side exact fraction %g", g, rb);
@@ -964,9 +964,9 @@ START_TEST(disk_filter_near_degenerate) {
     double &c = rng() % 2 ? t[moved].x : t[moved].y;
     c = std::abs(steps) <= 4 ? nudge(c, int(steps)) : shift(c, steps);
     for (int r = 0; r < 4; ++r) {
-      const auto before = kernel.statistics().exact;
+      const auto before = kernel.statistics().past_filters();
       ck_assert_int_ne(check_in_circle(kernel, ref, t, "rectangle, moved", false), 0);
-      decided_by_filter += kernel.statistics().exact == before;
+      decided_by_filter += kernel.statistics().past_filters() == before;
       std::rotate(t.begin(), t.begin() + 1, t.end());
     }
     // Three points on a diameter, one moved off it.

@@ -1,4 +1,4 @@
-// The structural-zero stage: determinants that vanish because every row has
+// The structural-zero stage (stage_structural.hpp): determinants that vanish because every row has
 // an exact zero in one coordinate, found without field arithmetic per query.
 //
 // The axes of F_g through side midpoints that are coordinate axes (y = 0
@@ -14,7 +14,7 @@
 // the axis across a side.
 //
 // Row coordinate i (1 or 2) is sum_j M_ij hat_j with hat = (Z^2 + X^2 + Y^2,
-// 2XZ, 2YZ) (see Kernel::exact_row): it is exactly zero when every term is,
+// 2XZ, 2YZ) (see ExactStage::row): it is exactly zero when every term is,
 // i.e. for each j the matrix entry M_ij or hat_j is exactly zero. hat_0 > 0
 // always; hat_1 = 0 exactly when X = 0, hat_2 when Y = 0. Zeros of the exact
 // matrix are decided exactly (Field::is_zero) once per translation, of a
@@ -26,7 +26,7 @@
 // (an exact zero has |computed| <= error): for points in general position
 // no coordinate passes, and the stage costs a few comparisons and never
 // builds an exact matrix.
-#include "predicates/kernel.hpp"
+#include "predicates/stage_structural.hpp"
 
 namespace hdt::predicates {
 
@@ -34,30 +34,32 @@ namespace {
 constexpr unsigned kKnown = 1u << 15;  // a mask's flag: computed
 }
 
-unsigned Kernel::matrix_zeros(TranslationId id) {
+unsigned StructuralStage::matrix_zeros(TranslationId id) {
   if (id == 0) return 0b011'101'110;  // the identity: the off-diagonal entries (rows 2, 1, 0)
-  if (std::size_t(id) >= matrix_zeros_.size()) matrix_zeros_.resize(table_.size(), 0);
+  if (std::size_t(id) >= matrix_zeros_.size()) matrix_zeros_.resize(surface_.table().size(), 0);
   uint16_t &mask = matrix_zeros_.at(id);
   if (!(mask & kKnown)) {
-    const group::ExactLorentz &M = exact_matrix(id);
+    const group::ExactLorentz &M = exact_.matrix(id);
+    const exact::Field &field = exact_.field();
     unsigned zeros = 0;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
-        if (field_.is_zero(M.m[i][j])) zeros |= 1u << (3 * i + j);
+        if (field.is_zero(M.m[i][j])) zeros |= 1u << (3 * i + j);
     mask = uint16_t(zeros | kKnown);
   }
   return mask & ~kKnown;
 }
 
-unsigned Kernel::row_zeros(const TranslatedPoint &p) {
+unsigned StructuralStage::row_zeros(const TranslatedPoint &p) {
   // Bit j of hat_zeros: hat_j = 0 exactly.
   unsigned hat_zeros;
   if (p.site >= 0) {
     if (site_zeros_.size() < surface_.site_count()) site_zeros_.resize(surface_.site_count(), 0);
     uint16_t &mask = site_zeros_[std::size_t(p.site)];
     if (!(mask & kKnown)) {
-      const ExactSite &s = surface_.site(p.site).exact;
-      mask = uint16_t((field_.is_zero(s.X) ? 2u : 0u) | (field_.is_zero(s.Y) ? 4u : 0u) | kKnown);
+      const surface::ExactSite &s = surface_.site(p.site).exact;
+      const exact::Field &field = exact_.field();
+      mask = uint16_t((field.is_zero(s.X) ? 2u : 0u) | (field.is_zero(s.Y) ? 4u : 0u) | kKnown);
     }
     hat_zeros = mask & ~kKnown;
   } else {
@@ -72,14 +74,14 @@ unsigned Kernel::row_zeros(const TranslatedPoint &p) {
   return zeros;
 }
 
-bool Kernel::common_zero_coordinate(const TranslatedPoint *const *points, const FilteredPoint *const *filtered,
-                                    int n) {
+Sign StructuralStage::determinant(const TranslatedPoint *const *points, const FilteredPoint *const *filtered,
+                                   int n) {
   unsigned candidates = 0b110;  // coordinates 1 and 2 (coordinate 0 is positive)
   for (int k = 0; k < n && candidates; ++k)
     for (int i = 1; i < 3; ++i)
       if (std::abs(filtered[k]->n[i]) > filtered[k]->error) candidates &= ~(1u << i);
   for (int k = 0; k < n && candidates; ++k) candidates &= row_zeros(*points[k]);
-  return candidates != 0;
+  return candidates != 0 ? Sign::zero : Sign::undecided;
 }
 
 }  // namespace hdt::predicates

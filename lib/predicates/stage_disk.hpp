@@ -1,4 +1,4 @@
-// The double filters for untranslated points: points given as themselves
+// The disk-filter stage: double filters for untranslated points: points given as themselves
 // (translation 0, no site), whose coordinates are exact doubles. Their
 // hyperboloid determinants reduce to small determinants of disk coordinates,
 // with no division and no matrix. This is the common case inside F_g (nine
@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "predicates/filtered_point.hpp"
+#include "predicates/sign.hpp"
 
 namespace hdt::predicates {
 
@@ -23,11 +24,8 @@ namespace hdt::predicates {
 // allowance changes nothing.
 constexpr double kUnderflowAllowance = 0x1p-1000;
 
-// +1 or -1 when |value| exceeds the bound, 0 when it cannot decide.
-inline int sign_of(double value, double bound) {
-  bound += kUnderflowAllowance;
-  return value > bound ? 1 : value < -bound ? -1 : 0;
-}
+// +1 or -1 when |value| exceeds the bound, else undecided.
+inline Sign sign_of(double value, double bound) { return sign_beyond(value, bound + kUnderflowAllowance); }
 
 // Rounding analysis shared by both filters: every difference, product and
 // sum is one rounding (a factor 1 + d, |d| <= u). Expanded into monomials of
@@ -38,7 +36,7 @@ inline int sign_of(double value, double bound) {
 // it. For k <= 11 and u = 2^-53, 12u of the computed permanent bounds the
 // error.
 
-// Sign of the hyperbolic orientation of untranslated a, b, c, or 0.
+// Sign of the hyperbolic orientation of untranslated a, b, c, or undecided.
 //
 // det[N_a; N_b; N_c] is a positive multiple of det of the rows (1 + s, x, y)
 // (s = x^2 + y^2); subtracting row a and then 2x and 2y times the last two
@@ -49,7 +47,7 @@ inline int sign_of(double value, double bound) {
 // monomials w_a dx dy take at most 7 more roundings, so err by at most
 // (3.01u + 7.01u w_a) |dx dy| <= 10.1u |dx dy| (w_a <= 1); the monomials
 // l a_x dy take 10.
-inline int disk_orientation(double ax, double ay, double bx, double by, double cx, double cy) {
+inline Sign disk_orientation(double ax, double ay, double bx, double by, double cx, double cy) {
   const double bdx = bx - ax, bdy = by - ay, cdx = cx - ax, cdy = cy - ay;
   const double wa = 1 - (ax * ax + ay * ay);
   const double lb = bdx * bdx + bdy * bdy, lc = cdx * cdx + cdy * cdy;
@@ -63,7 +61,7 @@ inline int disk_orientation(double ax, double ay, double bx, double by, double c
 }
 
 // Sign of det[N 1] (in_circle: +1 when e is inside the circle through a, b,
-// c counterclockwise) of untranslated points, or 0.
+// c counterclockwise) of untranslated points, or undecided.
 //
 // det[N 1] is a negative multiple of det of the rows (dx, dy, s_q - s_a) for
 // q = b, c, e and d = q - a, and s_q - s_a = |d|^2 + 2 a.d differs from the
@@ -71,7 +69,7 @@ inline int disk_orientation(double ax, double ay, double bx, double by, double c
 // in-circle determinant (hyperbolic circles of the disk are Euclidean
 // circles). Chains: the lifts take 4 roundings, the minors 4, their product
 // 1, the two sums 2: k = 11.
-inline int disk_in_circle(double ax, double ay, double bx, double by, double cx, double cy, double ex,
+inline Sign disk_in_circle(double ax, double ay, double bx, double by, double cx, double cy, double ex,
                           double ey) {
   const double bdx = bx - ax, bdy = by - ay, cdx = cx - ax, cdy = cy - ay, edx = ex - ax, edy = ey - ay;
   const double lb = bdx * bdx + bdy * bdy, lc = cdx * cdx + cdy * cdy, le = edx * edx + edy * edy;
@@ -81,7 +79,7 @@ inline int disk_in_circle(double ax, double ay, double bx, double by, double cx,
   const double value = (lb * (ce1 - ce2) + lc * (eb1 - eb2)) + le * (bc1 - bc2);
   const double permanent = (lb * (std::abs(ce1) + std::abs(ce2)) + lc * (std::abs(eb1) + std::abs(eb2))) +
                            le * (std::abs(bc1) + std::abs(bc2));
-  return -sign_of(value, 12 * kUnit * permanent);
+  return sign_of(-value, 12 * kUnit * permanent);  // -value: exact, and undecided stays undecided
 }
 
 }  // namespace hdt::predicates

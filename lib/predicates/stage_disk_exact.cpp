@@ -1,4 +1,4 @@
-#include "predicates/disk_exact.hpp"
+#include "predicates/stage_disk_exact.hpp"
 
 #include <gmp.h>
 
@@ -69,7 +69,7 @@ void lift(mpz_t r, const mpz_t a, const mpz_t b, mpz_t tmp) {
 
 }  // namespace
 
-int disk_orientation_exact(double ax, double ay, double bx, double by, double cx, double cy) {
+Sign disk_orientation_exact(double ax, double ay, double bx, double by, double cx, double cy) {
   Scratch &s = scratch();
   const double coordinates[6] = {ax, ay, bx, by, cx, cy};
   const long exponent = scale(coordinates, 6, s.x);
@@ -97,10 +97,10 @@ int disk_orientation_exact(double ax, double ay, double bx, double by, double cx
     mpz_mul_2exp(t[8], t[8], mp_bitcnt_t(-k));
   }
   mpz_sub(t[9], t[4], t[8]);
-  return mpz_sgn(t[9]);
+  return sign_of_int(mpz_sgn(t[9]));
 }
 
-int disk_in_circle_exact(double ax, double ay, double bx, double by, double cx, double cy, double ex, double ey) {
+Sign disk_in_circle_exact(double ax, double ay, double bx, double by, double cx, double cy, double ex, double ey) {
   Scratch &s = scratch();
   const double coordinates[8] = {ax, ay, bx, by, cx, cy, ex, ey};
   scale(coordinates, 8, s.x);  // homogeneous of degree 4: the scale drops out
@@ -118,7 +118,7 @@ int disk_in_circle_exact(double ax, double ay, double bx, double by, double cx, 
   cross(t[6], t[0], t[3], t[2], t[1], t[11]);
   lift(t[7], t[4], t[5], t[11]);
   mpz_addmul(t[8], t[7], t[6]);
-  return -mpz_sgn(t[8]);
+  return sign_of_int(-mpz_sgn(t[8]));
 }
 
 }  // namespace hdt::predicates

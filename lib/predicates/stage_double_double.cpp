@@ -1,0 +1,149 @@
+#include "predicates/stage_double_double.hpp"
+
+#include <mpfr.h>
+
+#include "exact/precision_ladder.hpp"
+#include "group/generators.hpp"
+#include "group/word_matrix.hpp"
+
+namespace hdt::predicates {
+
+using namespace refined;
+
+namespace {
+
+// x (an MPFR number of p >= 133 bits) rounded to double-double. hi = RN(x)
+// is a multiple of the last place of hi's binade, hence of x's: x - hi has
+// at most p - 52 significant bits, so the MPFR subtraction is exact.
+// lo = RN(x - hi) is within u |x - hi| <= u^2 |x|, and |lo| <= ulp(hi)/2;
+// Fast2Sum normalises (hi + lo unchanged).
+template <class U>
+FastReal round_mp(const U &x) {
+  const double hi = mpfr_get_d(x.backend().data(), MPFR_RNDN);
+  const U rest = x - U(hi);
+  const double lo = mpfr_get_d(rest.backend().data(), MPFR_RNDN);
+  return DoubleDouble::fast_two_sum(hi, lo);
+}
+
+}  // namespace
+
+FastReal round_to_fast(const MidReal &x) { return round_mp(x); }
+
+const group::Lorentz<FastReal> &DoubleDoubleStage::matrix(TranslationId id) {
+  group::TranslationTable &table = surface_.table();
+  if (std::size_t(id) >= matrices_.size()) matrices_.resize(table.size());
+  auto &slot = matrices_.at(id);
+  if (slot) return *slot;
+  // The analysis needs sum_j |L~_ij - L_ij| |hat_j| <= U sum_j |L_ij| |hat_j|
+  // (up to the 1.01 margin). Since |hat_1|, |hat_2| <= hat_0 and
+  // sum_j |L_ij| |hat_j| >= L_00 hat_0 for row 0, entries within
+  // 2^-106 |L_ij| + 2^-121 L_00 suffice (2^-106 + 3 * 2^-121 < U).
+  //
+  // The word's Moebius matrix at group::moebius_precision_bits(127) (every
+  // entry of L = from_moebius(a, b) within 2^-127 L_00, well within
+  // 2^-121 L_00), then rounded to double-double (2^-106 relative). (The
+  // Lorentz product of accurate_lorentz_as loses about twice as many bits
+  // per letter: this puts most words of N on a lower rung.)
+  const group::Word &word = table.word(id);
+  const double bits = group::moebius_precision_bits(surface_.presentation(), word.size(), 127);
+  if (bits > exact::ladder_top_bits()) {
+    // The MPFR stage's matrix (within 2^-133 |L_ij| + 2^-197 of the exact
+    // one) rounded to double-double (2^-106 relative).
+    const group::Lorentz<MidReal> &M = mpfr_.matrix(id);
+    auto L = std::make_unique<group::Lorentz<FastReal>>();
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) L->m[i][j] = round_mp(M.m[i][j]);
+    slot = std::move(L);
+    return *slot;
+  }
+  slot = exact::with_precision(bits, [&](auto zero) {
+    using U = decltype(zero);
+    const group::Lorentz<U> M =
+        group::Lorentz<U>::from_moebius(group::shared_generators<U>(surface_.presentation()).moebius(word));
+    auto L = std::make_unique<group::Lorentz<FastReal>>();
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) L->m[i][j] = round_mp(M.m[i][j]);
+    return L;
+  });
+  return *slot;
+}
+
+const group::Complex<FastReal> &DoubleDoubleStage::site_coordinates(int32_t site) {
+  while (site_coordinates_.size() <= std::size_t(site)) {
+    const surface::Site &d = surface_.site(int32_t(site_coordinates_.size()));
+    site_coordinates_.push_back(d.has_approximation ? group::Complex<FastReal>{round_mp(d.approximation.re),
+                                                                               round_mp(d.approximation.im)}
+                                                    : group::Complex<FastReal>{FastReal(0), FastReal(0)});
+  }
+  return site_coordinates_[std::size_t(site)];
+}
+
+bool DoubleDoubleStage::point(const TranslatedPoint &p, FastPoint *out) {
+  const Entry &e = cache_.get(p, [this](const TranslatedPoint &q) { return compute_point(q); });
+  *out = e.point;
+  return e.ok;
+}
+
+DoubleDoubleStage::Entry DoubleDoubleStage::compute_point(const TranslatedPoint &p) {
+  Entry e{};
+  if (p.site >= 0) {
+    // The MPFR coordinates (within 2^-128 of the exact ones) rounded
+    // (2^-106 |.| < 2^-106 more, |x|, |y| < 1).
+    if (!surface_.site(p.site).has_approximation) return e;
+    const group::Complex<FastReal> &z = site_coordinates(p.site);
+    e.ok = refined_point(z.re, z.im, 0x1p-128 + 0x1p-106, &matrix(p.translation), kUnit, &e.point);
+    return e;
+  }
+  const group::Lorentz<FastReal> *L = p.translation == 0 ? nullptr : &matrix(p.translation);
+  e.ok = refined_point(FastReal(p.x), FastReal(p.y), 0, L, kUnit, &e.point);
+  return e;
+}
+
+Sign DoubleDoubleStage::orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
+  FastPoint a, b, c;
+  if (!point(p, &a) || !point(q, &b) || !point(r, &c)) return Sign::undecided;
+  return orientation_sign(a, b, c, kUnit);
+}
+
+Sign DoubleDoubleStage::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                                  const TranslatedPoint &s) {
+  FastPoint a, b, c, e;
+  if (!point(p, &a) || !point(q, &b) || !point(r, &c) || !point(s, &e)) return Sign::undecided;
+  return in_circle_sign(a, b, c, e, kUnit);
+}
+
+Sign DoubleDoubleStage::beyond_side(const TranslatedPoint &p, int side) {
+  FastPoint a;
+  if (!point(p, &a)) return Sign::undecided;
+  // g_k's matrix: entries within 2^-106 |L_ij| + 2^-121 L00 <= U L00; the
+  // subtraction 1 - L00 rounds within U |1 - L00| <= U L00: every n_i
+  // within 2U L00.
+  const group::Lorentz<FastReal> &L = matrix(surface::Surface::letter(group::Letter(side)));
+  const FastReal n[3] = {FastReal(1) - L.m[0][0], L.m[1][0], L.m[2][0]};
+  const double L00 = magnitude(L.m[0][0]) * (1 + 2 * kUnit);
+  return beyond_side_sign(a, n, L00, 2 * kUnit * L00, kUnit);
+}
+
+Sign DoubleDoubleStage::compare_distance(const TranslatedPoint &p, const TranslatedPoint &a,
+                                         const TranslatedPoint &b) {
+  FastPoint x, y, z;
+  if (!point(p, &x) || !point(a, &y) || !point(b, &z)) return Sign::undecided;
+  return compare_distance_sign(x, y, z, kUnit);
+}
+
+Sign DoubleDoubleStage::distinct(const TranslatedPoint &p, const TranslatedPoint &q) {
+  FastPoint a, b;
+  if (!point(p, &a) || !point(q, &b)) return Sign::undecided;
+  return distinct_sign(a, b, kUnit);
+}
+
+Sign DoubleDoubleStage::large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q,
+                                         const TranslatedPoint &r) {
+  FastPoint a, b, e;
+  if (!point(p, &a) || !point(q, &b) || !point(r, &e)) return Sign::undecided;
+  // The MPFR stage's constant (within 4 * 2^-133) rounded (2^-106): within U.
+  if (circumdisk_constant_.hi == 0) circumdisk_constant_ = round_mp(mpfr_.circumdisk_constant());
+  return large_circumdisk_sign(a, b, e, circumdisk_constant_, kUnit);
+}
+
+}  // namespace hdt::predicates

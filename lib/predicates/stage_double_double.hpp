@@ -1,0 +1,66 @@
+// The double-double stage: every predicate in double-double reals (about
+// 106 bits in plain double operations, double_double.hpp) with a certified
+// bound (the analysis of stage_refined.hpp, U = 2^-100). It runs for most
+// faces near the corners of F_g at large genus, where the hyperboloid is
+// nearly flat in the coordinates and the double stage cannot decide
+// in-circle tests, and for points in one frame near a tie.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "group/lorentz.hpp"
+#include "predicates/double_double.hpp"
+#include "predicates/sign.hpp"
+#include "predicates/stage_mpfr.hpp"
+#include "predicates/stage_refined.hpp"
+#include "predicates/translated_point.hpp"
+#include "surface/surface.hpp"
+
+namespace hdt::predicates {
+
+using FastReal = DoubleDouble;
+using FastPoint = RefinedPoint<FastReal>;
+
+// x rounded to double-double (hi = RN(x), lo = RN(x - hi)): within
+// u^2 |x| = 2^-106 |x|.
+FastReal round_to_fast(const MidReal &x);
+
+class DoubleDoubleStage {
+ public:
+  static constexpr double kUnit = 0x1p-100;  // every operation within 13u^2 < 2^-102: two bits to spare
+
+  // mpfr: for the matrices of long words and the sites' coordinates.
+  DoubleDoubleStage(surface::Surface &surface, MpfrStage &mpfr) : surface_(surface), mpfr_(mpfr) {}
+
+  // p's hyperboloid vector (cached); false when the stage does not apply.
+  bool point(const TranslatedPoint &p, FastPoint *out);
+
+  Sign orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+  Sign in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                 const TranslatedPoint &s);
+  Sign beyond_side(const TranslatedPoint &p, int side);
+  Sign compare_distance(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b);
+  Sign distinct(const TranslatedPoint &p, const TranslatedPoint &q);
+  Sign large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+
+ private:
+  struct Entry {
+    bool ok;  // point's answer
+    FastPoint point;
+  };
+  Entry compute_point(const TranslatedPoint &p);
+  // Each entry within 2^-106 |L_ij| + 2^-121 L_00, by translation id, lazily.
+  const group::Lorentz<FastReal> &matrix(TranslationId id);
+  // A site's coordinates: the MPFR ones (within 2^-128) rounded.
+  const group::Complex<FastReal> &site_coordinates(int32_t site);
+
+  surface::Surface &surface_;
+  MpfrStage &mpfr_;
+  PointCache<Entry> cache_;
+  std::vector<std::unique_ptr<group::Lorentz<FastReal>>> matrices_;
+  std::vector<group::Complex<FastReal>> site_coordinates_;  // by site id, up to the last one asked for
+  FastReal circumdisk_constant_{0};  // 1 + cos(pi/2g) within U; 0: not yet
+};
+
+}  // namespace hdt::predicates

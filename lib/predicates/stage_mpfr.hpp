@@ -1,0 +1,51 @@
+// The MPFR stage: every predicate in 133-bit MPFR reals with a certified
+// bound (the analysis of stage_refined.hpp, U = 2^-132). It decides what
+// double-double cannot near the polygon's corners; sites without an
+// approximation (surface.hpp) are left to the exact stage.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "exact/multiprecision.hpp"
+#include "group/lorentz.hpp"
+#include "predicates/sign.hpp"
+#include "predicates/stage_refined.hpp"
+#include "predicates/translated_point.hpp"
+#include "surface/surface.hpp"
+
+namespace hdt::predicates {
+
+using MidReal = exact::mp_real<40>;
+using MidPoint = RefinedPoint<MidReal>;
+
+class MpfrStage {
+ public:
+  static constexpr double kUnit = 0x1p-132;  // correct rounding, u = 2^-133: a bit to spare
+
+  explicit MpfrStage(surface::Surface &surface) : surface_(surface) {}
+
+  // p's hyperboloid vector; false when the stage does not apply (a site
+  // without an approximation, or a point too near the circle).
+  bool point(const TranslatedPoint &p, MidPoint *out);
+  // The translation's matrix: the exact one rounded once to 133 bits
+  // (within 2^-133 |L_ij| + 2^-197, see word_matrix.hpp), lazily.
+  const group::Lorentz<MidReal> &matrix(TranslationId id);
+  // 1 + cos(pi/2g) within 4U relative.
+  const MidReal &circumdisk_constant();
+
+  Sign orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+  Sign in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                 const TranslatedPoint &s);
+  Sign beyond_side(const TranslatedPoint &p, int side);
+  Sign compare_distance(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b);
+  Sign distinct(const TranslatedPoint &p, const TranslatedPoint &q);
+  Sign large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+
+ private:
+  surface::Surface &surface_;
+  std::vector<std::unique_ptr<group::Lorentz<MidReal>>> matrices_;  // by translation id, lazily
+  std::unique_ptr<MidReal> circumdisk_constant_;
+};
+
+}  // namespace hdt::predicates
