@@ -53,6 +53,7 @@ import platform
 import re
 import shlex
 import shutil
+import tempfile
 import subprocess
 import sys
 import time
@@ -98,7 +99,7 @@ def install_cgal():
 def build(build_dir, cgal, jobs):
     """Configures and builds the benchmark programs; returns the names of the
     extra programs that failed to build (they are left out, not fatal)."""
-    options = ["-Dbuildtype=release", "-Dcgal_peers=" + ("enabled" if cgal else "disabled")]
+    options = ["-Dbuildtype=release", "-Dbenchmarks=true", "-Dcgal_peers=" + ("enabled" if cgal else "disabled")]
     if os.path.exists(os.path.join(build_dir, "build.ninja")):
         subprocess.run(["meson", "configure", build_dir] + options, check=True, cwd=ROOT, stdout=subprocess.DEVNULL)
     else:
@@ -313,6 +314,35 @@ def run_callgrind(build_dir, g, n, seed_dir):
     seconds = time.monotonic() - t0
     log(f"    {total} instructions, {total / n:.0f} per point, {seconds:.0f} s")
     return (total, seconds), None
+
+
+def build_baseline(rev, jobs):
+    """A release build of triangulation_bench at the commit rev, in a
+    temporary git worktree: (its build directory, a cleanup function), or
+    (None, why)."""
+    top = tempfile.mkdtemp(prefix="hdt-baseline-")
+    tree = os.path.join(top, "tree")
+
+    def cleanup():
+        subprocess.run(["git", "worktree", "remove", "--force", tree], cwd=ROOT, capture_output=True)
+        shutil.rmtree(top, ignore_errors=True)
+
+    try:
+        subprocess.run(["git", "worktree", "add", "--detach", tree, rev], cwd=ROOT, check=True, capture_output=True)
+        build_dir = os.path.join(tree, "build-baseline")
+        log(f"building triangulation_bench at {rev} (the callgrind baseline)")
+        # -Dbenchmarks=true where the option exists (it came with the
+        # benchmarks' opt-in; before, they always built).
+        setup = ["meson", "setup", build_dir, "-Dbuildtype=release", "-Dtests=false"]
+        if subprocess.run(setup + ["-Dbenchmarks=true"], cwd=tree, capture_output=True).returncode != 0:
+            shutil.rmtree(build_dir, ignore_errors=True)
+            subprocess.run(setup, cwd=tree, check=True, capture_output=True)
+        subprocess.run(["ninja", "-C", build_dir, "-j", str(jobs), "bench/triangulation_bench"], cwd=tree, check=True,
+                       capture_output=True)
+    except (OSError, subprocess.CalledProcessError) as e:
+        cleanup()
+        return None, f"callgrind baseline {rev}: {e}"
+    return (build_dir, cleanup), None
 
 
 # ---- the document ------------------------------------------------------------
@@ -739,10 +769,25 @@ def make_document(runner, args, sizes, info):
         w(f"Instructions per point = the total / {args.callgrind_n}. The last column is the wall time of the "
           "whole run under valgrind (the program's other work, such as `hdt_create`, runs instrumented too).")
         w("")
-        w("| genus | instructions in hdt_insert_many | per point | run s |")
-        w("|---:|---:|---:|---:|")
+        baseline = dict(info.get("callgrind_baseline") or [])
+        if baseline:
+            w(f"Against `{args.callgrind_baseline}` (`--callgrind-baseline`), built the same way in a temporary "
+              "worktree and counted in the same run:")
+            w("")
+            w(f"| genus | instructions in hdt_insert_many | per point | at {args.callgrind_baseline}, per point "
+              "| change | run s |")
+            w("|---:|---:|---:|---:|---:|---:|")
+        else:
+            w("| genus | instructions in hdt_insert_many | per point | run s |")
+            w("|---:|---:|---:|---:|")
         for g, (total, seconds) in callgrind:
-            w(f"| {g} | {total:,} | {total / args.callgrind_n:,.0f} | {seconds:.0f} |")
+            if baseline:
+                before = baseline.get(g)
+                was = f"{before[0] / args.callgrind_n:,.0f}" if before else "-"
+                change = f"{100 * (total / before[0] - 1):+.1f}%" if before else "-"
+                w(f"| {g} | {total:,} | {total / args.callgrind_n:,.0f} | {was} | {change} | {seconds:.0f} |")
+            else:
+                w(f"| {g} | {total:,} | {total / args.callgrind_n:,.0f} | {seconds:.0f} |")
         w("")
 
     if runner.notes:
@@ -781,6 +826,8 @@ def main():
     ap.add_argument("--callgrind", default="2,32",
                     help="genera whose hdt_insert_many instructions callgrind counts ('' for none)")
     ap.add_argument("--callgrind-n", type=int, default=100000, help="points of the callgrind runs")
+    ap.add_argument("--callgrind-baseline", default=None, metavar="REV",
+                    help="also count the commit REV (built in a temporary worktree) and show the change")
     ap.add_argument("--build-dir", default=os.path.join(ROOT, "build-bench"))
     ap.add_argument("--label", default=None, help="what libhdt is measured (default: git describe)")
     ap.add_argument("--out", default=None, help="a copy of the document (default BUILD_DIR/bench-table.md)")
@@ -862,6 +909,23 @@ def main():
                 else:
                     counts.append((g, total))
             info["callgrind"] = counts
+            if args.callgrind_baseline:
+                built, why = build_baseline(args.callgrind_baseline, args.jobs)
+                if why:
+                    runner.notes.append(why)
+                else:
+                    baseline_dir, cleanup = built
+                    try:
+                        before = []
+                        for g in callgrind_genera:
+                            total, why = run_callgrind(baseline_dir, g, args.callgrind_n, runner.faces_dir)
+                            if why:
+                                runner.notes.append(why)
+                            else:
+                                before.append((g, total))
+                        info["callgrind_baseline"] = before
+                    finally:
+                        cleanup()
     info["elapsed"] = time.monotonic() - t0
 
     document = make_document(runner, args, sizes, info)
