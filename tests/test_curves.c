@@ -66,6 +66,53 @@ START_TEST(remove_high_degree_dummy) {
 }
 END_TEST
 
+/* The faces, vertices and translations, in *out (malloc'ed). */
+static size_t snapshot_faces(const hdt_triangulation *t, int32_t **out) {
+  size_t count = 0;
+  ck_assert_int_eq(hdt_faces(t, NULL, NULL, 0, &count), HDT_OK);
+  uint32_t *vertices = malloc(3 * count * sizeof *vertices);
+  int32_t *translations = malloc(3 * count * sizeof *translations);
+  *out = malloc(6 * count * sizeof **out);
+  ck_assert(vertices && translations && *out);
+  ck_assert_int_eq(hdt_faces(t, vertices, translations, count, &count), HDT_OK);
+  for (size_t i = 0; i < 3 * count; ++i) (*out)[i] = (int32_t)vertices[i], (*out)[3 * count + i] = translations[i];
+  free(vertices);
+  free(translations);
+  return count;
+}
+
+/* A refused removal, also one refused before its hole is filled (the
+   dummy at the centre of the circle, those beside the segment), leaves
+   every face as it was. */
+START_TEST(refused_removal_changes_nothing) {
+  const int genus = 2 + _i / 2;
+  const curve_shape shape = _i % 2 ? CURVE_CIRCLE : CURVE_SEGMENT;
+  double *xy = malloc(2 * POINTS * sizeof *xy);
+  ck_assert_ptr_nonnull(xy);
+  curve_points(shape, genus, POINTS, 5, xy);
+  hdt_triangulation *t = NULL;
+  ck_assert_int_eq(hdt_create(&t, genus), HDT_OK);
+  ck_assert_int_eq(hdt_insert_many(t, xy, POINTS, NULL), HDT_OK);
+  size_t remaining = 0;
+  ck_assert_int_eq(hdt_remove_dummies(t, &remaining), HDT_OK);
+  ck_assert_uint_gt(remaining, 0);
+  const size_t bound = hdt_vertex_id_bound(t);
+  for (uint32_t v = 0; v < bound; ++v) {
+    if (hdt_vertex_is_dummy(t, v) != 1) continue;
+    int32_t *before = NULL, *after = NULL;
+    const size_t n = snapshot_faces(t, &before);
+    expect(hdt_remove_vertex(t, v) == HDT_ENOTSUP, "dummy %u left by hdt_remove_dummies: %s", v,
+           hdt_last_error_message());
+    ck_assert_uint_eq(snapshot_faces(t, &after), n);
+    expect(memcmp(before, after, 6 * n * sizeof *before) == 0, "refusing dummy %u changed the faces", v);
+    free(before);
+    free(after);
+  }
+  hdt_destroy(t);
+  free(xy);
+}
+END_TEST
+
 int main(void) {
   Suite *s = suite_create("curves");
   TCase *tc = tcase_create("curves");
@@ -73,6 +120,7 @@ int main(void) {
   tcase_add_loop_test(tc, curves_genus_2, CURVE_SEGMENT, CURVE_SHAPES);
   tcase_add_loop_test(tc, curves_genus_3, CURVE_SEGMENT, CURVE_SHAPES);
   tcase_add_test(tc, remove_high_degree_dummy);
+  tcase_add_loop_test(tc, refused_removal_changes_nothing, 0, 4);
   suite_add_tcase(s, tc);
   SRunner *sr = srunner_create(s);
   srunner_run_all(sr, CK_NORMAL);

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "predicates/filtered_point.hpp"
+
 namespace hdt::triangulation {
 
 using predicates::Kernel;
@@ -42,15 +44,16 @@ class HoleFiller {
 
  private:
   const TranslatedPoint &at(int i) const { return polygon_[std::size_t(i)].point; }
+  const Vec3 &lift(int i) const { return polygon_[std::size_t(i)].lift; }
   int orientation(int a, int b, int c) { return K_.orientation(at(a), at(b), at(c)); }
 
   // The crossing of the ear at b: in_circle(a, b, c, v) / orientation(a, b,
   // c) in double; +infinity for an ear that is not convex.
   double crossing(int b) const {
     const int a = prev_[std::size_t(b)], c = next_[std::size_t(b)];
-    const Vec3 &na = lift_[std::size_t(a)], &nb = lift_[std::size_t(b)], &nc = lift_[std::size_t(c)];
+    const Vec3 &na = lift(a), &nb = lift(b), &nc = lift(c), &nv = removed_.lift;
     const double orient = det3(na, minus(nb, na), minus(nc, na));
-    const double in_circle = det3(minus(na, removed_lift_), minus(nb, removed_lift_), minus(nc, removed_lift_));
+    const double in_circle = det3(minus(na, nv), minus(nb, nv), minus(nc, nv));
     const double r = in_circle / orient;
     return orient > 0 && std::isfinite(r) ? r : std::numeric_limits<double>::infinity();
   }
@@ -81,12 +84,8 @@ class HoleFiller {
   // until it has degree 3, then closes the hole with the last triangle.
   bool flip_out_removed_vertex() {
     const std::size_t k = polygon_.size();
-    prev_.resize(k), next_.resize(k), beyond_.assign(k, -1), stamp_.assign(k, 0), lift_.resize(k);
-    removed_lift_ = K_.hyperboloid(removed_.point);
-    for (std::size_t i = 0; i < k; ++i) {
-      prev_[i] = int((i + k - 1) % k), next_[i] = int((i + 1) % k);
-      lift_[i] = K_.hyperboloid(at(int(i)));
-    }
+    prev_.resize(k), next_.resize(k), beyond_.assign(k, -1), stamp_.assign(k, 0);
+    for (std::size_t i = 0; i < k; ++i) prev_[i] = int((i + k - 1) % k), next_[i] = int((i + 1) % k);
     triangles_.clear();
     triangles_.reserve(k - 2);
     for (std::size_t i = 0; i < k; ++i) push_ear(int(i));
@@ -164,13 +163,29 @@ class HoleFiller {
   std::vector<int> prev_, next_;
   std::vector<int> beyond_;  // the triangle across the link edge i -> next(i), or -1
   std::vector<int> stamp_;   // ear version; -1 once off the link
-  std::vector<Vec3> lift_;
-  Vec3 removed_lift_{};
   std::priority_queue<Ear> heap_;
   std::vector<Triangle> triangles_;
 };
 
 }  // namespace
+
+HoleVertex lifted_hole_vertex(Kernel &kernel, const TranslatedPoint &p, uint32_t vertex) {
+  HoleVertex h{p, vertex, {}, std::numeric_limits<double>::infinity()};
+  if (p.site < 0) {
+    const predicates::FilteredPoint f =
+        p.translation == 0 ? predicates::filtered_point(p.x, p.y)
+                           : predicates::filtered_point(p.x, p.y, kernel.surface().table().lorentz(p.translation));
+    if (f.error < 1e-9 * f.n[0]) {
+      h.lift = {f.n[0], f.n[1], f.n[2]};
+      h.lift_error = f.error;
+      return h;
+    }
+  }
+  bool accurate = false;
+  h.lift = kernel.hyperboloid(p, &accurate);
+  if (accurate) h.lift_error = 1.01e-9 * h.lift[0];  // and the rounding to double
+  return h;
+}
 
 bool fill_hole(Kernel &kernel, const std::vector<HoleVertex> &polygon, const HoleVertex &removed,
                std::vector<HoleFace> *faces) {

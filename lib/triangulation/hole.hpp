@@ -30,7 +30,18 @@ namespace hdt::triangulation {
 struct HoleVertex {
   predicates::TranslatedPoint point;  // in the common frame of the hole
   uint32_t vertex;                    // its vertex id, for the perturbation
+  // The hyperboloid vector of point in double, computed once per hole, and
+  // a certified bound on each coordinate's error (infinite when unknown):
+  // fill_hole's ear order and remove()'s early refusal read them.
+  std::array<double, 3> lift;
+  double lift_error;
 };
+
+// The hole's vertex at p (vertex id `vertex`) with its lift: the double
+// filter's point where that is within 1e-9 N_0 (with its own error bound),
+// else the kernel's more precise one (Kernel::hyperboloid: within 1e-9 N_0
+// when accurate, else an unknown error).
+HoleVertex lifted_hole_vertex(predicates::Kernel &kernel, const predicates::TranslatedPoint &p, uint32_t vertex);
 
 // Faces as counterclockwise triples of indices into the polygon.
 using HoleFace = std::array<int, 3>;

@@ -1,14 +1,36 @@
 // Vertex removal: the hole left by the star of v is filled with the Delaunay
 // triangulation of its boundary polygon (hole.hpp); the removal is refused
-// when a new face would break the circumdiameter guarantee.
+// when a new face would break the circumdiameter guarantee, before the
+// filling when that can be proved from distances (early_refusal.hpp).
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
+#include "triangulation/early_refusal.hpp"
 #include "triangulation/hole.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
+
+namespace {
+
+// Whether a vertex occurs twice in the polygon: a hash set of the ids
+// (linear probing, kNone: an empty slot) in *slots, O(k).
+bool repeats_a_vertex(const std::vector<HoleVertex> &polygon, std::vector<uint32_t> *slots) {
+  int bits = 4;
+  while ((std::size_t(1) << bits) < 2 * polygon.size()) ++bits;
+  slots->assign(std::size_t(1) << bits, kNone);
+  const std::size_t mask = slots->size() - 1;
+  for (const HoleVertex &h : polygon) {
+    std::size_t s = (uint64_t(h.vertex) * 0x9E3779B97F4A7C15ull) >> (64 - bits);
+    for (; (*slots)[s] != kNone; s = (s + 1) & mask)
+      if ((*slots)[s] == h.vertex) return true;
+    (*slots)[s] = h.vertex;
+  }
+  return false;
+}
+
+}  // namespace
 
 bool Triangulation::remove(uint32_t v) {
   if (v >= vertices_.size() || !vertices_[v].alive())
@@ -19,6 +41,7 @@ bool Triangulation::remove(uint32_t v) {
   boundary_.clear();
   new_faces_.clear();
   // The link of v, counterclockwise, in the first star face's frame.
+  auto hole_vertex = [&](uint32_t u, TranslationId t) { return lifted_hole_vertex(*kernel_, point(u, t), u); };
   std::vector<HoleVertex> &polygon = hole_;
   polygon.clear();
   polygon.reserve(star_.size());
@@ -26,7 +49,7 @@ bool Triangulation::remove(uint32_t v) {
     const Face &F = faces_[s.face];
     const int a = next(s.corner), b = prev(s.corner);
     old_faces_.push_back(s.face);
-    polygon.push_back({point(F.v[a], T.compose(s.frame, F.t[a])), F.v[a]});
+    polygon.push_back(hole_vertex(F.v[a], T.compose(s.frame, F.t[a])));
     boundary_.push_back({{F.v[a], T.compose(s.frame, F.t[a])},
                          {F.v[b], T.compose(s.frame, F.t[b])},
                          F.n[s.corner],
@@ -34,14 +57,22 @@ bool Triangulation::remove(uint32_t v) {
                          T.compose(s.frame, F.nt[s.corner])});
   }
   // The link never repeats a vertex in a simplicial complex.
-  link_ids_.clear();
-  for (const HoleVertex &h : polygon) link_ids_.push_back(h.vertex);
-  std::sort(link_ids_.begin(), link_ids_.end());
-  if (std::adjacent_find(link_ids_.begin(), link_ids_.end()) != link_ids_.end())
-    throw std::logic_error("the link of a vertex repeats a vertex");
+  if (repeats_a_vertex(polygon, &link_ids_)) throw std::logic_error("the link of a vertex repeats a vertex");
 
   const Face &first = faces_[star_[0].face];
-  const HoleVertex removed{point(v, T.compose(star_[0].frame, first.t[star_[0].corner])), v};
+  const HoleVertex removed = hole_vertex(v, T.compose(star_[0].frame, first.t[star_[0].corner]));
+  if (refusal_is_certain(*kernel_, polygon, removed, genus_)) {
+#ifdef HDT_CHECK_PREDICATES
+    // The debugging build checks the proof against the filled hole.
+    fill_hole_by_wrapping(*kernel_, polygon, &hole_faces_);
+    bool large = false;
+    for (const HoleFace &f : hole_faces_)
+      large = large || kernel_->large_circumdisk(polygon[std::size_t(f[0])].point, polygon[std::size_t(f[1])].point,
+                                                 polygon[std::size_t(f[2])].point) > 0;
+    if (!large) throw std::logic_error("check_predicates: a removal refused early has no large face");
+#endif
+    return false;
+  }
   if (!fill_hole(*kernel_, polygon, removed, &hole_faces_)) fill_hole_by_wrapping(*kernel_, polygon, &hole_faces_);
 #ifdef HDT_CHECK_PREDICATES
   // The debugging build checks the fast method against the simple one.
@@ -82,7 +113,7 @@ std::size_t Triangulation::remove_dummies() {
       changed[v] = false;
       if (!remove(v)) continue;
       progress = true;
-      for (const uint32_t u : link_ids_) changed[u] = true;
+      for (const HoleVertex &h : hole_) changed[h.vertex] = true;
     }
   }
   return dummies_;

@@ -217,15 +217,15 @@ class Triangulation {
     TranslationId nt;
   };
   std::vector<Built> built_;
-  // replace()'s general search: directed edges a -> b by their corners.
+  // replace()'s edge table: directed edges a -> b by their corners.
   static uint64_t key(const Corner &c) { return uint64_t(c.v) << 32 | uint32_t(c.t); }
   struct HalfEdge {
     uint64_t a, b;
-    uint32_t face;  // index among the new faces (or the boundary's edges)
-    int edge;
-    bool operator<(const HalfEdge &o) const { return a != o.a ? a < o.a : b < o.b; }
+    uint32_t face;  // index among the new faces (or the boundary's edges); kNone: an empty slot
+    int edge;       // -1: a boundary edge
   };
-  std::vector<HalfEdge> half_edges_, boundary_edges_;
+  std::vector<HalfEdge> half_edges_;
+  class Replacement;  // replace()'s steps (topology.cpp)
   std::vector<OuterLink> outer_links_;
   std::vector<uint32_t> holes_;
 };
