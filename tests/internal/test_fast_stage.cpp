@@ -165,6 +165,26 @@ int reference_large_circumdisk(const RefPoint &a, const RefPoint &b, const RefPo
   return decisive_sign(c3 * c3 - k * mm, m4 * m * m);
 }
 
+// The copies of F_g around v_0: (j, h) with h(v_j) = v_0 for a neighbour h
+// (in double the Minkowski product may be off by 1e-2 at genus 32; other
+// vertices of the tiling are much farther). One per vertex v_j.
+struct Copy {
+  int j;
+  group::TranslationId h;
+};
+std::vector<Copy> copies_around_v0(surface::Surface &M) {
+  const int g = M.genus(), n = 4 * g;
+  const group::HyperboloidPoint<double> v0 = group::to_hyperboloid(surface::polygon_vertex<double>(g, 0));
+  std::vector<Copy> copies;
+  for (group::TranslationId h = 0; std::size_t(h) < M.table().neighbour_count(); ++h)
+    for (int j = 0; j < n; ++j) {
+      const auto image = M.table().lorentz(h).apply(group::to_hyperboloid(surface::polygon_vertex<double>(g, j)));
+      if (group::minkowski(image, v0) < 1.5) copies.push_back({j, h});
+    }
+  ck_assert_int_eq(int(copies.size()), n);
+  return copies;
+}
+
 }  // namespace
 
 START_TEST(corner_clusters_agree_with_reference) {
@@ -172,22 +192,7 @@ START_TEST(corner_clusters_agree_with_reference) {
   const auto t0 = std::chrono::steady_clock::now();
   surface::Surface M(g);
   Kernel kernel{M};
-  const int n = 4 * g;
-  // The copies of F_g around v_0: h(v_j) = v_0 for a neighbour h (in double
-  // the Minkowski product may be off by 1e-2 at genus 32; other vertices of
-  // the tiling are much farther).
-  const group::HyperboloidPoint<double> v0 = group::to_hyperboloid(surface::polygon_vertex<double>(g, 0));
-  struct Copy {
-    int j;
-    group::TranslationId h;
-  };
-  std::vector<Copy> copies;
-  for (group::TranslationId h = 0; std::size_t(h) < kernel.surface().table().neighbour_count(); ++h)
-    for (int j = 0; j < n; ++j) {
-      const auto image = kernel.surface().table().lorentz(h).apply(group::to_hyperboloid(surface::polygon_vertex<double>(g, j)));
-      if (group::minkowski(image, v0) < 1.5) copies.push_back({j, h});
-    }
-  ck_assert_int_eq(int(copies.size()), n);
+  const std::vector<Copy> copies = copies_around_v0(M);
   Rng rng(7100 + g);
   // A point of copy c: v_j moved towards 0 by a relative gap in [1e-9, 1e-5]
   // and a small sideways step, then mapped by h close to v_0.
@@ -238,18 +243,7 @@ START_TEST(refined_stages_agree_with_exact_near_ties) {
   surface::Surface M(g);
   Kernel kernel{M};
   const int n = 4 * g;
-  const group::HyperboloidPoint<double> v0 = group::to_hyperboloid(surface::polygon_vertex<double>(g, 0));
-  struct Copy {
-    int j;
-    group::TranslationId h;
-  };
-  std::vector<Copy> copies;
-  for (group::TranslationId h = 0; std::size_t(h) < M.table().neighbour_count(); ++h)
-    for (int j = 0; j < n; ++j) {
-      const auto image = M.table().lorentz(h).apply(group::to_hyperboloid(surface::polygon_vertex<double>(g, j)));
-      if (group::minkowski(image, v0) < 1.5) copies.push_back({j, h});
-    }
-  ck_assert_int_eq(int(copies.size()), n);
+  const std::vector<Copy> copies = copies_around_v0(M);
   std::vector<int32_t> vertex_site(n);
   for (int j = 0; j < n; ++j) {
     const group::Complex<predicates::MidReal> v = surface::polygon_vertex<predicates::MidReal>(g, j);
