@@ -99,51 +99,9 @@ DoubleDoubleStage::Entry DoubleDoubleStage::compute_point(const TranslatedPoint 
   return e;
 }
 
-Sign DoubleDoubleStage::orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
-  FastPoint a, b, c;
-  if (!point(p, &a) || !point(q, &b) || !point(r, &c)) return Sign::undecided;
-  return orientation_sign(a, b, c, kUnit);
-}
-
-Sign DoubleDoubleStage::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
-                                  const TranslatedPoint &s) {
-  FastPoint a, b, c, e;
-  if (!point(p, &a) || !point(q, &b) || !point(r, &c) || !point(s, &e)) return Sign::undecided;
-  return in_circle_sign(a, b, c, e, kUnit);
-}
-
-Sign DoubleDoubleStage::beyond_side(const TranslatedPoint &p, int side) {
-  FastPoint a;
-  if (!point(p, &a)) return Sign::undecided;
-  // g_k's matrix: entries within 2^-106 |L_ij| + 2^-121 L00 <= U L00; the
-  // subtraction 1 - L00 rounds within U |1 - L00| <= U L00: every n_i
-  // within 2U L00.
-  const group::Lorentz<FastReal> &L = matrix(surface::Surface::letter(group::Letter(side)));
-  const FastReal n[3] = {FastReal(1) - L.m[0][0], L.m[1][0], L.m[2][0]};
-  const double L00 = magnitude(L.m[0][0]) * (1 + 2 * kUnit);
-  return beyond_side_sign(a, n, L00, 2 * kUnit * L00, kUnit);
-}
-
-Sign DoubleDoubleStage::compare_distance(const TranslatedPoint &p, const TranslatedPoint &a,
-                                         const TranslatedPoint &b) {
-  FastPoint x, y, z;
-  if (!point(p, &x) || !point(a, &y) || !point(b, &z)) return Sign::undecided;
-  return compare_distance_sign(x, y, z, kUnit);
-}
-
-Sign DoubleDoubleStage::distinct(const TranslatedPoint &p, const TranslatedPoint &q) {
-  FastPoint a, b;
-  if (!point(p, &a) || !point(q, &b)) return Sign::undecided;
-  return distinct_sign(a, b, kUnit);
-}
-
-Sign DoubleDoubleStage::large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q,
-                                         const TranslatedPoint &r) {
-  FastPoint a, b, e;
-  if (!point(p, &a) || !point(q, &b) || !point(r, &e)) return Sign::undecided;
-  // The MPFR stage's constant (within 4 * 2^-133) rounded (2^-106): within U.
+const FastReal &DoubleDoubleStage::circumdisk_constant() {
   if (circumdisk_constant_.hi == 0) circumdisk_constant_ = round_mp(mpfr_.circumdisk_constant());
-  return large_circumdisk_sign(a, b, e, circumdisk_constant_, kUnit);
+  return circumdisk_constant_;
 }
 
 }  // namespace hdt::predicates

@@ -14,6 +14,7 @@
 #include "predicates/sign.hpp"
 #include "predicates/stage_mpfr.hpp"
 #include "predicates/stage_refined.hpp"
+#include "predicates/stage_refined_predicates.hpp"
 #include "predicates/translated_point.hpp"
 #include "surface/surface.hpp"
 
@@ -26,7 +27,7 @@ using FastPoint = RefinedPoint<FastReal>;
 // u^2 |x| = 2^-106 |x|.
 FastReal round_to_fast(const MidReal &x);
 
-class DoubleDoubleStage {
+class DoubleDoubleStage : public RefinedPredicates<DoubleDoubleStage, FastReal> {
  public:
   static constexpr double kUnit = 0x1p-100;  // every operation within 13u^2 < 2^-102: two bits to spare
 
@@ -36,13 +37,10 @@ class DoubleDoubleStage {
   // p's hyperboloid vector (cached); false when the stage does not apply.
   bool point(const TranslatedPoint &p, FastPoint *out);
 
-  Sign orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
-  Sign in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
-                 const TranslatedPoint &s);
-  Sign beyond_side(const TranslatedPoint &p, int side);
-  Sign compare_distance(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b);
-  Sign distinct(const TranslatedPoint &p, const TranslatedPoint &q);
-  Sign large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
+  // Each entry within 2^-106 |L_ij| + 2^-121 L_00 <= U L_00, by translation id, lazily.
+  const group::Lorentz<FastReal> &matrix(TranslationId id);
+  // 1 + cos(pi/2g): the MPFR stage's (within 4 * 2^-133) rounded (2^-106), within U.
+  const FastReal &circumdisk_constant();
 
  private:
   struct Entry {
@@ -50,8 +48,6 @@ class DoubleDoubleStage {
     FastPoint point;
   };
   Entry compute_point(const TranslatedPoint &p);
-  // Each entry within 2^-106 |L_ij| + 2^-121 L_00, by translation id, lazily.
-  const group::Lorentz<FastReal> &matrix(TranslationId id);
   // A site's coordinates: the MPFR ones (within 2^-128) rounded.
   const group::Complex<FastReal> &site_coordinates(int32_t site);
 

@@ -38,46 +38,4 @@ const MidReal &MpfrStage::circumdisk_constant() {
   return *circumdisk_constant_;
 }
 
-Sign MpfrStage::orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
-  MidPoint a, b, c;
-  if (!point(p, &a) || !point(q, &b) || !point(r, &c)) return Sign::undecided;
-  return orientation_sign(a, b, c, kUnit);
-}
-
-Sign MpfrStage::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
-                          const TranslatedPoint &s) {
-  MidPoint a, b, c, e;
-  if (!point(p, &a) || !point(q, &b) || !point(r, &c) || !point(s, &e)) return Sign::undecided;
-  return in_circle_sign(a, b, c, e, kUnit);
-}
-
-Sign MpfrStage::beyond_side(const TranslatedPoint &p, int side) {
-  MidPoint a;
-  if (!point(p, &a)) return Sign::undecided;
-  // g_k's matrix: entries within 2^-133 |L_ij| + 2^-197 <= U L00 (L00 >= 1);
-  // 1 - L00 rounds once more: every n_i within 2U L00.
-  const group::Lorentz<MidReal> &L = matrix(surface::Surface::letter(group::Letter(side)));
-  const MidReal n[3] = {MidReal(1) - L.m[0][0], L.m[1][0], L.m[2][0]};
-  const double L00 = magnitude(L.m[0][0]) * (1 + 2 * kUnit);
-  return beyond_side_sign(a, n, L00, 2 * kUnit * L00, kUnit);
-}
-
-Sign MpfrStage::compare_distance(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b) {
-  MidPoint x, y, z;
-  if (!point(p, &x) || !point(a, &y) || !point(b, &z)) return Sign::undecided;
-  return compare_distance_sign(x, y, z, kUnit);
-}
-
-Sign MpfrStage::distinct(const TranslatedPoint &p, const TranslatedPoint &q) {
-  MidPoint a, b;
-  if (!point(p, &a) || !point(q, &b)) return Sign::undecided;
-  return distinct_sign(a, b, kUnit);
-}
-
-Sign MpfrStage::large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
-  MidPoint a, b, e;
-  if (!point(p, &a) || !point(q, &b) || !point(r, &e)) return Sign::undecided;
-  return large_circumdisk_sign(a, b, e, circumdisk_constant(), kUnit);
-}
-
 }  // namespace hdt::predicates

@@ -11,6 +11,7 @@
 #include "group/lorentz.hpp"
 #include "predicates/sign.hpp"
 #include "predicates/stage_refined.hpp"
+#include "predicates/stage_refined_predicates.hpp"
 #include "predicates/translated_point.hpp"
 #include "surface/surface.hpp"
 
@@ -19,7 +20,7 @@ namespace hdt::predicates {
 using MidReal = exact::mp_real<40>;
 using MidPoint = RefinedPoint<MidReal>;
 
-class MpfrStage {
+class MpfrStage : public RefinedPredicates<MpfrStage, MidReal> {
  public:
   static constexpr double kUnit = 0x1p-132;  // correct rounding, u = 2^-133: a bit to spare
 
@@ -29,18 +30,10 @@ class MpfrStage {
   // without an approximation, or a point too near the circle).
   bool point(const TranslatedPoint &p, MidPoint *out);
   // The translation's matrix: the exact one rounded once to 133 bits
-  // (within 2^-133 |L_ij| + 2^-197, see word_matrix.hpp), lazily.
+  // (within 2^-133 |L_ij| + 2^-197 <= U L_00, see word_matrix.hpp), lazily.
   const group::Lorentz<MidReal> &matrix(TranslationId id);
   // 1 + cos(pi/2g) within 4U relative.
   const MidReal &circumdisk_constant();
-
-  Sign orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
-  Sign in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
-                 const TranslatedPoint &s);
-  Sign beyond_side(const TranslatedPoint &p, int side);
-  Sign compare_distance(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b);
-  Sign distinct(const TranslatedPoint &p, const TranslatedPoint &q);
-  Sign large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
 
  private:
   surface::Surface &surface_;
