@@ -15,7 +15,9 @@
 #include <cmath>
 #include <cstdio>
 #include <initializer_list>
+#include <map>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "exact/multiprecision.hpp"
@@ -44,6 +46,7 @@ using Big = exact::mp_real<120>;  // about 400 bits
 using Rng = std::mt19937_64;
 
 constexpr double kU2 = 0x1p-106;  // u^2
+constexpr double kOff = 0x1p-108;  // how far the sites off the polygon's vertices are
 
 Big big(const DoubleDouble &x) { return Big(x.hi) + Big(x.lo); }
 
@@ -244,11 +247,18 @@ START_TEST(refined_stages_agree_with_exact_near_ties) {
   Kernel kernel{M};
   const int n = 4 * g;
   const std::vector<Copy> copies = copies_around_v0(M);
-  std::vector<int32_t> vertex_site(n);
+  std::vector<int32_t> vertex_site(n), off_site(n);
   for (int j = 0; j < n; ++j) {
     const group::Complex<predicates::MidReal> v = surface::polygon_vertex<predicates::MidReal>(g, j);
     const group::Complex<double> rounded = surface::vertex(M.presentation(), j);
-    vertex_site[j] = M.add_site(surface::exact_vertex(M.field(), j), &v, &rounded);
+    const surface::ExactSite exact = surface::exact_vertex(M.field(), j);
+    vertex_site[j] = M.add_site(exact, &v, &rounded);
+    // v_j + 2^-108, exactly: too near the ties for double-double (its site
+    // coordinates are within 2^-106), decided by the 133-bit stage (2^-128).
+    const group::Complex<predicates::MidReal> w{v.re + kOff, v.im};
+    const group::Complex<double> w_rounded{static_cast<double>(w.re), static_cast<double>(w.im)};
+    const surface::ExactSite moved{M.field().add(exact.X, M.field().from_double(kOff)), exact.Y, exact.Z};
+    off_site[j] = M.add_site(moved, &w, &w_rounded);
   }
   Rng rng(7200 + g);
   auto near_point = [&](const Copy &c) {
@@ -259,11 +269,14 @@ START_TEST(refined_stages_agree_with_exact_near_ties) {
   };
   const TranslatedPoint v0_site = kernel.site_point(vertex_site[0], 0);
   int compared = 0, ties = 0;
+  std::map<std::string, int> by_mpfr;  // calls decided by the 133-bit stage, by predicate
   kernel.reset_statistics();
   // A result that the double stage did not decide (the filtered count did
   // not move), compared with exact().
-  auto check = [&](const char *what, int result, unsigned long filtered_before, auto exact) {
-    if (kernel.statistics().filtered() != filtered_before) return;
+  auto check = [&](const char *what, int result, const predicates::FilterStatistics &before, auto exact) {
+    const predicates::FilterStatistics after = kernel.statistics();
+    if (after.filtered() != before.filtered()) return;
+    by_mpfr[what] += after[Stage::mpfr] != before[Stage::mpfr];
     const int e = exact();
     ++compared;
     ties += e == 0;
@@ -271,34 +284,45 @@ START_TEST(refined_stages_agree_with_exact_near_ties) {
   };
   for (const Copy &c : copies) {
     const TranslatedPoint on = kernel.site_point(vertex_site[c.j], c.h);
-    for (const TranslatedPoint &p : {on, near_point(c), near_point(c)}) {
+    const TranslatedPoint off = kernel.site_point(off_site[c.j], c.h);
+    for (const TranslatedPoint &p : {on, off, near_point(c), near_point(c)}) {
       for (int k = 0; k < n; ++k) {
-        const unsigned long before = kernel.statistics().filtered();
+        const predicates::FilterStatistics before = kernel.statistics();
         const int s = kernel.beyond_side(p, k);
         check("beyond_side", s, before, [&] { return kernel.beyond_side_exact(p, k); });
       }
       for (int t = 0; t < 3; ++t) {
         const TranslatedPoint a{0, 0, copies[rng() % copies.size()].h}, b{0, 0, copies[rng() % copies.size()].h};
-        const unsigned long before = kernel.statistics().filtered();
+        const predicates::FilterStatistics before = kernel.statistics();
         const int s = kernel.compare_distance(p, a, b);
         check("compare_distance", s, before, [&] { return kernel.compare_distance_exact(p, a, b); });
       }
-      const unsigned long before = kernel.statistics().filtered();
+      const predicates::FilterStatistics before = kernel.statistics();
       const bool same = kernel.same_point(p, v0_site);
       ck_assert_int_eq(same, kernel.same_point_exact(p, v0_site));
-      if (kernel.statistics().filtered() == before) ++compared, ties += same;
+      const predicates::FilterStatistics after = kernel.statistics();
+      if (after.filtered() == before.filtered()) ++compared, ties += same;
+      by_mpfr["same_point"] += after[Stage::mpfr] != before[Stage::mpfr];
     }
     ck_assert(kernel.same_point(on, v0_site));
+    ck_assert(!kernel.same_point(off, v0_site));
   }
   const auto s = kernel.statistics();
   std::printf("ties g=%d: %d calls past the double stage (%d ties): double-double %lu, 133-bit %lu, exact %lu "
               "(%.1f s)\n", g, compared, ties, s[Stage::double_double], s[Stage::mpfr], s[Stage::exact],
               seconds_since(t0));
   // Every site on v_0 is on two side lines: the ties reach the exact stage,
-  // and the refined stages decide the near ones.
+  // and the refined stages decide the near ones (the sites 2^-108 off v_j
+  // the 133-bit stage: each of the three predicates at genus 4; at genus 16
+  // the translations' entries, up to 2^18, leave some to the exact stage).
   ck_assert_int_ge(ties, 2 * n);
   ck_assert_uint_ge(s[Stage::exact], (unsigned long)ties);
   ck_assert_uint_gt(s[Stage::double_double], (unsigned long)n);
+  for (const char *what : {"beyond_side", "compare_distance", "same_point"}) {
+    std::printf("  %s: %d decided by the 133-bit stage\n", what, by_mpfr[what]);
+    if (g == 4) ck_assert_msg(by_mpfr[what] > 0, "g=%d: the 133-bit stage never decided %s", g, what);
+  }
+  ck_assert_uint_gt(s[Stage::mpfr], 0);
 }
 END_TEST
 
