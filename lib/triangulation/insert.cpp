@@ -138,11 +138,8 @@ uint32_t hilbert_index(uint32_t x, uint32_t y) {
 // fuzzing), which std::clamp would pass on to an undefined conversion.
 uint32_t grid(double c) { return std::isfinite(c) ? uint32_t(std::clamp((c + 1) * 16384.0, 0.0, 32767.0)) : 0; }
 
-constexpr uint32_t kAtHome = 1u << 31;  // in a sort key: the point is its own representative
-
-// Sorts items by the curve part of their key (the low 30 bits), stably:
-// three passes of 10 bits (an LSD radix sort, a third of std::sort's
-// instructions on these 24-byte items). The buffer is freed before the
+// Sorts items by their key (30 bits), stably: three passes of 10 bits (an
+// LSD radix sort, a third of std::sort's instructions on these items). The buffer is freed before the
 // triangulation reserves room for the new faces, so it does not raise the
 // peak memory.
 template <class Item>
@@ -163,12 +160,14 @@ void sort_along_curve(std::vector<Item> &items) {
 void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) {
   // Check every point first: a bad one rejects the call before any change.
   // The points are copied in Hilbert order of their representatives (reading
-  // the caller's array in that order would miss the cache at every point);
-  // 24 bytes each, and the representative is found again when inserting
-  // unless the key says it is the point itself.
+  // the caller's array in that order would miss the cache at every point),
+  // each with its representative's translation: finding it again costs more
+  // than moving 8 more bytes per point through the sort (points outside
+  // F_g, as along a curve, pay some thousand instructions for it).
   struct Item {
     uint32_t key, index;
     double x, y;
+    TranslationId home;
   };
   std::vector<Item> order(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -186,7 +185,7 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
       const auto z = table().moebius(home).apply({x, y});
       rx = z.re, ry = z.im;
     }
-    order[i] = {hilbert_index(grid(rx), grid(ry)) | (home == 0 ? kAtHome : 0), uint32_t(i), x, y};
+    order[i] = {hilbert_index(grid(rx), grid(ry)), uint32_t(i), x, y, home};
   }
   sort_along_curve(order);
   vertices_.reserve(vertices_.size() + n);
@@ -197,7 +196,7 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
   if (out) std::fill(out, out + n, kNone);
   for (const Item &item : order) {
     const double x = item.x, y = item.y;
-    const TranslationId home = (item.key & kAtHome) ? 0 : predicates::representative(*kernel_, x, y).translation;
+    const TranslationId home = item.home;
     const Walk at = walk_from_hint({x, y, home, -1});
     uint32_t v = vertex_at(at);
     if (v != kNone) {
