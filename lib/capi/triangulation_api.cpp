@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "capi/guard.hpp"
+#include "capi/handle.hpp"
 #include "hdt.h"
 #include "triangulation/triangulation.hpp"
 
@@ -11,11 +12,6 @@ using hdt::capi::ApiError;
 using hdt::capi::fail;
 using hdt::capi::guarded;
 using hdt::triangulation::Triangulation;
-
-struct hdt_triangulation {
-  explicit hdt_triangulation(int genus) : tri(genus) {}
-  Triangulation tri;
-};
 
 namespace {
 

@@ -20,6 +20,7 @@
 #include "predicates/kernel.hpp"
 #include "triangulation/hole.hpp"
 #include "triangulation/mesh.hpp"
+#include "triangulation/snapshot.hpp"
 
 namespace hdt::triangulation {
 
@@ -74,6 +75,12 @@ class Triangulation {
   // naming the first broken one.
   void validate() const;
 
+  // Saving and loading (snapshot.hpp, restore.cpp). restore() checks
+  // everything it is given (ranges, the sites, canonical words, then
+  // validate()) and throws SnapshotError naming the part at fault.
+  Snapshot snapshot() const;
+  static Triangulation restore(const Snapshot &s);
+
   bool is_dummy(uint32_t v) const { return dummy_[v]; }
   // The surface's site of vertex v, or -1: sites 0 .. 2g are vertices 1 .. 2g+1.
   int32_t site_of(uint32_t v) const { return v >= 1 && v <= uint32_t(2 * genus_ + 1) ? int32_t(v - 1) : -1; }
@@ -91,6 +98,8 @@ class Triangulation {
   friend std::shared_ptr<const struct DummyTemplate> build_dummy_points(Triangulation &t);
   struct Empty {};
   Triangulation(int genus, Empty);  // no vertices: the dummy construction's start
+  // restore() without validate(), after the ranges are checked.
+  static Triangulation rebuild(const Snapshot &s);
 
   // A corner of a face under construction: a vertex and its translation in
   // the common frame of the operation.

@@ -1,0 +1,261 @@
+// The saved-triangulation format, version 1. Layout (all integers
+// little-endian, doubles as their IEEE-754 bits; docs/format.md):
+//
+//   offset  size  field
+//        0     8  magic 89 'H' 'D' 'T' 0D 0A 1A 0A
+//        8     4  format version (1)
+//       12     4  genus
+//       16     4  W, the translation words beyond N
+//       20     4  V, the vertex ids (live and removed)
+//       24     4  F, the faces
+//       28     4  the face the next walk starts from
+//       32     4  the vertex last touched (FFFFFFFF: none)
+//       36     8  the walk's random state
+//       44        W words: u16 length, then u16 letters
+//                 V vertices, 25 bytes: f64 x, f64 y, i32 home, u32 face
+//                   (FFFFFFFF: removed), u8 flags (bit 0: dummy)
+//                 F faces, 48 bytes: u32 v[3], i32 t[3], u32 n[3], i32 nt[3]
+//      end-4     4  CRC-32 (ISO-HDLC, as zlib's crc32) of every byte before it
+#include "capi/save_format.hpp"
+
+#include <boost/crc.hpp>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "capi/guard.hpp"
+
+namespace hdt::capi {
+
+namespace {
+
+using triangulation::Face;
+using triangulation::kNone;
+using triangulation::Snapshot;
+using triangulation::SnapshotError;
+using triangulation::Triangulation;
+using triangulation::Vertex;
+
+constexpr unsigned char kMagic[8] = {0x89, 'H', 'D', 'T', 0x0D, 0x0A, 0x1A, 0x0A};
+constexpr uint32_t kVersion = 1;
+constexpr std::size_t kHeader = 44, kVertexBytes = 25, kFaceBytes = 48, kChecksum = 4;
+constexpr std::size_t kWordsAt = kHeader;
+
+uint32_t crc32(const unsigned char *p, std::size_t n) {
+  boost::crc_32_type crc;
+  crc.process_bytes(p, n);
+  return crc.checksum();
+}
+
+class Writer {
+ public:
+  explicit Writer(unsigned char *out) : p_(out) {}
+  void bytes(const void *b, std::size_t n) { std::memcpy(p_, b, n), p_ += n; }
+  void u8(uint8_t v) { *p_++ = v; }
+  void u16(uint16_t v) { u8(uint8_t(v)), u8(uint8_t(v >> 8)); }
+  void u32(uint32_t v) {
+    for (int i = 0; i < 4; ++i) u8(uint8_t(v >> 8 * i));
+  }
+  void u64(uint64_t v) {
+    for (int i = 0; i < 8; ++i) u8(uint8_t(v >> 8 * i));
+  }
+  void f64(double d) {
+    uint64_t v;
+    std::memcpy(&v, &d, 8);
+    u64(v);
+  }
+  unsigned char *at() const { return p_; }
+
+ private:
+  unsigned char *p_;
+};
+
+[[noreturn]] void bad(std::size_t offset, const std::string &what) {
+  throw ApiError(HDT_EINVAL, "byte " + std::to_string(offset) + ": " + what);
+}
+
+// Reads within [begin, end); every read is bounds-checked and names its offset.
+class Reader {
+ public:
+  Reader(const unsigned char *b, std::size_t size) : b_(b), size_(size) {}
+  std::size_t offset() const { return at_; }
+  std::size_t left() const { return size_ - at_; }
+  void need(std::size_t n, const char *what) const {
+    if (n > left())
+      bad(at_, std::string("the file ends inside ") + what + " (" + std::to_string(left()) + " bytes left, " +
+                   std::to_string(n) + " needed): it is truncated");
+  }
+  uint8_t u8() { return b_[at_++]; }
+  uint16_t u16() {
+    const uint16_t v = uint16_t(b_[at_] | b_[at_ + 1] << 8);
+    at_ += 2;
+    return v;
+  }
+  uint32_t u32() {
+    uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v |= uint32_t(b_[at_ + i]) << 8 * i;
+    at_ += 4;
+    return v;
+  }
+  uint64_t u64() {
+    uint64_t v = 0;
+    for (int i = 0; i < 8; ++i) v |= uint64_t(b_[at_ + i]) << 8 * i;
+    at_ += 8;
+    return v;
+  }
+  double f64() {
+    const uint64_t v = u64();
+    double d;
+    std::memcpy(&d, &v, 8);
+    return d;
+  }
+
+ private:
+  const unsigned char *b_;
+  std::size_t size_, at_ = 0;
+};
+
+// Where the item a SnapshotError names is stored.
+std::size_t offset_of(const SnapshotError &e, const std::vector<std::size_t> &word_at, std::size_t vertices_at,
+                      std::size_t faces_at, const std::string &what) {
+  switch (e.part) {
+    case SnapshotError::kGenus: return 12;
+    case SnapshotError::kWord: return e.index < word_at.size() ? word_at[e.index] : kWordsAt;
+    case SnapshotError::kVertex: return vertices_at + kVertexBytes * e.index;
+    case SnapshotError::kFace: return faces_at + kFaceBytes * e.index;
+    case SnapshotError::kState: return 28;
+    case SnapshotError::kStructure: break;
+  }
+  // validate()'s messages name the first broken face or vertex.
+  for (const char *name : {"face ", "vertex "}) {
+    const std::size_t k = what.find(std::string(": ") + name);
+    if (k == std::string::npos) continue;
+    const std::size_t digits = k + 2 + std::strlen(name);
+    std::size_t i = digits;
+    unsigned long long n = 0;
+    while (i < what.size() && what[i] >= '0' && what[i] <= '9' && n < (1ull << 40)) n = 10 * n + unsigned(what[i++] - '0');
+    if (i == digits) continue;
+    return name[0] == 'f' ? faces_at + kFaceBytes * n : vertices_at + kVertexBytes * n;
+  }
+  return faces_at;
+}
+
+}  // namespace
+
+std::size_t saved_size(const Triangulation &t) {
+  const group::TranslationTable &T = t.table();
+  std::size_t n = kHeader + kChecksum;
+  for (std::size_t id = T.neighbour_count(); id < T.size(); ++id) n += 2 + 2 * T.word(group::TranslationId(id)).size();
+  return n + kVertexBytes * t.vertices().size() + kFaceBytes * t.faces().size();
+}
+
+void write_saved(const Triangulation &t, unsigned char *out) {
+  const Snapshot s = t.snapshot();
+  Writer w(out);
+  w.bytes(kMagic, 8);
+  w.u32(kVersion);
+  w.u32(uint32_t(s.genus));
+  w.u32(uint32_t(s.extra_words.size()));
+  w.u32(uint32_t(s.vertices.size()));
+  w.u32(uint32_t(s.faces.size()));
+  w.u32(s.last_face);
+  w.u32(s.last_vertex);
+  w.u64(s.rng);
+  for (const group::Word &word : s.extra_words) {
+    w.u16(uint16_t(word.size()));
+    for (group::Letter l : word) w.u16(uint16_t(l));
+  }
+  for (std::size_t v = 0; v < s.vertices.size(); ++v) {
+    const Vertex &u = s.vertices[v];
+    w.f64(u.x), w.f64(u.y), w.u32(uint32_t(u.home)), w.u32(u.face), w.u8(s.dummy[v] ? 1 : 0);
+  }
+  for (const Face &f : s.faces) {
+    for (int i = 0; i < 3; ++i) w.u32(f.v[i]);
+    for (int i = 0; i < 3; ++i) w.u32(uint32_t(f.t[i]));
+    for (int i = 0; i < 3; ++i) w.u32(f.n[i]);
+    for (int i = 0; i < 3; ++i) w.u32(uint32_t(f.nt[i]));
+  }
+  w.u32(crc32(out, std::size_t(w.at() - out)));
+}
+
+Triangulation read_saved(const unsigned char *bytes, std::size_t size) {
+  if (size < kHeader + kChecksum)
+    bad(size, "the file is " + std::to_string(size) + " bytes, shorter than the " + std::to_string(kHeader + kChecksum) +
+                  " of a header and checksum: it is truncated or not a saved triangulation");
+  if (std::memcmp(bytes, kMagic, 8) != 0) bad(0, "not a saved libhdt triangulation (the first 8 bytes are not its signature)");
+  Reader r(bytes, size - kChecksum);
+  r.u64();
+  const uint32_t version = r.u32();
+  if (version != kVersion)
+    bad(8, "format version " + std::to_string(version) + "; this libhdt reads version " + std::to_string(kVersion));
+  const uint32_t genus = r.u32();
+  if (genus < 2 || genus > HDT_GENUS_MAX)
+    bad(12, "genus " + std::to_string(genus) + " is not in 2.." + std::to_string(HDT_GENUS_MAX));
+  const uint32_t W = r.u32(), V = r.u32(), F = r.u32();
+  Snapshot s;
+  s.genus = int(genus);
+  s.last_face = r.u32();
+  s.last_vertex = r.u32();
+  s.rng = r.u64();
+  // Every count is bounded by the bytes it needs before anything is
+  // allocated: a hostile header cannot ask for more memory than the file's
+  // size justifies.
+  const uint64_t least = uint64_t(kHeader) + 2 * uint64_t(W) + kVertexBytes * uint64_t(V) + kFaceBytes * uint64_t(F) + kChecksum;
+  if (least > size)
+    bad(16, "the header's counts (" + std::to_string(W) + " words, " + std::to_string(V) + " vertices, " + std::to_string(F) +
+                " faces) need at least " + std::to_string(least) + " bytes; the file has " + std::to_string(size) +
+                ": it is truncated or corrupted");
+  const uint32_t stored = uint32_t(bytes[size - 4]) | uint32_t(bytes[size - 3]) << 8 | uint32_t(bytes[size - 2]) << 16 |
+                          uint32_t(bytes[size - 1]) << 24;
+  const uint32_t computed = crc32(bytes, size - kChecksum);
+  if (stored != computed) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "the checksum is %08x, the bytes before it give %08x: the file is corrupted or truncated", stored,
+                  computed);
+    bad(size - kChecksum, text);
+  }
+
+  std::vector<std::size_t> word_at;
+  word_at.reserve(W);
+  s.extra_words.resize(W);
+  for (uint32_t i = 0; i < W; ++i) {
+    word_at.push_back(r.offset());
+    r.need(2, "a word's length");
+    const uint16_t n = r.u16();
+    r.need(2 * std::size_t(n), "a word");
+    group::Word &word = s.extra_words[i];
+    word.resize(n);
+    for (uint16_t k = 0; k < n; ++k) word[k] = r.u16();
+  }
+  const std::size_t vertices_at = r.offset();
+  r.need(kVertexBytes * std::size_t(V), "the vertices");
+  s.vertices.resize(V);
+  s.dummy.resize(V);
+  for (uint32_t v = 0; v < V; ++v) {
+    Vertex &u = s.vertices[v];
+    u.x = r.f64(), u.y = r.f64();
+    u.home = int32_t(r.u32());
+    u.face = r.u32();
+    const uint8_t flags = r.u8();
+    if (flags > 1) bad(r.offset() - 1, "vertex " + std::to_string(v) + " has unknown flags " + std::to_string(flags));
+    s.dummy[v] = flags == 1;
+  }
+  const std::size_t faces_at = r.offset();
+  r.need(kFaceBytes * std::size_t(F), "the faces");
+  s.faces.resize(F);
+  for (Face &f : s.faces) {
+    for (int i = 0; i < 3; ++i) f.v[i] = r.u32();
+    for (int i = 0; i < 3; ++i) f.t[i] = int32_t(r.u32());
+    for (int i = 0; i < 3; ++i) f.n[i] = r.u32();
+    for (int i = 0; i < 3; ++i) f.nt[i] = int32_t(r.u32());
+  }
+  if (r.left() != 0) bad(r.offset(), std::to_string(r.left()) + " bytes after the last face, before the checksum");
+  try {
+    return Triangulation::restore(s);
+  } catch (const SnapshotError &e) {
+    bad(offset_of(e, word_at, vertices_at, faces_at, e.what()), e.what());
+  }
+}
+
+}  // namespace hdt::capi

@@ -1,0 +1,22 @@
+// The saved-triangulation format, version 1 (docs/format.md): bytes from a
+// triangulation and a checked snapshot from bytes.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "triangulation/triangulation.hpp"
+
+namespace hdt::capi {
+
+// The size of t's saved form, in bytes.
+std::size_t saved_size(const triangulation::Triangulation &t);
+// Writes t's saved form, saved_size(t) bytes, to out.
+void write_saved(const triangulation::Triangulation &t, unsigned char *out);
+// The triangulation saved in bytes[0 .. size): every field checked, then
+// the whole validated (Triangulation::restore). Throws ApiError(HDT_EINVAL)
+// with a message that names the byte offset at fault; bad_alloc when
+// memory runs out (allocations are bounded by a small multiple of size).
+triangulation::Triangulation read_saved(const unsigned char *bytes, std::size_t size);
+
+}  // namespace hdt::capi

@@ -1,0 +1,139 @@
+// Saving and loading at the core's level: a triangulation as plain data
+// (snapshot.hpp) and back. The data may come from a hostile file, so
+// restore() checks every index before anything uses it, then runs the full
+// exact validate() on the result.
+#include <cmath>
+#include <cstring>
+#include <new>
+#include <string>
+
+#include "exact/unit_disk.hpp"
+#include "triangulation/dummy_points.hpp"
+#include "triangulation/triangulation.hpp"
+
+namespace hdt::triangulation {
+
+namespace {
+
+// The canonical words a triangulation meets are short: homes of points
+// within 2^-53 of the unit circle, and their products with elements of N,
+// took at most 28 letters at genus 2, 30 at genus 3 and 46 at genus 5
+// (300 such points each). The bound keeps a hostile word from costing long
+// multiprecision canonicalisation (0.4 s for 1000 letters at genus 2).
+std::size_t max_word_length(int genus) { return 64 + 32 * std::size_t(genus); }
+
+std::string vertex_name(std::size_t v) { return "vertex " + std::to_string(v); }
+std::string face_name(std::size_t f) { return "face " + std::to_string(f); }
+
+}  // namespace
+
+Snapshot Triangulation::snapshot() const {
+  Snapshot s;
+  s.genus = genus_;
+  const group::TranslationTable &T = table();
+  for (std::size_t id = T.neighbour_count(); id < T.size(); ++id) s.extra_words.push_back(T.word(TranslationId(id)));
+  s.vertices = vertices_;
+  s.dummy = dummy_;
+  // A removed id keeps nothing: its record is the same in every file.
+  for (std::size_t v = 0; v < s.vertices.size(); ++v)
+    if (!s.vertices[v].alive()) s.vertices[v] = {0, 0, 0, kNone}, s.dummy[v] = false;
+  s.faces = faces_;
+  s.last_face = last_face_;
+  s.last_vertex = last_vertex_;
+  s.rng = rng_;
+  return s;
+}
+
+Triangulation Triangulation::rebuild(const Snapshot &s) {
+  using E = SnapshotError;
+  const int g = s.genus;
+  if (g < 2) throw E(E::kGenus, 0, "genus " + std::to_string(g) + " is not >= 2");
+  Triangulation t(g, Empty{});
+  std::vector<double> sx(2 * g + 1), sy(2 * g + 1);
+  register_q0_sites(*t.surface_, sx.data(), sy.data());
+
+  group::TranslationTable &T = t.table();
+  if (T.size() != T.neighbour_count()) throw std::logic_error("restore: a fresh table holds more than N");
+  const int letters = 4 * g;
+  for (std::size_t i = 0; i < s.extra_words.size(); ++i) {
+    const group::Word &w = s.extra_words[i];
+    if (w.size() > max_word_length(g))
+      throw E(E::kWord, i, "word " + std::to_string(i) + " has " + std::to_string(w.size()) + " letters (at most " +
+                               std::to_string(max_word_length(g)) + ")");
+    for (group::Letter l : w)
+      if (l < 0 || l >= letters) throw E(E::kWord, i, "word " + std::to_string(i) + " has the bad letter " + std::to_string(l));
+    TranslationId id;
+    try {
+      id = T.intern(w);
+    } catch (const std::bad_alloc &) {
+      throw;
+    } catch (const std::exception &e) {
+      throw E(E::kWord, i, "word " + std::to_string(i) + ": " + e.what());
+    }
+    if (std::size_t(id) != T.neighbour_count() + i || T.word(id) != w)
+      throw E(E::kWord, i,
+              "word " + std::to_string(i) + " is not the canonical word of a new element (an element of N, a repeat, or not reduced)");
+  }
+  const auto ids = TranslationId(T.size());
+  auto bad_id = [&](TranslationId id) { return id < 0 || id >= ids; };
+
+  const std::size_t V = s.vertices.size(), F = s.faces.size();
+  if (s.dummy.size() != V) throw std::logic_error("restore: dummy flags and vertices differ in number");
+  if (V > kNone) throw E(E::kVertex, V, "too many vertices");
+  std::size_t live = 0, dummies = 0;
+  for (std::size_t v = 0; v < V; ++v) {
+    const Vertex &u = s.vertices[v];
+    if (!u.alive()) {
+      if (u.x != 0 || std::signbit(u.x) || u.y != 0 || std::signbit(u.y) || u.home != 0 || s.dummy[v])
+        throw E(E::kVertex, v, vertex_name(v) + " is removed but its record is not blank");
+      continue;
+    }
+    ++live, dummies += s.dummy[v];
+    if (u.face >= F) throw E(E::kVertex, v, vertex_name(v) + " names face " + std::to_string(u.face) + " of " + std::to_string(F));
+    if (bad_id(u.home)) throw E(E::kVertex, v, vertex_name(v) + " has an unknown home translation");
+    if (!std::isfinite(u.x) || !std::isfinite(u.y) || !exact::inside_unit_disk(u.x, u.y))
+      throw E(E::kVertex, v, vertex_name(v) + " is not a point of the open unit disk");
+    // Vertices 1 .. 2g+1 are the kernel's exact sites v_0 and m_k: their
+    // doubles must be the sites' roundings, at home in F_g.
+    if (t.site_of(uint32_t(v)) >= 0 && (std::memcmp(&u.x, &sx[v - 1], sizeof(double)) != 0 ||
+                                        std::memcmp(&u.y, &sy[v - 1], sizeof(double)) != 0 || u.home != 0))
+      throw E(E::kVertex, v, vertex_name(v) + " is not the site it must be (v_0 or a side midpoint m_k)");
+  }
+  for (std::size_t f = 0; f < F; ++f) {
+    const Face &A = s.faces[f];
+    for (int i = 0; i < 3; ++i) {
+      if (A.v[i] >= V) throw E(E::kFace, f, face_name(f) + " names vertex " + std::to_string(A.v[i]) + " of " + std::to_string(V));
+      if (A.n[i] >= F) throw E(E::kFace, f, face_name(f) + " names neighbour " + std::to_string(A.n[i]) + " of " + std::to_string(F));
+      if (bad_id(A.t[i]) || bad_id(A.nt[i])) throw E(E::kFace, f, face_name(f) + " has an unknown translation id");
+    }
+  }
+  if (F == 0 || s.last_face >= F) throw E(E::kState, 0, "the last face " + std::to_string(s.last_face) + " is not a face");
+  if (s.last_vertex != kNone && s.last_vertex >= V)
+    throw E(E::kState, 0, "the last vertex " + std::to_string(s.last_vertex) + " is not a vertex id");
+
+  t.vertices_ = s.vertices;
+  t.dummy_ = s.dummy;
+  t.faces_ = s.faces;
+  t.live_vertices_ = live;
+  t.dummies_ = dummies;
+  t.last_face_ = s.last_face;
+  t.last_vertex_ = s.last_vertex;
+  t.rng_ = s.rng;
+  return t;
+}
+
+Triangulation Triangulation::restore(const Snapshot &s) {
+  {
+    // validate() may give new translation ids to products it meets; it runs
+    // on a scratch copy so that the result's table is exactly the saved one.
+    const Triangulation scratch = rebuild(s);
+    try {
+      scratch.validate();
+    } catch (const std::logic_error &e) {
+      throw SnapshotError(SnapshotError::kStructure, 0, e.what());
+    }
+  }
+  return rebuild(s);
+}
+
+}  // namespace hdt::triangulation

@@ -1,0 +1,42 @@
+// Everything that makes a triangulation behave as it does, as plain data:
+// what hdt_save writes and hdt_load reads back (lib/capi/save_format.cpp).
+//
+// A restored triangulation answers every query as the saved one did, with
+// the same vertex ids, the same faces in the same slots and the same
+// translation ids, and later operations on both give the same results: the
+// translation table's ids beyond the neighbour set, the walk's starting
+// point and its random state are part of the snapshot.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "group/presentation.hpp"
+#include "triangulation/mesh.hpp"
+
+namespace hdt::triangulation {
+
+struct Snapshot {
+  int genus = 0;
+  // The canonical words of the translation ids from |N| on, in id order.
+  std::vector<group::Word> extra_words;
+  std::vector<Vertex> vertices;  // by id; face == kNone for a removed id
+  std::vector<bool> dummy;       // per vertex
+  std::vector<Face> faces;       // by slot
+  uint32_t last_face = 0, last_vertex = kNone;
+  uint64_t rng = 0;
+};
+
+// Why a snapshot is refused, with the part at fault (the genus, a word, a
+// vertex, a face, or the structure as a whole) and the item's index, so that
+// a reader can name the bytes that hold it.
+struct SnapshotError : std::invalid_argument {
+  enum Part { kGenus, kWord, kVertex, kFace, kState, kStructure };
+  SnapshotError(Part p, std::size_t i, const std::string &what) : std::invalid_argument(what), part(p), index(i) {}
+  Part part;
+  std::size_t index;
+};
+
+}  // namespace hdt::triangulation
