@@ -97,6 +97,8 @@ PROTOTYPES = {
     "hdt_nearest_vertex": (_status, (_handle, _double, _double, _uint32_p)),
     "hdt_validate": (_status, (_handle,)),
     "hdt_svg": (_status, (_handle, _double, _text, _unsigned, _char_p, _size, _size_p)),
+    "hdt_save": (_status, (_handle, _char_p, _size, _size_p)),
+    "hdt_load": (_status, (_handle_p, _text, _size)),  # bytes passed as they are, no copy
 }
 
 

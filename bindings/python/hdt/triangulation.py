@@ -22,12 +22,19 @@ are given by the triangulation and valid for it only
 (:meth:`Triangulation.translation_word`, :meth:`Triangulation.translation_matrix`).
 Face indices are positions in that list and hold until the next change.
 
+Saving: :meth:`Triangulation.save` and :meth:`Triangulation.load` (a file),
+:meth:`Triangulation.to_bytes` and :meth:`Triangulation.from_bytes`, in
+libhdt's format (hdt_save); a loaded triangulation is the saved one, with
+the same ids and faces. Pickling, copy.copy and copy.deepcopy go through
+that format and give an independent triangulation.
+
 Arrays: with NumPy installed, :meth:`insert_many`, :meth:`vertices` and
 :meth:`faces` return NumPy arrays; without it, lists (see each method).
 """
 
 import collections
 import ctypes
+import os
 import threading
 import weakref
 
@@ -105,7 +112,11 @@ class Triangulation:
         genus = c_genus(genus)
         handle = ctypes.c_void_p()
         check(lib.hdt_create(ctypes.byref(handle), genus))
-        self._genus = genus
+        self._adopt(handle)
+
+    def _adopt(self, handle):
+        """Takes ownership of a C handle (from hdt_create or hdt_load)."""
+        self._genus = lib.hdt_genus(handle)
         self._lock = threading.RLock()
         self._handle = handle
         self._finalizer = weakref.finalize(self, _destroy, handle)
@@ -134,17 +145,69 @@ class Triangulation:
         self.close()
 
     def __copy__(self):
-        """Refused: a Triangulation owns its C handle (build a new one)."""
-        raise TypeError("a Triangulation cannot be copied")
+        """An independent triangulation equal to this one (through
+        :meth:`to_bytes`): a Triangulation owns its C handle, so a copy
+        cannot share it."""
+        return Triangulation.from_bytes(self.to_bytes())
 
     def __deepcopy__(self, memo):
-        """Refused, as :meth:`__copy__`."""
-        raise TypeError("a Triangulation cannot be copied")
+        """The same as :meth:`__copy__`."""
+        return self.__copy__()
 
     def __reduce__(self):
-        """Refused: a Triangulation cannot be pickled (its state is the C
-        library's); pickle vertices() and rebuild instead."""
-        raise TypeError("a Triangulation cannot be pickled")
+        """Pickling: the saved bytes (:meth:`to_bytes`), loaded back by
+        :meth:`from_bytes`."""
+        return (Triangulation.from_bytes, (self.to_bytes(),))
+
+    # ---- saving and loading ----
+
+    def to_bytes(self):
+        """The triangulation in libhdt's saved format (hdt_save; docs/format.md
+        of the source tree): genus, every point exactly as given, ids with
+        their gaps, dummy flags, the faces in their order, with a checksum.
+        About 121 bytes a vertex."""
+        size = ctypes.c_size_t()
+        with self._lock:
+            handle = self._live("to_bytes")
+            check(lib.hdt_save(handle, None, 0, ctypes.byref(size)))
+            buffer = ctypes.create_string_buffer(max(size.value, 1))
+            check(lib.hdt_save(handle, buffer, size.value, ctypes.byref(size)))
+        return buffer.raw[: size.value]
+
+    @classmethod
+    def from_bytes(cls, data):
+        """The triangulation saved in data (bytes, bytearray or memoryview, as
+        :meth:`to_bytes` gives): the same genus, ids and faces. Every field is
+        checked and the result validated; bytes that are truncated, corrupted
+        or crafted raise :class:`hdt.InvalidArgument` (a ValueError) naming
+        the byte offset at fault. TypeError for other types."""
+        if not isinstance(data, (bytes, bytearray, memoryview)):
+            raise TypeError(f"from_bytes: expected bytes, got {type(data).__name__}")
+        data = bytes(data)
+        handle = ctypes.c_void_p()
+        check(lib.hdt_load(ctypes.byref(handle), data, len(data)))
+        triangulation = cls.__new__(cls)
+        triangulation._adopt(handle)
+        return triangulation
+
+    def save(self, file):
+        """Writes :meth:`to_bytes` to file: a path (str or os.PathLike) or a
+        binary file object (anything with write())."""
+        data = self.to_bytes()
+        if hasattr(file, "write"):
+            file.write(data)
+        else:
+            with open(os.fspath(file), "wb") as out:
+                out.write(data)
+
+    @classmethod
+    def load(cls, file):
+        """The triangulation saved in file: a path or a binary file object
+        (anything with read()); as :meth:`from_bytes`."""
+        if hasattr(file, "read"):
+            return cls.from_bytes(file.read())
+        with open(os.fspath(file), "rb") as source:
+            return cls.from_bytes(source.read())
 
     def _live(self, what):
         """The handle; HandleClosed when closed (call with the lock held)."""

@@ -2,10 +2,8 @@
 counts, geometry of faces, locate and nearest vertex by brute force, every
 kind of bad input, both array paths, and the handle's lifetime."""
 
-import copy
 import gc
 import math
-import pickle
 import random
 import threading
 import weakref
@@ -639,12 +637,6 @@ def test_a_failed_constructor_frees_nothing(monkeypatch):
         hdt.Triangulation(1)
     gc.collect()
     assert freed == []
-
-
-@pytest.mark.parametrize("operation", [copy.copy, copy.deepcopy, pickle.dumps], ids=["copy", "deepcopy", "pickle"])
-def test_a_triangulation_cannot_be_copied_or_pickled(operation):
-    with hdt.Triangulation(2) as t, pytest.raises(TypeError, match="cannot be"):
-        operation(t)
 
 
 def test_threads_sharing_a_triangulation_take_turns():
