@@ -10,8 +10,8 @@
  * This file: the options and the run. point_reader.c parses the input
  * (decimal_comma.c recognises "0,25" for its errors), random_points.c
  * samples, snapshot.c fetches the triangulation, face_writer.c writes it,
- * libhdt's hdt_svg draws the picture, output_file.c makes the writes
- * all-or-nothing.
+ * libhdt's hdt_svg draws the picture, saved_file.c loads and saves
+ * (hdt_load, hdt_save), output_file.c makes the writes all-or-nothing.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -20,6 +20,7 @@
 #include "output_file.h"
 #include "point_reader.h"
 #include "random_points.h"
+#include "saved_file.h"
 #include "snapshot.h"
 
 #include <hdt.h>
@@ -58,6 +59,10 @@ static void usage(FILE *f) {
           "  -f, --format FMT    text (default) or json\n"
           "  -o, --output FILE   write the triangulation to FILE (default standard output)\n"
           "      --svg FILE      also draw it in the Poincare disk, as SVG\n"
+          "      --save FILE     also save it in libhdt's format (hdt_save), for --load\n"
+          "      --load FILE     start from the triangulation saved in FILE (its genus),\n"
+          "                      then insert the points of an input FILE or --random, if\n"
+          "                      given (standard input is then read only as \"-\")\n"
           "      --neighbours    with --svg: also the copies across the 4g sides of F_g\n"
           "                      (also spelled --neighbors)\n"
           "      --keep-dummies  keep the dummy points (default: remove those that can go)\n"
@@ -84,12 +89,15 @@ typedef struct options {
   face_format format;
   const char *output;
   const char *svg;
+  const char *save;
+  const char *load;
   const char *input;
+  int genus_given;
   int keep_dummies, neighbours, validate, stats, help, version;
 } options;
 
 enum { OPT_GENUS, OPT_RANDOM, OPT_SEED, OPT_FORMAT, OPT_OUTPUT, OPT_SVG, OPT_NEIGHBOURS, OPT_KEEP,
-       OPT_VALIDATE, OPT_STATS, OPT_HELP, OPT_VERSION };
+       OPT_VALIDATE, OPT_STATS, OPT_HELP, OPT_VERSION, OPT_SAVE, OPT_LOAD };
 
 typedef struct option_spec {
   const char *long_name; /* without "--" */
@@ -105,7 +113,8 @@ static const option_spec option_table[] = {
     {"neighbours", 0, 0, OPT_NEIGHBOURS}, {"neighbors", 0, 0, OPT_NEIGHBOURS},
     {"keep-dummies", 0, 0, OPT_KEEP},    {"validate", 0, 0, OPT_VALIDATE},
     {"stats", 0, 0, OPT_STATS},          {"help", 'h', 0, OPT_HELP},
-    {"version", 'V', 0, OPT_VERSION},
+    {"version", 'V', 0, OPT_VERSION},    {"save", 0, 1, OPT_SAVE},
+    {"load", 0, 1, OPT_LOAD},
 };
 #define N_OPTIONS (sizeof option_table / sizeof option_table[0])
 
@@ -146,6 +155,7 @@ static int apply_option(options *o, const option_spec *spec, const char *shown, 
       if (!parse_number(value, 2, HDT_GENUS_MAX, &number))
         return usage_error("%s needs an integer from 2 to %d", shown, HDT_GENUS_MAX);
       o->genus = (int)number;
+      o->genus_given = 1;
       return 1;
     case OPT_RANDOM:
       /* All digits but too big (or beyond unsigned long long): name the cap. */
@@ -171,6 +181,8 @@ static int apply_option(options *o, const option_spec *spec, const char *shown, 
       return 1;
     case OPT_OUTPUT: o->output = value; return 1;
     case OPT_SVG: o->svg = value; return 1;
+    case OPT_SAVE: o->save = value; return 1;
+    case OPT_LOAD: o->load = value; return 1;
     case OPT_NEIGHBOURS: o->neighbours = 1; return 1;
     case OPT_KEEP: o->keep_dummies = 1; return 1;
     case OPT_VALIDATE: o->validate = 1; return 1;
@@ -238,6 +250,17 @@ static int parse_options(int argc, char **argv, options *o) {
         S_ISREG(a.st_mode))
       return usage_error("-o '%s' and --svg '%s' are the same file", o->output, o->svg);
   }
+  if (o->save) {
+    const int to_stdout = strcmp(o->save, "-") == 0;
+    if (to_stdout && (!o->output || strcmp(o->output, "-") == 0))
+      return usage_error("--save - and the triangulation would both go to standard output");
+    if (to_stdout && o->svg && strcmp(o->svg, "-") == 0)
+      return usage_error("--save - and --svg - would both go to standard output");
+    if (!to_stdout && ((o->output && strcmp(o->save, o->output) == 0) || (o->svg && strcmp(o->save, o->svg) == 0)))
+      return usage_error("--save '%s' names the same file as another output", o->save);
+  }
+  if (o->load && o->input && strcmp(o->load, "-") == 0 && strcmp(o->input, "-") == 0)
+    return usage_error("--load - and the points would both be read from standard input");
   return 1;
 }
 
@@ -370,30 +393,45 @@ static void print_stats(const options *o, const snapshot *s, const counts *c, co
   else
     fprintf(stderr, "  points       : %zu read from %s (%zu repeat an earlier point)\n", c->points, input_name(o),
             c->duplicates);
-  fprintf(stderr, "  dummies      : %zu at creation, %zu after insertion, %zu left%s\n", c->dummies_created,
+  fprintf(stderr, "  dummies      : %zu %s, %zu after insertion, %zu left%s\n", c->dummies_created,
+          o->load ? "loaded" : "at creation",
           c->dummies_after_insert, c->dummies_left, o->keep_dummies ? " (--keep-dummies)" : "");
   fprintf(stderr, "  counts       : %zu vertices, %zu edges, %zu faces; V - E + F = %ld (2 - 2g = %d)\n", V, E, F,
           euler, 2 - 2 * o->genus);
   if (o->validate) fprintf(stderr, "  validate     : ok\n");
-  fprintf(stderr, "  timings (ms) : %s %.2f, create %.2f, insert %.2f, remove dummies %.2f", o->random ? "sample" : "read",
-          t->input, t->create, t->insert, t->remove);
+  fprintf(stderr, "  timings (ms) : %s %.2f, %s %.2f, insert %.2f, remove dummies %.2f", o->random ? "sample" : "read",
+          t->input, o->load ? "load" : "create", t->create, t->insert, t->remove);
   if (o->validate) fprintf(stderr, ", validate %.2f", t->validate);
   fprintf(stderr, ", output %.2f\n", t->output);
 }
 
-static int run(const options *o) {
+static int run(const options *given) {
+  options loaded = *given; /* with --load, the genus is the file's */
+  const options *o = &loaded;
   int status = CLI_EXIT_FAILURE;
   point_list points = {0};
   hdt_triangulation *t = NULL;
   uint32_t *point_vertex = NULL;
   unsigned char *seen = NULL;
   snapshot s = {0};
-  output_file out = {0}, svg = {0};
+  output_file out = {0}, svg = {0}, saved = {0};
   counts c = {0};
   timings tm = {0};
 
   double t0 = cli_now_ms();
-  if (!get_points(o, &points, &c)) goto done;
+  if (o->load) {
+    if (!(t = saved_file_load(o->load))) goto done;
+    tm.create = cli_now_ms() - t0;
+    if (o->genus_given && o->genus != hdt_genus(t)) {
+      cli_error("--genus %d, but %s holds a triangulation of genus %d", o->genus, o->load, hdt_genus(t));
+      goto done;
+    }
+    loaded.genus = hdt_genus(t);
+  }
+
+  t0 = cli_now_ms();
+  /* With --load, points come only from an input file or --random. */
+  if ((!o->load || o->input || o->random) && !get_points(o, &points, &c)) goto done;
   tm.input = cli_now_ms() - t0;
   c.points = points.count;
 
@@ -401,10 +439,11 @@ static int run(const options *o) {
      fast; nothing appears there before the commit. */
   if (!output_open(&out, o->output)) goto done;
   if (o->svg && !output_open(&svg, o->svg)) goto done;
+  if (o->save && !output_open(&saved, o->save)) goto done;
 
   t0 = cli_now_ms();
-  if (!cli_check(hdt_create(&t, o->genus), "hdt_create")) goto done;
-  tm.create = cli_now_ms() - t0;
+  if (!t && !cli_check(hdt_create(&t, o->genus), "hdt_create")) goto done;
+  if (!o->load) tm.create = cli_now_ms() - t0;
   c.dummies_created = hdt_dummy_count(t);
 
   point_vertex = cli_alloc(points.count, sizeof *point_vertex);
@@ -446,13 +485,16 @@ static int run(const options *o) {
   if (o->svg) {
     char title[256];
     picture_title(o, &c, title, sizeof title);
-    if (!write_picture(svg.f, t, title, o->neighbours)) goto done;
+    /* A loaded triangulation: libhdt's caption counts all its user vertices. */
+    if (!write_picture(svg.f, t, o->load ? NULL : title, o->neighbours)) goto done;
   }
+  if (o->save && !saved_file_write(saved.f, t)) goto done;
   /* Everything written and checked before anything is put in place. */
-  if (!output_finish(&out) || (o->svg && !output_finish(&svg))) goto done;
-  /* The picture first: when it cannot be put in place, the triangulation
-     is not written either. */
+  if (!output_finish(&out) || (o->svg && !output_finish(&svg)) || (o->save && !output_finish(&saved))) goto done;
+  /* The picture and the saved file first: when one cannot be put in
+     place, the triangulation is not written either. */
   if (o->svg && !output_commit(&svg)) goto done;
+  if (o->save && !output_commit(&saved)) goto done;
   if (!output_commit(&out)) goto done;
   tm.output = cli_now_ms() - t0;
 
@@ -460,6 +502,7 @@ static int run(const options *o) {
   status = CLI_EXIT_OK;
 
 done:
+  output_discard(&saved);
   output_discard(&svg);
   output_discard(&out);
   snapshot_free(&s);

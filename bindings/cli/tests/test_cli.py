@@ -514,9 +514,60 @@ def test_pictures(tmp):
         check(version.encode() not in drawn, f"{name}: no version string")
 
 
+def test_save_and_load(tmp):
+    saved, first = os.path.join(tmp, "a.hdt"), os.path.join(tmp, "a.json")
+    code, _, err = run("--random", 120, "--seed", 3, "-f", "json", "-o", first, "--save", saved)
+    check(code == 0, f"--save: {err}")
+    with open(saved, "rb") as f:
+        data = f.read()
+    check(data[:8] == b"\x89HDT\r\n\x1a\n", "--save writes libhdt's format (its signature)")
+    with open(first) as f:
+        before = json.load(f)
+    # Loaded alone: the same vertices, faces and translations; no input points.
+    code, js, err = run("--load", saved, "-f", "json")
+    check(code == 0 and err == "", f"--load: {err}")
+    after = json.loads(js)
+    for key in ("genus", "vertices", "faces", "translations"):
+        check(after[key] == before[key], f"--load gives the saved triangulation's {key}")
+    check(after["points"] == [], "--load without points inserts none")
+    # Loaded, more points inserted, saved again: a valid triangulation with both sets.
+    points = os.path.join(tmp, "more.txt")
+    with open(points, "w") as f:
+        f.write("0.05 0.01\n-0.2 0.3\n0.31,-0.12\n")
+    again = os.path.join(tmp, "b.hdt")
+    code, js, err = run("--load", saved, points, "-f", "json", "--validate", "--save", again)
+    check(code == 0, f"--load with points: {err}")
+    more = json.loads(js)
+    check(len(more["points"]) == 3 and len(more["vertices"]) == len(before["vertices"]) + 3,
+          "--load then three points: three more vertices")
+    check_triangulation(more, 2, "--load with points")
+    code, js2, err = run("--load", again, "-f", "json")
+    check(code == 0 and json.loads(js2)["faces"] == more["faces"], f"the second save loads back: {err}")
+    # The genus comes from the file; a different --genus is an error.
+    code, _, err = run("--load", saved, "--genus", 3)
+    check(code == 1 and "genus 2" in err, f"--load with another --genus: {code} {err}")
+    # Damaged, truncated, missing: status 1, the byte named, nothing written.
+    bad = os.path.join(tmp, "bad.hdt")
+    out = os.path.join(tmp, "never.txt")
+    for name, content in (("truncated", data[:-10]), ("damaged", data[:200] + bytes([data[200] ^ 1]) + data[201:]),
+                          ("not saved", b"0.1 0.2\n" * 10)):
+        with open(bad, "wb") as f:
+            f.write(content)
+        code, stdout, err = run("--load", bad, "-o", out)
+        check(code == 1 and "byte " in err and stdout == "" and not os.path.exists(out),
+              f"--load of a {name} file: {code} {err}")
+    code, _, err = run("--load", os.path.join(tmp, "missing.hdt"))
+    check(code == 1 and "cannot open" in err, f"--load of a missing file: {err}")
+    # Standard input: --load - reads the saved bytes.
+    p = subprocess.run([TOOL, "--load", "-", "-f", "json"], input=data, capture_output=True, timeout=60)
+    check(p.returncode == 0 and json.loads(p.stdout)["faces"] == before["faces"], "--load - reads standard input")
+    code, _, err = run("--random", 5, "--save", "-")
+    check(code == 2, f"--save - with the triangulation on standard output is a usage error: {err}")
+
+
 TESTS = (test_help_and_version, test_random_text_and_json, test_dummies, test_input_forms, test_bad_input,
          test_usage_errors, test_outputs, test_utf8_bom, test_decimal_comma, test_empty_input_warning,
-         test_random_cap, test_output_errors)
+         test_random_cap, test_output_errors, test_save_and_load)
 
 
 def main():
