@@ -120,6 +120,7 @@ std::size_t offset_of(const SnapshotError &e, const std::vector<std::size_t> &wo
                       std::size_t faces_at, const std::string &what) {
   switch (e.part) {
     case SnapshotError::kGenus: return 12;
+    case SnapshotError::kCounts: return 24;
     case SnapshotError::kWord: return e.index < word_at.size() ? word_at[e.index] : kWordsAt;
     case SnapshotError::kVertex: return vertices_at + kVertexBytes * e.index;
     case SnapshotError::kFace: return faces_at + kFaceBytes * e.index;

@@ -3,6 +3,7 @@
 // restore() checks every index before anything uses it, then runs the full
 // exact validate() on the result.
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <new>
 #include <string>
@@ -48,20 +49,74 @@ Triangulation Triangulation::rebuild(const Snapshot &s) {
   using E = SnapshotError;
   const int g = s.genus;
   if (g < 2) throw E(E::kGenus, 0, "genus " + std::to_string(g) + " is not >= 2");
-  Triangulation t(g, Empty{});
-  std::vector<double> sx(2 * g + 1), sy(2 * g + 1);
-  register_q0_sites(*t.surface_, sx.data(), sy.data());
+  const std::size_t V = s.vertices.size(), F = s.faces.size();
+  if (s.dummy.size() != V) throw std::logic_error("restore: dummy flags and vertices differ in number");
+  if (V >= kNone) throw E(E::kCounts, 0, "too many vertices");
 
-  group::TranslationTable &T = t.table();
-  if (T.size() != T.neighbour_count()) throw std::logic_error("restore: a fresh table holds more than N");
-  const int letters = 4 * g;
+  // First every check that needs no surface: setting up a surface of large
+  // genus takes seconds, which a damaged file must not cost.
+  std::size_t live = 0;
+  for (const Vertex &u : s.vertices) live += u.alive();
+  if (F != 2 * (live + 2 * std::size_t(g) - 2))
+    throw E(E::kCounts, 0,
+            std::to_string(F) + " faces for " + std::to_string(live) + " live vertices on M_" + std::to_string(g) +
+                ": Euler's formula wants " + std::to_string(2 * (live + 2 * std::size_t(g) - 2)));
+  // The ids to be: N, |N| = (4g-1)^2, then one per word.
+  const std::size_t letters = 4 * std::size_t(g), ids = (letters - 1) * (letters - 1) + s.extra_words.size();
+  if (ids > std::size_t(INT32_MAX)) throw E(E::kCounts, 0, "too many translation words");
+  auto bad_id = [&](TranslationId id) { return id < 0 || std::size_t(id) >= ids; };
   for (std::size_t i = 0; i < s.extra_words.size(); ++i) {
     const group::Word &w = s.extra_words[i];
     if (w.size() > max_word_length(g))
       throw E(E::kWord, i, "word " + std::to_string(i) + " has " + std::to_string(w.size()) + " letters (at most " +
                                std::to_string(max_word_length(g)) + ")");
     for (group::Letter l : w)
-      if (l < 0 || l >= letters) throw E(E::kWord, i, "word " + std::to_string(i) + " has the bad letter " + std::to_string(l));
+      if (l < 0 || std::size_t(l) >= letters)
+        throw E(E::kWord, i, "word " + std::to_string(i) + " has the bad letter " + std::to_string(l));
+  }
+  std::size_t dummies = 0;
+  for (std::size_t v = 0; v < V; ++v) {
+    const Vertex &u = s.vertices[v];
+    if (!u.alive()) {
+      if (u.x != 0 || std::signbit(u.x) || u.y != 0 || std::signbit(u.y) || u.home != 0 || s.dummy[v])
+        throw E(E::kVertex, v, vertex_name(v) + " is removed but its record is not blank");
+      continue;
+    }
+    dummies += s.dummy[v];
+    if (u.face >= F) throw E(E::kVertex, v, vertex_name(v) + " names face " + std::to_string(u.face) + " of " + std::to_string(F));
+    if (bad_id(u.home)) throw E(E::kVertex, v, vertex_name(v) + " has an unknown home translation");
+    if (!std::isfinite(u.x) || !std::isfinite(u.y) || !exact::inside_unit_disk(u.x, u.y))
+      throw E(E::kVertex, v, vertex_name(v) + " is not a point of the open unit disk");
+  }
+  for (std::size_t f = 0; f < F; ++f) {
+    const Face &A = s.faces[f];
+    for (int i = 0; i < 3; ++i) {
+      if (A.v[i] >= V) throw E(E::kFace, f, face_name(f) + " names vertex " + std::to_string(A.v[i]) + " of " + std::to_string(V));
+      if (A.n[i] >= F) throw E(E::kFace, f, face_name(f) + " names neighbour " + std::to_string(A.n[i]) + " of " + std::to_string(F));
+      if (bad_id(A.t[i]) || bad_id(A.nt[i])) throw E(E::kFace, f, face_name(f) + " has an unknown translation id");
+    }
+  }
+  if (s.last_face >= F) throw E(E::kState, 0, "the last face " + std::to_string(s.last_face) + " is not a face");
+  if (s.last_vertex != kNone && s.last_vertex >= V)
+    throw E(E::kState, 0, "the last vertex " + std::to_string(s.last_vertex) + " is not a vertex id");
+
+  // Then the surface: the sites and the words.
+  Triangulation t(g, Empty{});
+  std::vector<double> sx(2 * g + 1), sy(2 * g + 1);
+  register_q0_sites(*t.surface_, sx.data(), sy.data());
+  // Vertices 1 .. 2g+1 are the kernel's exact sites v_0 and m_k: their
+  // doubles must be the sites' roundings, at home in F_g.
+  for (std::size_t v = 1; v < V && v <= std::size_t(2 * g + 1); ++v) {
+    const Vertex &u = s.vertices[v];
+    if (u.alive() && (std::memcmp(&u.x, &sx[v - 1], sizeof(double)) != 0 ||
+                      std::memcmp(&u.y, &sy[v - 1], sizeof(double)) != 0 || u.home != 0))
+      throw E(E::kVertex, v, vertex_name(v) + " is not the site it must be (v_0 or a side midpoint m_k)");
+  }
+  group::TranslationTable &T = t.table();
+  if (T.size() != T.neighbour_count() || T.size() != (letters - 1) * (letters - 1))
+    throw std::logic_error("restore: a fresh table does not hold exactly N");
+  for (std::size_t i = 0; i < s.extra_words.size(); ++i) {
+    const group::Word &w = s.extra_words[i];
     TranslationId id;
     try {
       id = T.intern(w);
@@ -74,42 +129,6 @@ Triangulation Triangulation::rebuild(const Snapshot &s) {
       throw E(E::kWord, i,
               "word " + std::to_string(i) + " is not the canonical word of a new element (an element of N, a repeat, or not reduced)");
   }
-  const auto ids = TranslationId(T.size());
-  auto bad_id = [&](TranslationId id) { return id < 0 || id >= ids; };
-
-  const std::size_t V = s.vertices.size(), F = s.faces.size();
-  if (s.dummy.size() != V) throw std::logic_error("restore: dummy flags and vertices differ in number");
-  if (V > kNone) throw E(E::kVertex, V, "too many vertices");
-  std::size_t live = 0, dummies = 0;
-  for (std::size_t v = 0; v < V; ++v) {
-    const Vertex &u = s.vertices[v];
-    if (!u.alive()) {
-      if (u.x != 0 || std::signbit(u.x) || u.y != 0 || std::signbit(u.y) || u.home != 0 || s.dummy[v])
-        throw E(E::kVertex, v, vertex_name(v) + " is removed but its record is not blank");
-      continue;
-    }
-    ++live, dummies += s.dummy[v];
-    if (u.face >= F) throw E(E::kVertex, v, vertex_name(v) + " names face " + std::to_string(u.face) + " of " + std::to_string(F));
-    if (bad_id(u.home)) throw E(E::kVertex, v, vertex_name(v) + " has an unknown home translation");
-    if (!std::isfinite(u.x) || !std::isfinite(u.y) || !exact::inside_unit_disk(u.x, u.y))
-      throw E(E::kVertex, v, vertex_name(v) + " is not a point of the open unit disk");
-    // Vertices 1 .. 2g+1 are the kernel's exact sites v_0 and m_k: their
-    // doubles must be the sites' roundings, at home in F_g.
-    if (t.site_of(uint32_t(v)) >= 0 && (std::memcmp(&u.x, &sx[v - 1], sizeof(double)) != 0 ||
-                                        std::memcmp(&u.y, &sy[v - 1], sizeof(double)) != 0 || u.home != 0))
-      throw E(E::kVertex, v, vertex_name(v) + " is not the site it must be (v_0 or a side midpoint m_k)");
-  }
-  for (std::size_t f = 0; f < F; ++f) {
-    const Face &A = s.faces[f];
-    for (int i = 0; i < 3; ++i) {
-      if (A.v[i] >= V) throw E(E::kFace, f, face_name(f) + " names vertex " + std::to_string(A.v[i]) + " of " + std::to_string(V));
-      if (A.n[i] >= F) throw E(E::kFace, f, face_name(f) + " names neighbour " + std::to_string(A.n[i]) + " of " + std::to_string(F));
-      if (bad_id(A.t[i]) || bad_id(A.nt[i])) throw E(E::kFace, f, face_name(f) + " has an unknown translation id");
-    }
-  }
-  if (F == 0 || s.last_face >= F) throw E(E::kState, 0, "the last face " + std::to_string(s.last_face) + " is not a face");
-  if (s.last_vertex != kNone && s.last_vertex >= V)
-    throw E(E::kState, 0, "the last vertex " + std::to_string(s.last_vertex) + " is not a vertex id");
 
   t.vertices_ = s.vertices;
   t.dummy_ = s.dummy;

@@ -29,11 +29,11 @@ struct Snapshot {
   uint64_t rng = 0;
 };
 
-// Why a snapshot is refused, with the part at fault (the genus, a word, a
-// vertex, a face, or the structure as a whole) and the item's index, so that
+// Why a snapshot is refused, with the part at fault (the genus, the counts,
+// a word, a vertex, a face, the walk's state, or the structure as a whole) and the item's index, so that
 // a reader can name the bytes that hold it.
 struct SnapshotError : std::invalid_argument {
-  enum Part { kGenus, kWord, kVertex, kFace, kState, kStructure };
+  enum Part { kGenus, kCounts, kWord, kVertex, kFace, kState, kStructure };
   SnapshotError(Part p, std::size_t i, const std::string &what) : std::invalid_argument(what), part(p), index(i) {}
   Part part;
   std::size_t index;
