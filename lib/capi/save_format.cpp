@@ -146,7 +146,15 @@ std::size_t offset_of(const SnapshotError &e, const std::vector<std::size_t> &wo
 std::size_t saved_size(const Triangulation &t) {
   const group::TranslationTable &T = t.table();
   std::size_t n = kHeader + kChecksum;
-  for (std::size_t id = T.neighbour_count(); id < T.size(); ++id) n += 2 + 2 * T.word(group::TranslationId(id)).size();
+  for (std::size_t id = T.neighbour_count(); id < T.size(); ++id) {
+    const std::size_t letters = T.word(group::TranslationId(id)).size();
+    // Never write a file that hdt_load would refuse.
+    if (letters > triangulation::max_saved_word_length(t.genus()))
+      throw ApiError(HDT_ENOTSUP, "translation id " + std::to_string(id) + " has a word of " + std::to_string(letters) +
+                                      " letters, more than the format holds (" +
+                                      std::to_string(triangulation::max_saved_word_length(t.genus())) + ")");
+    n += 2 + 2 * letters;
+  }
   return n + kVertexBytes * t.vertices().size() + kFaceBytes * t.faces().size();
 }
 

@@ -16,13 +16,6 @@ namespace hdt::triangulation {
 
 namespace {
 
-// The canonical words a triangulation meets are short: homes of points
-// within 2^-53 of the unit circle, and their products with elements of N,
-// took at most 28 letters at genus 2, 30 at genus 3 and 46 at genus 5
-// (300 such points each). The bound keeps a hostile word from costing long
-// multiprecision canonicalisation (0.4 s for 1000 letters at genus 2).
-std::size_t max_word_length(int genus) { return 64 + 32 * std::size_t(genus); }
-
 std::string vertex_name(std::size_t v) { return "vertex " + std::to_string(v); }
 std::string face_name(std::size_t f) { return "face " + std::to_string(f); }
 
@@ -67,9 +60,9 @@ Triangulation Triangulation::rebuild(const Snapshot &s) {
   auto bad_id = [&](TranslationId id) { return id < 0 || std::size_t(id) >= ids; };
   for (std::size_t i = 0; i < s.extra_words.size(); ++i) {
     const group::Word &w = s.extra_words[i];
-    if (w.size() > max_word_length(g))
+    if (w.size() > max_saved_word_length(g))
       throw E(E::kWord, i, "word " + std::to_string(i) + " has " + std::to_string(w.size()) + " letters (at most " +
-                               std::to_string(max_word_length(g)) + ")");
+                               std::to_string(max_saved_word_length(g)) + ")");
     for (group::Letter l : w)
       if (l < 0 || std::size_t(l) >= letters)
         throw E(E::kWord, i, "word " + std::to_string(i) + " has the bad letter " + std::to_string(l));
