@@ -147,6 +147,21 @@ static void round_trip(int genus, size_t n, int remove_every, int remove_dummies
     expect(memcmp(&x, &xy[2 * i], 8) == 0 && memcmp(&y, &xy[2 * i + 1], 8) == 0,
            "%s: vertex %u's point is not stored bit for bit", when, ids[i]);
   }
+  /* The face records, in hdt_faces' order: their corners are its vertices. */
+  size_t F = 0;
+  ck_assert_int_eq(hdt_faces(t, NULL, NULL, 0, &F), HDT_OK);
+  expect(get32(file.b + 24) == F, "%s: face count in the header", when);
+  const size_t faces_at = at + VERTEX_BYTES * hdt_vertex_id_bound(t);
+  expect(faces_at + FACE_BYTES * F + 4 == file.n, "%s: the file is not header, words, vertices, faces, checksum", when);
+  uint32_t *fv = malloc(3 * F * sizeof *fv);
+  ck_assert_int_eq(hdt_faces(t, fv, NULL, F, &F), HDT_OK);
+  for (size_t f = 0; f < F; ++f)
+    for (int i = 0; i < 3; ++i)
+      expect(get32(file.b + faces_at + FACE_BYTES * f + 4 * (size_t)i) == fv[3 * f + (size_t)i],
+             "%s: face record %zu, corner %d", when, f, i);
+  free(fv);
+  expect(get32(file.b + file.n - 4) == crc32_of(file.b, file.n - 4), "%s: the checksum is not CRC-32", when);
+
   hdt_triangulation *u = load(file);
   bytes_t again = save(u);
   expect(again.n == file.n && memcmp(again.b, file.b, file.n) == 0, "%s: saving the loaded one differs", when);
