@@ -65,6 +65,15 @@ HDT_API const char *hdt_last_error_message(void) HDT_NOEXCEPT;
 
 /* ---- Versions ---- */
 
+/* The version of this header, MAJOR.MINOR.PATCH, and as one number. Symbol
+   node HDT_0.N (lib/hdt.map) comes with version 0.N.0: a program that calls
+   a later function can test at compile time, e.g. hdt_save (HDT_0.4) with
+   #if HDT_VERSION >= 400. hdt_version() is the library's own at run time. */
+#define HDT_VERSION_MAJOR 0
+#define HDT_VERSION_MINOR 4
+#define HDT_VERSION_PATCH 0
+#define HDT_VERSION (HDT_VERSION_MAJOR * 10000 + HDT_VERSION_MINOR * 100 + HDT_VERSION_PATCH)
+
 /* Library version as "MAJOR.MINOR.PATCH". */
 HDT_API const char *hdt_version_string(void) HDT_NOEXCEPT;
 /* Library version as the number MAJOR * 10000 + MINOR * 100 + PATCH. */

@@ -382,6 +382,9 @@ START_TEST(versions) {
   ck_assert_uint_eq((size_t)used, strlen(s));
   ck_assert(major >= 0 && minor >= 0 && minor < 100 && patch >= 0 && patch < 100);
   ck_assert_int_eq(hdt_version(), major * 10000 + minor * 100 + patch);
+  /* The header this test was compiled with is the library's. */
+  ck_assert_int_eq(hdt_version(), HDT_VERSION);
+  ck_assert_int_eq(HDT_VERSION_MAJOR * 10000 + HDT_VERSION_MINOR * 100 + HDT_VERSION_PATCH, HDT_VERSION);
   ck_assert_int_eq(hdt_abi_version(), 0);
 }
 END_TEST

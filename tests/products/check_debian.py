@@ -5,8 +5,9 @@
   native package: the same string), and so are the Python package's
   versions (pyproject.toml, hdt.__version__);
 - debian/libhdt0.symbols lists exactly the symbols the built libhdt.so.0
-  exports, each with its version node (lib/hdt.map), and no symbol is said
-  to come from a version later than this one.
+  exports, each with its version node (lib/hdt.map) and the version 0.N.0
+  of its node HDT_0.N, none later than this one;
+- include/hdt.h's HDT_VERSION_MAJOR/MINOR/PATCH say the same version.
 
 dpkg-gensymbols -c4 (debian/rules) makes the same symbol check in a package
 build; this one tells at once, in the plain test suite, that a new function
@@ -59,12 +60,22 @@ def main():
             symbol, introduced = line.split()[:2]
             listed[symbol] = introduced
     for symbol in sorted(exported - listed.keys()):
-        errors.append(f"exported but not in debian/libhdt0.symbols: {symbol} (add it with version {version})")
+        errors.append(f"exported but not in debian/libhdt0.symbols: {symbol} (add it with its node's version)")
     for symbol in sorted(listed.keys() - exported):
         errors.append(f"in debian/libhdt0.symbols but not exported: {symbol}")
     for symbol, introduced in sorted(listed.items()):
         if version_key(introduced) > version_key(version):
             errors.append(f"debian/libhdt0.symbols: {symbol} from {introduced}, later than {version}")
+        node = re.fullmatch(r".*@HDT_0\.(\d+)", symbol)
+        if node and introduced != f"0.{node.group(1)}.0":
+            errors.append(f"debian/libhdt0.symbols: {symbol} from {introduced}: node HDT_0.N comes with 0.N.0")
+
+    # hdt.h's version macros: compile-time tests for later symbol nodes.
+    header = (root / "include" / "hdt.h").read_text(encoding="utf-8")
+    parts = [re.search(rf"(?m)^#define HDT_VERSION_{name} (\d+)$", header) for name in ("MAJOR", "MINOR", "PATCH")]
+    said = ".".join(p.group(1) if p else "?" for p in parts)
+    if said != version:
+        errors.append(f"include/hdt.h's HDT_VERSION_MAJOR/MINOR/PATCH say {said}, meson.build says {version}")
 
     for error in errors:
         print(error, file=sys.stderr)

@@ -45,7 +45,7 @@ from .surface import point_representative, polygon_side_midpoint, polygon_vertex
 from .triangulation import Faces, Location, Triangulation, Vertices
 
 #: The version of these bindings (the library's is version()).
-__version__ = "0.1.0"
+__version__ = "0.4.0"
 
 __all__ = [
     "AlreadyExists",
