@@ -388,6 +388,91 @@ HDT_API hdt_status hdt_save(const hdt_triangulation *t, void *bytes, size_t capa
    (measurements in docs/format.md). */
 HDT_API hdt_status hdt_load(hdt_triangulation **out, const void *bytes, size_t size) HDT_NOEXCEPT;
 
+/* ---- Adjacency, edges, corner points and the Voronoi diagram ----
+   Symbol version HDT_0.4. All are queries on a const handle (they may add
+   translation ids to the handle's table, as hdt_faces does). Faces are
+   indices in hdt_faces order and translations are ids of this
+   triangulation in hdt_faces' convention: h applied to a vertex's
+   representative, or to a face's canonical copy (hdt_translation_word,
+   hdt_translation_matrix). Lists use the two-call pattern of hdt_faces:
+   capacity 0 asks for *count, HDT_EBUFS with *count set when too small,
+   HDT_EINVAL for a NULL t or count; each output may be NULL unless said.
+
+   Points (corners, circumcentres), radii and lengths are computed in
+   double from the stored points and the translations' matrices: rounded
+   values, not exact ones. Measured against a 256-bit MPFR evaluation
+   (tests/test_dual.c; random sets of genus 2, 3 and 5, dummy sets of genus
+   2 and 4): points within 5e-14 of the exact ones in the disk (hyperbolic
+   distance 4.3e-13), radii and edge lengths within a relative 3.2e-13; at
+   genus 2 and 3 within 3.5e-14 throughout. The error grows with the
+   genus, with the entries of the translations' matrices (docs/dual.md). */
+
+/* Per face f and corner i, faces[3f + i]: the face across the edge opposite
+   corner i (from corner i+1 to corner i+2), and translations[3f + i]: the
+   id h such that h(canonical copy of that face) shares that edge with f's
+   canonical copy. Across an edge and back the translations are inverse.
+   Capacity in faces (3 entries each). */
+HDT_API hdt_status hdt_face_neighbours(const hdt_triangulation *t, uint32_t *faces, int32_t *translations,
+                                       size_t capacity, size_t *count) HDT_NOEXCEPT;
+
+/* The star of vertex v: the faces around it, counterclockwise, starting
+   at one of them (no particular one). For the k-th: faces[k] its index,
+   corners[k] v's corner in it (0..2), translations[k] the id h such that
+   h(canonical copy) has v at its representative, so the copies tile a
+   neighbourhood of hdt_vertex_point(v). A face appears once (the
+   triangulation is a simplicial complex); the star of v has its degree's
+   number of faces. Capacity in faces. HDT_EINVAL when v is not a live
+   vertex. */
+HDT_API hdt_status hdt_vertex_star(const hdt_triangulation *t, uint32_t v, uint32_t *faces, uint8_t *corners,
+                                   int32_t *translations, size_t capacity, size_t *count) HDT_NOEXCEPT;
+
+/* Edges: E = 3F/2 = 3 (V + 2g - 2) (0 when t is NULL). */
+HDT_API size_t hdt_edge_count(const hdt_triangulation *t) HDT_NOEXCEPT;
+
+/* Every edge once, in a fixed order: the edge of face f opposite corner i
+   is listed with f when f is the smaller of its two faces, by increasing f
+   then i. Edge e runs from the representative of vertices[2e] to h(the
+   representative of vertices[2e + 1]), h = translations[e]; it is the edge
+   of faces[2e]'s canonical copy mapped by the inverse of vertices[2e]'s
+   corner translation there. faces[2e] lies on its left, faces[2e + 1] on
+   its right. lengths[e]: its hyperbolic length (curvature -1, in double).
+   Capacity in edges (2, 1, 2 and 1 entries). */
+HDT_API hdt_status hdt_edges(const hdt_triangulation *t, uint32_t *vertices, int32_t *translations,
+                             uint32_t *faces, double *lengths, size_t capacity, size_t *count) HDT_NOEXCEPT;
+
+/* The three corners of each face's canonical copy in the disk, in
+   hdt_faces order: xy[6f + 2i], xy[6f + 2i + 1] is corner i of face f (the
+   translation of hdt_faces applied to the vertex's point, in double). xy
+   must not be NULL when capacity > 0. Capacity in faces. */
+HDT_API hdt_status hdt_face_points(const hdt_triangulation *t, double *xy, size_t capacity,
+                                   size_t *count) HDT_NOEXCEPT;
+
+/* The Voronoi vertices, one per face (hdt_faces order): xy[2f], xy[2f + 1]
+   the hyperbolic circumcentre of face f's canonical copy, radii[f] its
+   hyperbolic circumradius (below sys(M_g)/4 by the triangulation's
+   guarantee). The disk of that circle holds no vertex copy in its interior.
+   Capacity in faces. */
+HDT_API hdt_status hdt_voronoi_vertices(const hdt_triangulation *t, double *xy, double *radii, size_t capacity,
+                                        size_t *count) HDT_NOEXCEPT;
+
+/* The Voronoi edges, one per Delaunay edge in hdt_edges order: the
+   geodesic segment from xy[4e], xy[4e + 1] (the circumcentre of the left
+   face faces[2e], as in hdt_voronoi_vertices) to xy[4e + 2], xy[4e + 3]
+   (the circumcentre of the right face's copy that shares the edge with the
+   left face's canonical copy). It is perpendicular to the Delaunay edge's
+   copy there; cocircular faces give a segment of length 0. xy must not be
+   NULL when capacity > 0. Capacity in edges (4 entries each). */
+HDT_API hdt_status hdt_voronoi_edges(const hdt_triangulation *t, double *xy, size_t capacity,
+                                     size_t *count) HDT_NOEXCEPT;
+
+/* The Voronoi cell of vertex v: the circumcentres of the faces of its star
+   (hdt_vertex_star, same order), each of the copy around v's
+   representative: a polygon, counterclockwise about hdt_vertex_point(v),
+   whose geodesic sides are v's Voronoi edges. xy must not be NULL when
+   capacity > 0. Capacity in points. HDT_EINVAL when v is not a live vertex. */
+HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, double *xy, size_t capacity,
+                                    size_t *count) HDT_NOEXCEPT;
+
 #ifdef __cplusplus
 }
 #endif

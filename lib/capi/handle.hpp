@@ -1,9 +1,12 @@
 // The opaque handle behind hdt_triangulation: a core triangulation, made
-// by hdt_create (a genus) or hdt_load (a restored triangulation).
+// by hdt_create (a genus) or hdt_load (a restored triangulation), shared by
+// the files of lib/capi that take one.
 #pragma once
 
 #include <utility>
 
+#include "capi/guard.hpp"
+#include "hdt.h"
 #include "triangulation/triangulation.hpp"
 
 struct hdt_triangulation {
@@ -11,3 +14,18 @@ struct hdt_triangulation {
   explicit hdt_triangulation(hdt::triangulation::Triangulation &&t) : tri(std::move(t)) {}
   hdt::triangulation::Triangulation tri;
 };
+
+namespace hdt::capi {
+
+// The triangulation behind a handle: const for a const handle (queries fill
+// only the core's documented caches).
+inline triangulation::Triangulation &of(hdt_triangulation *t) {
+  if (!t) throw ApiError(HDT_EINVAL, "the triangulation handle is NULL");
+  return t->tri;
+}
+inline const triangulation::Triangulation &of(const hdt_triangulation *t) {
+  if (!t) throw ApiError(HDT_EINVAL, "the triangulation handle is NULL");
+  return t->tri;
+}
+
+}  // namespace hdt::capi

@@ -13,18 +13,9 @@ using hdt::capi::fail;
 using hdt::capi::guarded;
 using hdt::triangulation::Triangulation;
 
-namespace {
+using hdt::capi::of;
 
-// The triangulation behind a handle: const for a const handle (queries fill
-// only the core's documented caches).
-Triangulation &of(hdt_triangulation *t) {
-  if (!t) throw ApiError(HDT_EINVAL, "the triangulation handle is NULL");
-  return t->tri;
-}
-const Triangulation &of(const hdt_triangulation *t) {
-  if (!t) throw ApiError(HDT_EINVAL, "the triangulation handle is NULL");
-  return t->tri;
-}
+namespace {
 
 void check_translation(const Triangulation &tri, int32_t id) {
   if (id < 0 || std::size_t(id) >= tri.table().size())

@@ -1,0 +1,55 @@
+// The star of a vertex and the edge list, read off the faces' neighbours.
+#include "triangulation/adjacency.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace hdt::triangulation {
+
+TranslationId public_corner(const Triangulation &tri, const Face &f, int i) {
+  const TranslationId home = tri.vertices()[f.v[i]].home;
+  if (home == 0) return f.t[i];
+  group::TranslationTable &T = tri.table();
+  return T.compose(f.t[i], T.inverse(home));
+}
+
+void vertex_star(const Triangulation &tri, uint32_t v, std::vector<StarEntry> *out) {
+  if (v >= tri.vertices().size() || !tri.vertices()[v].alive())
+    throw std::invalid_argument("vertex " + std::to_string(v) + " is not a live vertex");
+  group::TranslationTable &T = tri.table();
+  const auto &faces = tri.faces();
+  const uint32_t first = tri.vertices()[v].face;
+  out->clear();
+  uint32_t f = first;
+  do {
+    const Face &F = faces[f];
+    int c = 0;
+    while (c < 3 && F.v[c] != v) ++c;
+    if (c == 3) throw std::logic_error("vertex_star: face " + std::to_string(f) + " does not hold vertex " +
+                                       std::to_string(v));
+    out->push_back({f, c, T.inverse(public_corner(tri, F, c))});
+    // Counterclockwise about v: the next face holds the edge from v to the corner after it.
+    f = F.n[next(c)];
+    if (out->size() > faces.size()) throw std::logic_error("vertex_star: the star does not close");
+  } while (f != first);
+}
+
+void edge_list(const Triangulation &tri, std::vector<Edge> *out) {
+  group::TranslationTable &T = tri.table();
+  const auto &faces = tri.faces();
+  out->clear();
+  out->reserve(faces.size() / 2 * 3);
+  for (uint32_t f = 0; f < faces.size(); ++f) {
+    const Face &F = faces[f];
+    for (int i = 0; i < 3; ++i) {
+      if (F.n[i] == f) throw std::logic_error("edge_list: face " + std::to_string(f) + " is its own neighbour");
+      if (F.n[i] < f) continue;
+      const int a = next(i), b = prev(i);
+      // c_a^-1 c_b: b's corner seen from a's representative.
+      const TranslationId h = T.compose(T.inverse(public_corner(tri, F, a)), public_corner(tri, F, b));
+      out->push_back({F.v[a], F.v[b], h, f, F.n[i], i});
+    }
+  }
+}
+
+}  // namespace hdt::triangulation

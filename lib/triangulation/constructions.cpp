@@ -1,0 +1,74 @@
+// The Voronoi vertex of a face: move one corner to the origin, where the
+// hyperbolic circle through it is a Euclidean circle through 0, read off its
+// hyperbolic centre on the diameter from 0, and move back. Every step is a
+// well-conditioned double formula for the faces of a triangulation (circum-
+// diameter < sys/2, so the circle stays away from the unit circle), and
+// small faces lose nothing to cancellation: the differences z_k - z_0 are
+// formed before anything is squared.
+#include "triangulation/constructions.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace hdt::triangulation {
+
+namespace {
+
+// (z - w) / (1 - conj(w) z): the isometry taking w to 0, applied to z.
+Point to_origin(const Point &w, const Point &z) {
+  const double nr = z.re - w.re, ni = z.im - w.im;
+  const double dr = 1 - (w.re * z.re + w.im * z.im), di = -(w.re * z.im - w.im * z.re);
+  const double d = dr * dr + di * di;
+  return {(nr * dr + ni * di) / d, (ni * dr - nr * di) / d};
+}
+
+// (z + w) / (1 + conj(w) z): its inverse.
+Point from_origin(const Point &w, const Point &z) {
+  const double nr = z.re + w.re, ni = z.im + w.im;
+  const double dr = 1 + (w.re * z.re + w.im * z.im), di = w.re * z.im - w.im * z.re;
+  const double d = dr * dr + di * di;
+  return {(nr * dr + ni * di) / d, (ni * dr - nr * di) / d};
+}
+
+// 1 - |z|^2 without losing the low digits of |z|^2 to the subtraction's
+// operands (|z| near 1 at the corners of F_g at large genus).
+double one_minus_norm2(const Point &z) {
+  const double n = std::hypot(z.re, z.im);
+  return (1 - n) * (1 + n);
+}
+
+}  // namespace
+
+Point face_corner(const Triangulation &tri, const Face &f, int i) {
+  const Vertex &u = tri.vertices()[f.v[i]];
+  if (f.t[i] == 0) return {u.x, u.y};
+  return tri.table().moebius(f.t[i]).apply(Point{u.x, u.y});
+}
+
+Circle circumcircle(const Point &p0, const Point &p1, const Point &p2) {
+  const Point w1 = to_origin(p0, p1), w2 = to_origin(p0, p2);
+  // The Euclidean circle through 0, w1, w2: its centre c has 2 c.w = |w|^2.
+  const double n1 = w1.re * w1.re + w1.im * w1.im, n2 = w2.re * w2.re + w2.im * w2.im;
+  const double cross = 2 * (w1.re * w2.im - w1.im * w2.re);
+  if (!(cross != 0)) throw std::logic_error("circumcircle: the three points are collinear");
+  const Point c{(n1 * w2.im - n2 * w1.im) / cross, (n2 * w1.re - n1 * w2.re) / cross};
+  // Its diameter from 0 ends at 2c, Euclidean length s < 1, hyperbolic
+  // length 2 atanh(s); the hyperbolic centre is that diameter's midpoint,
+  // at Euclidean distance tanh(atanh(s) / 2) = s / (1 + sqrt(1 - s^2)).
+  const double s = 2 * std::hypot(c.re, c.im);
+  if (!(s < 1)) throw std::logic_error("circumcircle: the circle is not a hyperbolic circle");
+  const double k = 2 / (1 + std::sqrt((1 - s) * (1 + s)));
+  return {from_origin(p0, Point{k * c.re, k * c.im}), std::atanh(s)};
+}
+
+double distance(const Point &p, const Point &q) {
+  const double d = std::hypot(p.re - q.re, p.im - q.im);
+  return 2 * std::asinh(d / std::sqrt(one_minus_norm2(p) * one_minus_norm2(q)));
+}
+
+Point translate(const Triangulation &tri, group::TranslationId h, const Point &p) {
+  if (h == 0) return p;
+  return tri.table().moebius(h).apply(p);
+}
+
+}  // namespace hdt::triangulation

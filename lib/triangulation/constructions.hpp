@@ -1,0 +1,34 @@
+// Constructions in double on the faces of a triangulation: corner points of
+// the canonical copies, circumcentres and circumradii (the Voronoi
+// vertices), hyperbolic distances. Unlike the predicates these are not
+// exact: each result is a rounded value (its accuracy is stated in hdt.h and
+// measured by tests/test_dual.c against a 256-bit MPFR recomputation).
+#pragma once
+
+#include "group/moebius.hpp"
+#include "triangulation/triangulation.hpp"
+
+namespace hdt::triangulation {
+
+using Point = group::Complex<double>;
+
+// Corner i of face f's canonical copy: the stored point under the corner's
+// translation (which includes the vertex's home), one Moebius map with the
+// table's last-bit-accurate matrix.
+Point face_corner(const Triangulation &tri, const Face &f, int i);
+
+struct Circle {
+  Point centre;
+  double radius;  // hyperbolic
+};
+// The hyperbolic circle through three distinct points of the disk that
+// bound a proper hyperbolic circle (every Delaunay face does).
+Circle circumcircle(const Point &p0, const Point &p1, const Point &p2);
+
+// Hyperbolic distance in the Poincare disk (curvature -1).
+double distance(const Point &p, const Point &q);
+
+// h(p) for a translation id h.
+Point translate(const Triangulation &tri, group::TranslationId h, const Point &p);
+
+}  // namespace hdt::triangulation
