@@ -130,7 +130,7 @@ START_TEST(bad_arguments_write_nothing) {
     expect_refused(hdt_svg(t, bad_sizes[i], NULL, 0, NULL, 0, &length), HDT_EINVAL, what, buffer, 0, length);
   }
 
-  const unsigned bad_flags[] = {4u, 8u, 1u << 31, HDT_SVG_NEIGHBOURS | 16u, ~0u};
+  const unsigned bad_flags[] = {8u, 16u, 1u << 31, HDT_SVG_NEIGHBOURS | HDT_SVG_VORONOI | 8u, ~0u};
   for (size_t i = 0; i < sizeof bad_flags / sizeof bad_flags[0]; ++i) {
     char what[64];
     snprintf(what, sizeof what, "flags %#x", bad_flags[i]);
@@ -192,8 +192,9 @@ START_TEST(length_and_determinism) {
   size_t n = 0;
   expect(hdt_faces(t, before, before_tr, faces, &n) == HDT_OK && n == faces, "hdt_faces");
 
-  const unsigned flag_sets[] = {0, HDT_SVG_NEIGHBOURS, HDT_SVG_HIDE_DUMMIES, HDT_SVG_NEIGHBOURS | HDT_SVG_HIDE_DUMMIES};
-  for (size_t i = 0; i < 4; ++i) {
+  const unsigned flag_sets[] = {0, HDT_SVG_NEIGHBOURS, HDT_SVG_HIDE_DUMMIES, HDT_SVG_NEIGHBOURS | HDT_SVG_HIDE_DUMMIES,
+                                HDT_SVG_VORONOI, HDT_SVG_VORONOI | HDT_SVG_NEIGHBOURS};
+  for (size_t i = 0; i < sizeof flag_sets / sizeof flag_sets[0]; ++i) {
     char *a = picture(t, 800, "x", flag_sets[i]); /* picture() checks length == strlen */
     char *b = picture(t, 800, "x", flag_sets[i]);
     expect(strcmp(a, b) == 0, "flags %u: two calls drew different pictures", flag_sets[i]);
@@ -205,6 +206,8 @@ START_TEST(length_and_determinism) {
     expect(count(a, "<svg") == 1 && count(a, "</svg>") == 1, "one svg element");
     const size_t tiles = count(a, "clipPath id=\"hdt-tile-");
     expect(tiles == (flag_sets[i] & HDT_SVG_NEIGHBOURS ? 8u : 0u), "flags %u: %zu tiles", flag_sets[i], tiles);
+    expect(count(a, "stroke=\"#2a8a3a\"") == (flag_sets[i] & HDT_SVG_VORONOI ? 1u : 0u), "flags %u: Voronoi path",
+           flag_sets[i]);
     free(a);
     free(b);
   }

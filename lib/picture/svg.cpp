@@ -38,7 +38,7 @@ constexpr double kReferenceSize = 800.0; // the tool's width: the caption's layo
 constexpr double kTitleHeight = 56.0;    // a band above the disk for the caption, at size 800
 constexpr double kDiskScale = 0.97;      // the unit circle's radius, in half picture widths
 constexpr double kSizeMax = HDT_SVG_SIZE_MAX;
-constexpr unsigned kKnownFlags = HDT_SVG_NEIGHBOURS | HDT_SVG_HIDE_DUMMIES;
+constexpr unsigned kKnownFlags = HDT_SVG_NEIGHBOURS | HDT_SVG_HIDE_DUMMIES | HDT_SVG_VORONOI;
 
 // A failed call of the public API inside hdt_svg: its status, and its message
 // (which names the function) after "hdt_svg: ".
@@ -105,6 +105,8 @@ struct Snapshot {
   // The canonical copy of each face, in hdt_faces order: 3 corners each.
   std::size_t face_count = 0;
   std::vector<double> cx, cy;
+  // With HDT_SVG_VORONOI: hdt_voronoi_edges, 4 numbers per edge.
+  std::vector<double> voronoi;
 };
 
 void take_snapshot(const hdt_triangulation *t, Snapshot &s) {
@@ -158,6 +160,13 @@ void take_snapshot(const hdt_triangulation *t, Snapshot &s) {
     }
     moebius_apply(m->second.data(), px, py, &s.cx[i], &s.cy[i]);
   }
+}
+
+void take_voronoi(const hdt_triangulation *t, Snapshot &s) {
+  size_t edges = 0;
+  check(hdt_voronoi_edges(t, nullptr, 0, &edges));
+  s.voronoi.resize(4 * edges);
+  if (edges > 0) check(hdt_voronoi_edges(t, s.voronoi.data(), edges, &edges));
 }
 
 // ---- The polygon F_g and the neighbour set N ----
@@ -301,6 +310,31 @@ class Picture {
     }
   }
 
+  // The Voronoi edges' copies h(e), h in N, that may meet F_g (both ends
+  // beyond one side: all of the geodesic segment is), as in pieces(): the
+  // edge is placed in its left face's canonical frame, within the circumdisks
+  // of that copy and of the neighbour's copy beside it. Segments shorter
+  // than a pixel (cocircular faces give length 0) are left out.
+  void voronoi_pieces(Text &f) const {
+    const double pixel = 2.0 / (size_ * kDiskScale);
+    std::size_t drawn = 0;
+    for (std::size_t e = 0; 4 * e < s_.voronoi.size(); ++e) {
+      const double *p = &s_.voronoi[4 * e];
+      if (std::hypot(p[2] - p[0], p[3] - p[1]) <= pixel) continue;
+      for (std::size_t h = 0; h < g_.neighbour.size(); ++h) {
+        double x[2] = {p[0], p[2]}, y[2] = {p[1], p[3]};
+        if (h != 0)
+          for (int c = 0; c < 2; ++c) moebius_apply(g_.neighbour[h].data(), p[2 * c], p[2 * c + 1], &x[c], &y[c]);
+        bool away = false;
+        for (int k = 0; k < g_.n && !away; ++k) away = beyond(g_, k, x[0], y[0]) && beyond(g_, k, x[1], y[1]);
+        if (away) continue;
+        f.put("M%.2f %.2f", sx(x[0]), sy(y[0]));
+        geodesic_to(f, x[0], y[0], x[1], y[1]);
+        if (++drawn % 8 == 0) f.putc('\n');
+      }
+    }
+  }
+
   // The polygon F_g, or its image under m (nullptr: the identity).
   void polygon_copy(Text &f, const double *m) const {
     std::vector<double> x(g_.vx), y(g_.vy);
@@ -396,6 +430,7 @@ std::string default_title(const Snapshot &s) {
 
 void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char *title, unsigned flags) {
   const bool neighbours = flags & HDT_SVG_NEIGHBOURS, hide_dummies = flags & HDT_SVG_HIDE_DUMMIES;
+  const bool voronoi = flags & HDT_SVG_VORONOI;
   const Picture p(s, g, size);
   const double scale = size / kReferenceSize; // the caption's layout
   // Sizes are printed with 10 digits (%g's 6 would round a width such as
@@ -446,6 +481,15 @@ void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char
   p.pieces(f, nullptr, false);
   f.puts("\"/>\n");
 
+  // The Voronoi diagram over it, cut the same way.
+  if (voronoi) {
+    f.put("<path clip-path=\"url(#hdt-polygon)\" fill=\"none\" stroke=\"#2a8a3a\" stroke-width=\"%g\" "
+          "stroke-linecap=\"round\" d=\"",
+          line * 1.5);
+    p.voronoi_pieces(f);
+    f.puts("\"/>\n");
+  }
+
   // F_g's boundary on top.
   f.puts("<path fill=\"none\" stroke=\"#c05a00\" stroke-width=\"1.8\" stroke-opacity=\"0.85\" d=\"");
   p.polygon_copy(f, nullptr);
@@ -465,6 +509,7 @@ void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char
     f.put(" (%zu dumm%s, %s)", s.dummy_count, s.dummy_count == 1 ? "y" : "ies", hide_dummies ? "not marked" : "red");
   f.put(", %zu faces, drawn in F_%d and cut at its sides", s.face_count, s.genus);
   if (neighbours) f.put(", and in the %d tiles across them", g.n);
+  if (voronoi) f.puts("; Voronoi diagram green");
   f.puts("; Poincare disk</text>\n");
   f.puts("</svg>\n");
 }
@@ -485,12 +530,13 @@ HDT_API hdt_status hdt_svg(const hdt_triangulation *t, double size, const char *
     }
     if (flags & ~kKnownFlags)
       throw ApiError(HDT_EINVAL, "unknown flags " + std::to_string(flags & ~kKnownFlags) +
-                                     " (HDT_SVG_NEIGHBOURS = 1 and HDT_SVG_HIDE_DUMMIES = 2 are known)");
+                                     " (HDT_SVG_NEIGHBOURS = 1, HDT_SVG_HIDE_DUMMIES = 2 and HDT_SVG_VORONOI = 4 are known)");
     if (capacity > 0 && !text)
       throw ApiError(HDT_EINVAL, "text is NULL but capacity is " + std::to_string(capacity));
 
     Snapshot s;
     take_snapshot(t, s);
+    if (flags & HDT_SVG_VORONOI) take_voronoi(t, s);
     Geometry g;
     take_geometry(s.genus, g);
     Text f;
