@@ -42,7 +42,7 @@ from .group import (
 )
 from .library import abi_version, version
 from .surface import point_representative, polygon_side_midpoint, polygon_vertex, systole
-from .triangulation import Faces, Location, Triangulation, Vertices
+from .triangulation import Edges, Faces, Location, Neighbours, Star, Triangulation, Vertices, Voronoi
 
 #: The version of these bindings (the library's is version()).
 __version__ = "0.4.0"
@@ -50,18 +50,22 @@ __version__ = "0.4.0"
 __all__ = [
     "AlreadyExists",
     "BufferTooSmall",
+    "Edges",
     "Error",
     "Faces",
     "HandleClosed",
     "InternalError",
     "InvalidArgument",
     "Location",
+    "Neighbours",
     "NotSupported",
     "OutOfDomain",
     "OutOfMemory",
+    "Star",
     "Status",
     "Triangulation",
     "Vertices",
+    "Voronoi",
     "abi_version",
     "neighbour_count",
     "neighbour_word",

@@ -99,6 +99,14 @@ PROTOTYPES = {
     "hdt_svg": (_status, (_handle, _double, _text, _unsigned, _char_p, _size, _size_p)),
     "hdt_save": (_status, (_handle, _char_p, _size, _size_p)),
     "hdt_load": (_status, (_handle_p, _text, _size)),  # bytes passed as they are, no copy
+    "hdt_face_neighbours": (_status, (_handle, _uint32_p, _int32_p, _size, _size_p)),
+    "hdt_vertex_star": (_status, (_handle, _uint32, _uint32_p, _uint8_p, _int32_p, _size, _size_p)),
+    "hdt_edge_count": (_size, (_handle,)),
+    "hdt_edges": (_status, (_handle, _uint32_p, _int32_p, _uint32_p, _double_p, _size, _size_p)),
+    "hdt_face_points": (_status, (_handle, _double_p, _size, _size_p)),
+    "hdt_voronoi_vertices": (_status, (_handle, _double_p, _double_p, _size, _size_p)),
+    "hdt_voronoi_edges": (_status, (_handle, _double_p, _size, _size_p)),
+    "hdt_voronoi_cell": (_status, (_handle, _uint32, _double_p, _size, _size_p)),
 }
 
 

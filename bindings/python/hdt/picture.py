@@ -32,13 +32,14 @@ from .surface import polygon_side_midpoint, polygon_vertex
 DISK_FILL, DISK_EDGE = "#f4f6fb", "#333333"
 POLYGON_FILL, POLYGON_EDGE = "#ffd98a", "#c05a00"
 FACE_EDGE, NEIGHBOUR_FACE_EDGE, NEIGHBOUR_POLYGON_EDGE = "#1f2a44", "#8a9ac0", "#e0b070"
+VORONOI_EDGE = "#2a8a3a"
 USER_VERTEX, DUMMY_VERTEX = "#1f2a44", "#d62728"
 
 
-def svg(triangulation, *, size=800, dummies=True, neighbours=False, title=None):
+def svg(triangulation, *, size=800, dummies=True, neighbours=False, title=None, voronoi=False):
     """The picture of the triangulation as the text of an SVG document, drawn
     by libhdt: the same as ``triangulation.to_svg(...)`` (see there)."""
-    return triangulation.to_svg(size=size, dummies=dummies, neighbours=neighbours, title=title)
+    return triangulation.to_svg(size=size, dummies=dummies, neighbours=neighbours, title=title, voronoi=voronoi)
 
 
 # ---- Geometry ----
@@ -119,8 +120,11 @@ class Scene:
     #: A vertex closer than this (in power) to a side's circle is on it.
     BOUNDARY = 1e-9
 
-    def __init__(self, triangulation):
+    def __init__(self, triangulation, voronoi=False):
         with triangulation._lock:
+            #: The Voronoi edges (p, q) as placed by Triangulation.voronoi(), with voronoi.
+            self.voronoi = [tuple(tuple(point) for point in edge)
+                            for edge in as_lists(triangulation.voronoi().edges)] if voronoi else []
             ids, points, dummy = (as_lists(value) for value in triangulation.vertices())
             face_vertices, face_translations = (as_lists(value) for value in triangulation.faces())
             matrices = {}
@@ -183,6 +187,21 @@ class Scene:
                 result.append(corners)
         return result
 
+    def voronoi_pieces(self, pixel=2.0 / (800 * 0.97)):
+        """The copies h(e), h in N, of the Voronoi edges that may meet F_g
+        (both ends beyond one side of F_g are left out), in the library's
+        order; edges shorter than `pixel` are left out, as the library does
+        at size 800."""
+        result = []
+        for p, q in self.voronoi:
+            if math.hypot(q[0] - p[0], q[1] - p[1]) <= pixel:
+                continue
+            for h, matrix in enumerate(self.neighbours):
+                ends = (p, q) if h == 0 else (_apply(matrix, *p), _apply(matrix, *q))
+                if self._may_meet_polygon(ends):
+                    result.append(ends)
+        return result
+
     def places(self, point):
         """The places of a representative in the closed F_g: itself, and for
         a point on F_g's boundary its images there under N."""
@@ -199,7 +218,7 @@ class Scene:
         """The corners of F_g, or of its image under the real matrix."""
         return list(self.polygon) if matrix is None else [_apply(matrix, x, y) for x, y in self.polygon]
 
-    def caption(self, neighbours, dummies=True):
+    def caption(self, neighbours, dummies=True, voronoi=False):
         """The library's default caption, both lines."""
         user = self.vertex_count - self.dummy_count
         if user == 0:
@@ -213,6 +232,8 @@ class Scene:
         line += f", {self.face_count} faces, drawn in F_{self.genus} and cut at its sides"
         if neighbours:
             line += f", and in the {4 * self.genus} tiles across them"
+        if voronoi:
+            line += "; Voronoi diagram green"
         return f"{title}\n{line}"
 
 
@@ -227,7 +248,7 @@ def _outline(corners):
     return [(z.real, z.imag) for z in geodesic_polygon_points(_complex(corners))]
 
 
-def plot(triangulation, ax=None, *, dummies=True, neighbours=False):
+def plot(triangulation, ax=None, *, dummies=True, neighbours=False, voronoi=False):
     """Draws the triangulation on the matplotlib Axes ax (a new figure's when
     None) and returns the Axes: the picture of :func:`svg`, the same pieces
     cut at F_g's sides by a clip path, with geodesic edges drawn as fine
@@ -242,7 +263,7 @@ def plot(triangulation, ax=None, *, dummies=True, neighbours=False):
         from matplotlib.patches import Circle, Polygon
     except ImportError as error:
         raise ImportError("Triangulation.plot() needs matplotlib (to_svg() does not)", name=error.name) from error
-    scene = Scene(triangulation)
+    scene = Scene(triangulation, voronoi)
     if ax is None:
         import matplotlib.pyplot as plt
 
@@ -268,6 +289,12 @@ def plot(triangulation, ax=None, *, dummies=True, neighbours=False):
                            label="faces")
     ax.add_collection(faces)
     faces.set_clip_path(clip)
+    if voronoi:
+        cells = LineCollection([[(z.real, z.imag) for z in [complex(*p)] + geodesic_points(complex(*p), complex(*q))]
+                                for p, q in scene.voronoi_pieces()], colors=VORONOI_EDGE, linewidths=line * 1.5,
+                               zorder=3, label="Voronoi diagram")
+        ax.add_collection(cells)
+        cells.set_clip_path(clip)
     ax.add_patch(Polygon(boundary, closed=True, facecolor="none", edgecolor=POLYGON_EDGE, linewidth=1.8,
                          alpha=0.85, zorder=4, label=f"F_{scene.genus}"))
     user = [place for point in scene.user_points for place in scene.places(point)]
@@ -282,5 +309,5 @@ def plot(triangulation, ax=None, *, dummies=True, neighbours=False):
     ax.set_ylim(-1.03, 1.03)
     ax.set_aspect("equal")
     ax.set_axis_off()
-    ax.set_title(scene.caption(neighbours, dummies), fontsize=9)
+    ax.set_title(scene.caption(neighbours, dummies, voronoi), fontsize=9)
     return ax

@@ -44,7 +44,7 @@ from ._errors import HandleClosed, InternalError, InvalidArgument, Status, check
 from ._lib import lib
 
 # hdt_svg's flags (include/hdt.h).
-_SVG_NEIGHBOURS, _SVG_HIDE_DUMMIES = 1, 2
+_SVG_NEIGHBOURS, _SVG_HIDE_DUMMIES, _SVG_VORONOI = 1, 2, 4
 
 #: :meth:`Triangulation.vertices`: the live vertices by increasing id.
 Vertices = collections.namedtuple("Vertices", "ids points dummy")
@@ -69,6 +69,39 @@ array of shape (F, 3), or a list of 3-tuples)."""
 Faces.vertices.__doc__ = "Three vertex ids per face, counterclockwise."
 Faces.translations.__doc__ = "Per corner, the translation id of the vertex in the face's canonical copy."
 
+#: :meth:`Triangulation.neighbours`: per face and corner, the face across and its translation.
+Neighbours = collections.namedtuple("Neighbours", "faces translations")
+Neighbours.__doc__ = """The adjacency of the faces: row i is face i.
+
+faces[i][c]: the face across the edge opposite corner c (uint32 array of
+shape (F, 3), or a list of 3-tuples); translations[i][c]: the translation id
+h such that h(canonical copy of that face) shares the edge with face i's
+canonical copy (int32, same shape)."""
+
+#: :meth:`Triangulation.star`: the faces around a vertex.
+Star = collections.namedtuple("Star", "faces corners translations")
+Star.__doc__ = """The faces around a vertex, counterclockwise: faces (indices
+into faces()), corners (the vertex's corner 0..2 in each) and translations
+(the id h such that h(canonical copy) has the vertex at its representative)."""
+
+#: :meth:`Triangulation.edges`: every edge once.
+Edges = collections.namedtuple("Edges", "vertices translations faces lengths")
+Edges.__doc__ = """Every edge once: row e is edge e.
+
+vertices (E, 2): the edge runs from the representative of vertices[e][0] to
+h(representative of vertices[e][1]), h = translations[e] (E,); faces (E, 2):
+the face on its left, then on its right; lengths (E,): its hyperbolic
+length."""
+
+#: :meth:`Triangulation.voronoi`: the Voronoi diagram.
+Voronoi = collections.namedtuple("Voronoi", "centres radii edges")
+Voronoi.__doc__ = """The Voronoi diagram, the dual of the triangulation.
+
+centres (F, 2): the hyperbolic circumcentre of each face's canonical copy
+(the Voronoi vertices); radii (F,): the hyperbolic circumradii; edges
+(E, 2, 2): per edge of edges(), the Voronoi edge from the left face's centre
+to the right face's centre placed beside it."""
+
 #: :meth:`Triangulation.locate`: a face index and the translation of its copy.
 Location = collections.namedtuple("Location", "face translation")
 Location.__doc__ = """Where a point lies: the face (an index into faces()) and
@@ -76,6 +109,16 @@ the translation id h such that the point is in the closed triangle
 h(canonical copy of the face)."""
 Location.face.__doc__ = "The index of the face in the order of faces()."
 Location.translation.__doc__ = "The translation id of the face's copy that contains the point."
+
+
+def _pairs(owner, rows, groups):
+    """An output buffer of rows x (2 groups) doubles as points: a NumPy array
+    of shape (rows, groups, 2), or a list of `groups` (x, y) tuples per row."""
+    if not isinstance(owner, ctypes.Array):
+        return owner.reshape(rows, groups, 2)
+    values = list(owner)
+    return [tuple((values[i + 2 * k], values[i + 2 * k + 1]) for k in range(groups))
+            for i in range(0, len(values), 2 * groups)]
 
 
 def _destroy(handle):
@@ -409,6 +452,120 @@ class Triangulation:
                                                   translation)
         return complex(re_a, im_a), complex(re_b, im_b)
 
+    # ---- adjacency, edges, corners, the Voronoi diagram ----
+
+    def _list(self, what, function, outputs, count):
+        """Calls a two-call-pattern function of the library with buffers of
+        count rows: outputs is a list of (ctype, columns) or None (a NULL
+        output); returns the owners (call with the lock held)."""
+        pointers, owners = [], []
+        for output in outputs:
+            if output is None:
+                pointers.append(None)
+                owners.append(None)
+                continue
+            pointer, owner = _arrays.output(output[0], count, output[1])
+            pointers.append(pointer)
+            owners.append(owner)
+        found = ctypes.c_size_t()
+        check(function(*pointers, count, ctypes.byref(found)))
+        if found.value != count:
+            raise InternalError(f"{what}: the library listed {found.value}, expected {count}")
+        return owners
+
+    def neighbours(self):
+        """The adjacency of the faces as a :class:`Neighbours` named tuple
+        (faces, translations), two arrays of shape (F, 3) (lists of 3-tuples
+        without NumPy): for face i and corner c, the face across the edge
+        opposite c and the translation id placing its canonical copy beside
+        face i's canonical copy."""
+        with self._lock:
+            handle = self._live("neighbours")
+            count = lib.hdt_face_count(handle)
+            faces, translations = self._list(
+                "neighbours", lambda *a: lib.hdt_face_neighbours(handle, *a),
+                [(ctypes.c_uint32, 3), (ctypes.c_int32, 3)], count)
+        return Neighbours(_arrays.result(faces, 3), _arrays.result(translations, 3))
+
+    def star(self, vertex):
+        """The faces around a live vertex, counterclockwise, as a
+        :class:`Star` named tuple (faces, corners, translations) of arrays of
+        shape (k,) (lists without NumPy). :class:`hdt.InvalidArgument` when
+        vertex is not a live vertex id."""
+        vertex = c_vertex(vertex)
+        with self._lock:
+            handle = self._live("star")
+            count = ctypes.c_size_t()
+            check(lib.hdt_vertex_star(handle, vertex, None, None, None, 0, ctypes.byref(count)))
+            faces, corners, translations = self._list(
+                "star", lambda *a: lib.hdt_vertex_star(handle, vertex, *a),
+                [(ctypes.c_uint32, None), (ctypes.c_uint8, None), (ctypes.c_int32, None)], count.value)
+        return Star(_arrays.result(faces), _arrays.result(corners), _arrays.result(translations))
+
+    @property
+    def edge_count(self):
+        """The number of edges, E = 3 F / 2."""
+        with self._lock:
+            return lib.hdt_edge_count(self._live("edge_count"))
+
+    def edges(self):
+        """Every edge once as an :class:`Edges` named tuple (vertices,
+        translations, faces, lengths): arrays of shape (E, 2), (E,), (E, 2)
+        and (E,) (lists without NumPy). Edge e runs from the representative
+        of vertices[e][0] to translation_matrix(translations[e]) applied to
+        the representative of vertices[e][1]; faces[e] are the faces on its
+        left and right; lengths[e] its hyperbolic length."""
+        with self._lock:
+            handle = self._live("edges")
+            count = lib.hdt_edge_count(handle)
+            vertices, translations, faces, lengths = self._list(
+                "edges", lambda *a: lib.hdt_edges(handle, *a),
+                [(ctypes.c_uint32, 2), (ctypes.c_int32, None), (ctypes.c_uint32, 2), (ctypes.c_double, None)], count)
+        return Edges(_arrays.result(vertices, 2), _arrays.result(translations), _arrays.result(faces, 2),
+                     _arrays.result(lengths))
+
+    def face_points(self):
+        """The three corners of each face's canonical copy in the disk, in
+        the order of faces(): a float64 array of shape (F, 3, 2) (without
+        NumPy, a list of three (x, y) tuples per face)."""
+        with self._lock:
+            handle = self._live("face_points")
+            count = lib.hdt_face_count(handle)
+            (xy,) = self._list("face_points", lambda *a: lib.hdt_face_points(handle, *a), [(ctypes.c_double, 6)],
+                               count)
+        return _pairs(xy, count, 3)
+
+    def voronoi(self):
+        """The Voronoi diagram as a :class:`Voronoi` named tuple (centres,
+        radii, edges): the hyperbolic circumcentre (F, 2) and circumradius
+        (F,) of each face's canonical copy, and per edge of :meth:`edges` the
+        Voronoi edge (E, 2, 2) from the left face's centre to the right
+        face's centre placed beside it (lists without NumPy). The cell of a
+        vertex: :meth:`voronoi_cell`."""
+        with self._lock:
+            handle = self._live("voronoi")
+            faces, edges = lib.hdt_face_count(handle), lib.hdt_edge_count(handle)
+            centres, radii = self._list("voronoi", lambda *a: lib.hdt_voronoi_vertices(handle, *a),
+                                        [(ctypes.c_double, 2), (ctypes.c_double, None)], faces)
+            (segments,) = self._list("voronoi", lambda *a: lib.hdt_voronoi_edges(handle, *a), [(ctypes.c_double, 4)],
+                                     edges)
+        return Voronoi(_arrays.result(centres, 2), _arrays.result(radii), _pairs(segments, edges, 2))
+
+    def voronoi_cell(self, vertex):
+        """The Voronoi cell of a live vertex: the circumcentres of the faces
+        of its :meth:`star` (same order), placed around its representative,
+        a counterclockwise polygon with geodesic sides; a float64 array of
+        shape (k, 2) (a list of (x, y) without NumPy).
+        :class:`hdt.InvalidArgument` when vertex is not a live vertex id."""
+        vertex = c_vertex(vertex)
+        with self._lock:
+            handle = self._live("voronoi_cell")
+            count = ctypes.c_size_t()
+            check(lib.hdt_voronoi_cell(handle, vertex, None, 0, ctypes.byref(count)))
+            (xy,) = self._list("voronoi_cell", lambda *a: lib.hdt_voronoi_cell(handle, vertex, *a),
+                               [(ctypes.c_double, 2)], count.value)
+        return _arrays.result(xy, 2)
+
     # ---- queries ----
 
     def locate(self, x, y):
@@ -443,7 +600,7 @@ class Triangulation:
 
     # ---- pictures ----
 
-    def to_svg(self, path=None, *, size=800, dummies=True, neighbours=False, title=None):
+    def to_svg(self, path=None, *, size=800, dummies=True, neighbours=False, title=None, voronoi=False):
         """The picture of the triangulation as SVG text, drawn by libhdt
         (hdt_svg, as hdt-triangulate's --svg), also written to path (a file
         name) when given; needs no third-party package.
@@ -455,11 +612,13 @@ class Triangulation:
         tiles across F_g's sides, lighter. size is the width in pixels
         (0 < size <= 100000, else :class:`hdt.InvalidArgument`); title
         replaces the caption's first line (plain text; the library escapes
-        it), by default "Delaunay triangulation of N points on M_g". See
-        :mod:`hdt.picture`.
+        it), by default "Delaunay triangulation of N points on M_g". voronoi
+        also draws the Voronoi diagram (green), cut at the sides like the
+        faces. See :mod:`hdt.picture`.
         """
         size = float(size)
-        flags = (0 if dummies else _SVG_HIDE_DUMMIES) | (_SVG_NEIGHBOURS if neighbours else 0)
+        flags = ((0 if dummies else _SVG_HIDE_DUMMIES) | (_SVG_NEIGHBOURS if neighbours else 0)
+                 | (_SVG_VORONOI if voronoi else 0))
         if title is not None:
             # A NUL would end the C string: shown as '?', as the library shows
             # control characters; lone surrogates likewise.
@@ -485,8 +644,8 @@ class Triangulation:
                 file.write(data)
         return data.decode("utf-8")
 
-    def plot(self, ax=None, *, dummies=True, neighbours=False):
+    def plot(self, ax=None, *, dummies=True, neighbours=False, voronoi=False):
         """Draws the triangulation on a matplotlib Axes (a new figure's when
         ax is None) and returns the Axes; the picture of :meth:`to_svg`.
         Raises ImportError when matplotlib is not installed."""
-        return picture.plot(self, ax, dummies=dummies, neighbours=neighbours)
+        return picture.plot(self, ax, dummies=dummies, neighbours=neighbours, voronoi=voronoi)

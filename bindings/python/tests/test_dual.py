@@ -1,0 +1,177 @@
+"""Adjacency, stars, edges, face corners and the Voronoi diagram through the
+bindings: shapes and types on the NumPy and list paths, and the values
+against independent computations in Python (distances over the neighbour
+set, corner translations applied by hand, the cells' areas)."""
+
+import cmath
+import math
+import random
+
+import pytest
+
+import hdt
+from hdt import _arrays
+from hdt.picture import moebius
+
+
+def points(count, seed, radius=0.4):
+    """count random points of the disk of the given radius (inside F_g)."""
+    generator = random.Random(seed)
+    found = []
+    while len(found) < count:
+        x, y = generator.uniform(-radius, radius), generator.uniform(-radius, radius)
+        if math.hypot(x, y) < radius:
+            found.append((x, y))
+    return found
+
+
+def distance(z, w):
+    """Hyperbolic distance of disk points (complex), the cosh formula."""
+    return math.acosh(1 + 2 * abs(z - w) ** 2 / ((1 - abs(z) ** 2) * (1 - abs(w) ** 2)))
+
+
+@pytest.fixture(params=[(2, 80, True), (3, 40, False)], ids=["g2", "g3-dummies"])
+def tri(request):
+    genus, count, remove = request.param
+    with hdt.Triangulation(genus) as t:
+        t.insert_many(points(count, genus))
+        if remove:
+            t.remove_dummies()
+        yield t
+
+
+def rows(value):
+    return _arrays.as_lists(value)
+
+
+def test_shapes(tri, arrays):
+    F, E = tri.face_count, tri.edge_count
+    assert E * 2 == 3 * F
+    neighbours = tri.neighbours()
+    edges = tri.edges()
+    corners = tri.face_points()
+    voronoi = tri.voronoi()
+    star = tri.star(int(rows(tri.vertices().ids)[0]))
+    cell = tri.voronoi_cell(int(rows(tri.vertices().ids)[0]))
+    if arrays == "numpy":
+        assert neighbours.faces.shape == (F, 3) and neighbours.faces.dtype.name == "uint32"
+        assert neighbours.translations.shape == (F, 3) and neighbours.translations.dtype.name == "int32"
+        assert edges.vertices.shape == (E, 2) and edges.translations.shape == (E,)
+        assert edges.faces.shape == (E, 2) and edges.lengths.shape == (E,) and edges.lengths.dtype.name == "float64"
+        assert corners.shape == (F, 3, 2)
+        assert voronoi.centres.shape == (F, 2) and voronoi.radii.shape == (F,) and voronoi.edges.shape == (E, 2, 2)
+        assert star.faces.shape == star.corners.shape == star.translations.shape
+        assert cell.shape == (len(star.faces), 2)
+    else:
+        assert len(neighbours.faces) == F and all(len(row) == 3 for row in neighbours.faces)
+        assert len(edges.lengths) == E and isinstance(edges.lengths[0], float)
+        assert len(corners) == F and all(len(c) == 3 and len(c[0]) == 2 for c in corners)
+        assert len(voronoi.edges) == E and len(voronoi.edges[0]) == 2 and len(voronoi.edges[0][0]) == 2
+        assert len(cell) == len(star.faces)
+
+
+def test_values_against_python(tri):
+    """Corners, lengths, centres and cells recomputed in Python."""
+    ids, reps, _ = (rows(v) for v in tri.vertices())
+    rep = {v: complex(x, y) for v, (x, y) in zip(ids, reps)}
+    face_vertices, face_translations = (rows(v) for v in tri.faces())
+    matrix = {}
+
+    def image(t, z):
+        if t not in matrix:
+            matrix[t] = tri.translation_matrix(t)
+        return moebius(matrix[t], z)
+
+    corners = rows(tri.face_points())
+    for f, (vs, ts) in enumerate(zip(face_vertices, face_translations)):
+        for c in range(3):
+            assert abs(complex(*corners[f][c]) - image(ts[c], rep[vs[c]])) < 1e-13
+    centres, radii, segments = (rows(v) for v in tri.voronoi())
+    for f in range(len(face_vertices)):
+        centre = complex(*centres[f])
+        for c in range(3):
+            assert distance(centre, complex(*corners[f][c])) == pytest.approx(radii[f], rel=1e-9)
+    words = [tuple(w) for w in hdt.neighbour_words(tri.genus)]
+    neighbours = [hdt.word_matrix(tri.genus, list(w)) for w in words]
+    vertices, translations, faces, lengths = (rows(v) for v in tri.edges())
+    for e, (a, b) in enumerate(vertices):
+        best = min(range(len(neighbours)), key=lambda h: distance(rep[a], moebius(neighbours[h], rep[b])))
+        assert lengths[e] == pytest.approx(distance(rep[a], moebius(neighbours[best], rep[b])), rel=1e-9)
+        assert tri.translation_word(translations[e]) == words[best]
+        assert complex(*segments[e][0]) == pytest.approx(complex(*centres[faces[e][0]]), abs=0)
+    # The cells tile the surface: their areas add up to 4 pi (g - 1).
+    area = 0.0
+    for v in ids:
+        cell = [complex(x, y) for x, y in rows(tri.voronoi_cell(v))]
+        p = rep[v]
+        for k, z1 in enumerate(cell):
+            z2 = cell[(k + 1) % len(cell)]
+            w1, w2 = (z1 - p) / (1 - p.conjugate() * z1), (z2 - p) / (1 - p.conjugate() * z2)
+            area += -2 * cmath.phase(1 - w1.conjugate() * w2)
+    assert area == pytest.approx(4 * math.pi * (tri.genus - 1), rel=1e-9)
+
+
+def test_neighbours_and_stars(tri):
+    faces, translations = (rows(v) for v in tri.neighbours())
+    for f, row in enumerate(faces):
+        for c, n in enumerate(row):
+            back = [k for k in range(3) if faces[n][k] == f]
+            assert len(back) == 1
+            word = list(tri.translation_word(translations[f][c])) + list(tri.translation_word(translations[n][back[0]]))
+            assert hdt.reduce_word(tri.genus, word) == ()
+    total = 0
+    for v in rows(tri.vertices().ids):
+        star = tri.star(v)
+        total += len(rows(star.faces))
+        assert len(rows(tri.voronoi_cell(v))) == len(rows(star.faces))
+    assert total == 3 * tri.face_count
+
+
+def test_errors(tri):
+    bound = tri.vertex_id_bound
+    with pytest.raises(hdt.InvalidArgument):
+        tri.star(bound)
+    with pytest.raises(hdt.InvalidArgument):
+        tri.voronoi_cell(bound)
+    with pytest.raises(TypeError):
+        tri.star("x")
+
+
+def test_voronoi_picture(tri):
+    text = tri.to_svg(voronoi=True)
+    assert text.count('stroke="#2a8a3a"') == 1
+    assert "Voronoi diagram green" in text
+    assert 'stroke="#2a8a3a"' not in tri.to_svg()
+
+
+def test_closed():
+    t = hdt.Triangulation(2)
+    t.close()
+    for call in (t.neighbours, t.edges, t.face_points, t.voronoi, lambda: t.star(0), lambda: t.voronoi_cell(0)):
+        with pytest.raises(hdt.HandleClosed):
+            call()
+
+
+def test_plot_draws_the_library_voronoi_pieces(tri):
+    """plot(voronoi=True) draws the pieces the library draws: as many
+    segments as the SVG's green path has, each starting where the SVG's does."""
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from hdt.picture import Scene
+
+    scene = Scene(tri, voronoi=True)
+    pieces = scene.voronoi_pieces()
+    text = tri.to_svg(voronoi=True)
+    path = text.split('stroke="#2a8a3a"')[1].split(' d="')[1].split('"')[0]
+    starts = [chunk.split("A")[0].split("L")[0].split() for chunk in path.replace("\n", "").split("M")[1:]]
+    assert len(starts) == len(pieces)
+    for (p, _), (sx, sy) in zip(pieces, starts):
+        assert float(sx) == pytest.approx(400 * (1 + 0.97 * p[0]), abs=0.006)
+        assert float(sy) == pytest.approx(56 + 400 * (1 - 0.97 * p[1]), abs=0.006)
+    ax = tri.plot(voronoi=True)
+    assert any(c.get_label() == "Voronoi diagram" for c in ax.collections)
+    plt.close(ax.figure)
