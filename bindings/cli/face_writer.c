@@ -5,7 +5,8 @@
 
 #include <hdt.h>
 
-static void write_text(FILE *f, const snapshot *s, const uint32_t *point_vertex, size_t n_points) {
+static void write_text(FILE *f, const snapshot *s, const uint32_t *point_vertex, size_t n_points,
+                       const voronoi *vd) {
   fprintf(f, "# hdt-triangulate %s (libhdt %s): Delaunay triangulation on M_%d\n", HDT_CLI_VERSION,
           hdt_version_string(), s->genus);
   fputs("# Sections: a line \"NAME COUNT\", then COUNT lines.\n"
@@ -15,6 +16,10 @@ static void write_text(FILE *f, const snapshot *s, const uint32_t *point_vertex,
         "#   translations: id length letter...   (canonical word; letter k is g_k)\n"
         "#   points:       index vertex   (the vertex of each input point, input order)\n",
         f);
+  if (vd)
+    fputs("#   voronoi_vertices: x y radius   (per face: circumcentre of its canonical copy)\n"
+          "#   voronoi_edges:    left right x0 y0 x1 y1   (per edge: its faces; the Voronoi edge)\n",
+          f);
   fprintf(f, "genus %d\n", s->genus);
   fprintf(f, "vertices %zu\n", s->vertex_count);
   for (size_t v = 0; v < s->vertex_bound; ++v)
@@ -35,9 +40,11 @@ static void write_text(FILE *f, const snapshot *s, const uint32_t *point_vertex,
   }
   fprintf(f, "points %zu\n", n_points);
   for (size_t i = 0; i < n_points; ++i) fprintf(f, "%zu %lu\n", i, (unsigned long)point_vertex[i]);
+  if (vd) voronoi_write_text(f, vd);
 }
 
-static void write_json(FILE *f, const snapshot *s, const uint32_t *point_vertex, size_t n_points) {
+static void write_json(FILE *f, const snapshot *s, const uint32_t *point_vertex, size_t n_points,
+                       const voronoi *vd) {
   fprintf(f, "{\n  \"genus\": %d,\n  \"libhdt\": \"%s\",\n", s->genus, hdt_version_string());
   fputs("  \"vertices\": [", f);
   const char *sep = "\n";
@@ -74,13 +81,18 @@ static void write_json(FILE *f, const snapshot *s, const uint32_t *point_vertex,
     else fputs(", ", f);
     fprintf(f, "%lu", (unsigned long)point_vertex[i]);
   }
-  fputs(n_points ? "\n  ]\n}\n" : "]\n}\n", f);
+  fputs(n_points ? "\n  ]" : "]", f);
+  if (vd) {
+    fputs(",\n", f);
+    voronoi_write_json(f, vd);
+  }
+  fputs("\n}\n", f);
 }
 
 void face_writer_write(FILE *f, face_format format, const snapshot *s, const uint32_t *point_vertex,
-                       size_t n_points) {
+                       size_t n_points, const voronoi *v) {
   if (format == FACE_FORMAT_JSON)
-    write_json(f, s, point_vertex, n_points);
+    write_json(f, s, point_vertex, n_points, v);
   else
-    write_text(f, s, point_vertex, n_points);
+    write_text(f, s, point_vertex, n_points, v);
 }

@@ -10,7 +10,8 @@
  *   - the translation ids the faces use, each with its canonical word (the
  *     letters k of the generators g_k, product written left to right);
  *   - for each input point, in input order, the vertex that holds it (ids
- *     are given in the order of insertion, a Hilbert order, not input order).
+ *     are given in the order of insertion, a Hilbert order, not input order);
+ *   - with --voronoi, the Voronoi diagram last (voronoi_writer.h).
  * Numbers are printed with %.17g, so that they read back to the same
  * doubles.
  */
@@ -18,15 +19,17 @@
 #define HDT_CLI_FACE_WRITER_H
 
 #include "snapshot.h"
+#include "voronoi_writer.h"
 
 #include <stdint.h>
 #include <stdio.h>
 
 typedef enum { FACE_FORMAT_TEXT, FACE_FORMAT_JSON } face_format;
 
-/* point_vertex[i] is the vertex of input point i (n_points of them). The
-   stream's error state is left for the caller to check. */
+/* point_vertex[i] is the vertex of input point i (n_points of them); v is
+   the Voronoi diagram, or NULL when not asked for. The stream's error state
+   is left for the caller to check. */
 void face_writer_write(FILE *f, face_format format, const snapshot *s, const uint32_t *point_vertex,
-                       size_t n_points);
+                       size_t n_points, const voronoi *v);
 
 #endif

@@ -65,6 +65,8 @@ static void usage(FILE *f) {
           "                      given (standard input is then read only as \"-\")\n"
           "      --neighbours    with --svg: also the copies across the 4g sides of F_g\n"
           "                      (also spelled --neighbors)\n"
+          "      --voronoi       also the Voronoi diagram: in the output, and drawn\n"
+          "                      with --svg\n"
           "      --keep-dummies  keep the dummy points (default: remove those that can go)\n"
           "      --validate      check every invariant with exact predicates first\n"
           "      --stats         counts and timings on standard error\n"
@@ -93,10 +95,10 @@ typedef struct options {
   const char *load;
   const char *input;
   int genus_given;
-  int keep_dummies, neighbours, validate, stats, help, version;
+  int keep_dummies, neighbours, voronoi, validate, stats, help, version;
 } options;
 
-enum { OPT_GENUS, OPT_RANDOM, OPT_SEED, OPT_FORMAT, OPT_OUTPUT, OPT_SVG, OPT_NEIGHBOURS, OPT_KEEP,
+enum { OPT_GENUS, OPT_RANDOM, OPT_SEED, OPT_FORMAT, OPT_OUTPUT, OPT_SVG, OPT_NEIGHBOURS, OPT_VORONOI, OPT_KEEP,
        OPT_VALIDATE, OPT_STATS, OPT_HELP, OPT_VERSION, OPT_SAVE, OPT_LOAD };
 
 typedef struct option_spec {
@@ -114,7 +116,7 @@ static const option_spec option_table[] = {
     {"keep-dummies", 0, 0, OPT_KEEP},    {"validate", 0, 0, OPT_VALIDATE},
     {"stats", 0, 0, OPT_STATS},          {"help", 'h', 0, OPT_HELP},
     {"version", 'V', 0, OPT_VERSION},    {"save", 0, 1, OPT_SAVE},
-    {"load", 0, 1, OPT_LOAD},
+    {"load", 0, 1, OPT_LOAD},            {"voronoi", 0, 0, OPT_VORONOI},
 };
 #define N_OPTIONS (sizeof option_table / sizeof option_table[0])
 
@@ -184,6 +186,7 @@ static int apply_option(options *o, const option_spec *spec, const char *shown, 
     case OPT_SAVE: o->save = value; return 1;
     case OPT_LOAD: o->load = value; return 1;
     case OPT_NEIGHBOURS: o->neighbours = 1; return 1;
+    case OPT_VORONOI: o->voronoi = 1; return 1;
     case OPT_KEEP: o->keep_dummies = 1; return 1;
     case OPT_VALIDATE: o->validate = 1; return 1;
     case OPT_STATS: o->stats = 1; return 1;
@@ -355,8 +358,8 @@ static void picture_title(const options *o, const counts *c, char *title, size_t
 
 /* The picture, drawn by libhdt, written to f. 0 on a failure (reported);
    the stream's error state is left for the caller to check. */
-static int write_picture(FILE *f, const hdt_triangulation *t, const char *title, int neighbours) {
-  const unsigned flags = neighbours ? HDT_SVG_NEIGHBOURS : 0u;
+static int write_picture(FILE *f, const hdt_triangulation *t, const char *title, int neighbours, int voronoi) {
+  const unsigned flags = (neighbours ? HDT_SVG_NEIGHBOURS : 0u) | (voronoi ? HDT_SVG_VORONOI : 0u);
   /* A guess at the size (about 200 bytes a face, in F_g and in each tile),
      so that one call usually does (each call draws the whole picture); the
      exact size when it is too small. */
@@ -414,6 +417,7 @@ static int run(const options *given) {
   uint32_t *point_vertex = NULL;
   unsigned char *seen = NULL;
   snapshot s = {0};
+  voronoi vd = {0};
   output_file out = {0}, svg = {0}, saved = {0};
   counts c = {0};
   timings tm = {0};
@@ -481,12 +485,13 @@ static int run(const options *given) {
 
   t0 = cli_now_ms();
   if (!snapshot_take(t, &s)) goto done;
-  face_writer_write(out.f, o->format, &s, point_vertex, points.count);
+  if (o->voronoi && !voronoi_take(t, &vd)) goto done;
+  face_writer_write(out.f, o->format, &s, point_vertex, points.count, o->voronoi ? &vd : NULL);
   if (o->svg) {
     char title[256];
     picture_title(o, &c, title, sizeof title);
     /* A loaded triangulation: libhdt's caption counts all its user vertices. */
-    if (!write_picture(svg.f, t, o->load ? NULL : title, o->neighbours)) goto done;
+    if (!write_picture(svg.f, t, o->load ? NULL : title, o->neighbours, o->voronoi)) goto done;
   }
   if (o->save && !saved_file_write(saved.f, t)) goto done;
   /* Everything written and checked before anything is put in place. */
@@ -506,6 +511,7 @@ done:
   output_discard(&svg);
   output_discard(&out);
   snapshot_free(&s);
+  voronoi_free(&vd);
   free(seen);
   free(point_vertex);
   hdt_destroy(t);

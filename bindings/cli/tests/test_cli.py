@@ -88,6 +88,13 @@ def parse_text(text):
             for j, r in enumerate(rows):
                 assert int(r[0]) == j, r
                 out["points"].append(int(r[1]))
+        elif name == "voronoi_vertices":
+            out.setdefault("voronoi", {})["vertices"] = [
+                {"x": float(r[0]), "y": float(r[1]), "radius": float(r[2])} for r in rows]
+        elif name == "voronoi_edges":
+            out.setdefault("voronoi", {})["edges"] = [
+                {"faces": [int(r[0]), int(r[1])], "from": [float(r[2]), float(r[3])],
+                 "to": [float(r[4]), float(r[5])]} for r in rows]
         else:
             raise AssertionError(f"unknown section {name}")
     return out
@@ -484,6 +491,57 @@ def picture_commands():
                 yield os.path.basename(outputs[0]), words
 
 
+def test_voronoi(tmp):
+    """--voronoi: the same diagram in text and JSON, nothing more without it,
+    and each Voronoi vertex at its radius from the corners of its face
+    (recomputed here from the translation words), each Voronoi edge from the
+    left face's centre to a point at the right face's radius from the
+    Delaunay edge's ends; with --svg, the green path."""
+    for genus, dummies in ((2, ()), (3, ("--keep-dummies",))):
+        args = ("--genus", genus, "--random", 60, "--seed", 4) + dummies
+        code, js, err = run(*args, "--voronoi", "-f", "json")
+        check(code == 0, f"--voronoi json: {err}")
+        j = json.loads(js)
+        j.pop("libhdt", None)
+        code, text, err = run(*args, "--voronoi")
+        check(code == 0 and parse_text(text) == j, "--voronoi: text and JSON hold the same diagram")
+        plain = json.loads(run(*args, "-f", "json")[1])
+        check("voronoi" not in plain, "no voronoi member without --voronoi")
+        plain.pop("libhdt", None)
+        check({k: v for k, v in j.items() if k != "voronoi"} == plain, "--voronoi changes nothing else")
+        gens = generators(genus)
+        point = {v["id"]: complex(v["x"], v["y"]) for v in j["vertices"]}
+        corners = []
+        for face in j["faces"]:
+            corners.append([apply(word_matrix(gens, j["translations"][str(t)]), point[v])
+                            for v, t in zip(face["vertices"], face["translations"])])
+        V, F = len(j["vertices"]), len(j["faces"])
+        check(len(j["voronoi"]["vertices"]) == F and len(j["voronoi"]["edges"]) * 2 == 3 * F,
+              "one Voronoi vertex per face, one edge per Delaunay edge")
+        check(V - len(j["voronoi"]["edges"]) + F == 2 - 2 * genus, "Euler's formula for the dual")
+        for f, c in enumerate(j["voronoi"]["vertices"]):
+            centre = complex(c["x"], c["y"])
+            for z in corners[f]:
+                check(abs(distance(centre, z) - c["radius"]) < 1e-9, f"genus {genus} face {f}: a corner off the circle")
+        for e in j["voronoi"]["edges"]:
+            left, right = e["faces"]
+            check(complex(*e["from"]) == complex(j["voronoi"]["vertices"][left]["x"],
+                                               j["voronoi"]["vertices"][left]["y"]), "an edge starts at its left centre")
+            shared = set(j["faces"][left]["vertices"]) & set(j["faces"][right]["vertices"])
+            check(len(shared) == 2, "the two faces of an edge share two vertices")
+            r = j["voronoi"]["vertices"][right]["radius"]
+            for k, v in enumerate(j["faces"][left]["vertices"]):
+                if v in shared:
+                    check(abs(distance(complex(*e["to"]), corners[left][k]) - r) < 1e-9,
+                          "an edge ends at the right face's centre beside the left face")
+    svg = os.path.join(tmp, "v.svg")
+    code, _, err = run("--random", 50, "--voronoi", "--svg", svg, "-o", os.devnull)
+    check(code == 0, f"--voronoi --svg: {err}")
+    with open(svg) as f:
+        drawn = f.read()
+    check(drawn.count('stroke="#2a8a3a"') == 1 and "Voronoi diagram green" in drawn, "--svg draws the diagram")
+
+
 def test_pictures(tmp):
     """Each committed picture is what its command draws now, byte for byte."""
     directory = os.path.join(REPOSITORY, "examples", "pictures")
@@ -567,7 +625,7 @@ def test_save_and_load(tmp):
 
 TESTS = (test_help_and_version, test_random_text_and_json, test_dummies, test_input_forms, test_bad_input,
          test_usage_errors, test_outputs, test_utf8_bom, test_decimal_comma, test_empty_input_warning,
-         test_random_cap, test_output_errors, test_save_and_load)
+         test_random_cap, test_output_errors, test_save_and_load, test_voronoi)
 
 
 def main():
