@@ -175,3 +175,39 @@ def test_plot_draws_the_library_voronoi_pieces(tri):
     ax = tri.plot(voronoi=True)
     assert any(c.get_label() == "Voronoi diagram" for c in ax.collections)
     plt.close(ax.figure)
+
+
+def test_copies_under_n_cover_the_voronoi_edges():
+    """The picture draws each Voronoi edge's copies under N: no other copy,
+    under the products of two elements of N, has a point inside F_g
+    (sampled along the geodesic), so nothing is missing from the picture."""
+    from hdt.picture import Scene, _apply, geodesic_points
+
+    with hdt.Triangulation(2) as t:
+        t.insert_many(points(20, 2, radius=0.8))
+        t.remove_dummies()
+        scene = Scene(t, voronoi=True)
+    matrices = [tuple(m) for m in scene.neighbours]
+
+    def product(m, n):
+        a = complex(m[0], m[1]) * complex(n[0], n[1]) + complex(m[2], m[3]) * complex(n[2], -n[3])
+        b = complex(m[0], m[1]) * complex(n[2], n[3]) + complex(m[2], m[3]) * complex(n[0], -n[1])
+        return (a.real, a.imag, b.real, b.imag)
+
+    def key(m):
+        return tuple(round(v, 6) for v in m)
+
+    inside_n = {key(m) for m in matrices}
+    beyond = {}
+    for m in matrices:
+        for n in matrices[1:]:
+            p = product(m, n)
+            if key(p) not in inside_n:
+                beyond[key(p)] = p
+    sides = range(len(scene.side_centres))
+    for p, q in scene.voronoi:
+        samples = [complex(*p)] + geodesic_points(complex(*p), complex(*q), step=0.02)
+        for m in beyond.values():
+            for z in samples:
+                x, y = _apply(m, z.real, z.imag)
+                assert not all(scene._side_power(k, x, y) > 1e-12 for k in sides), "a copy outside N meets F_g"
