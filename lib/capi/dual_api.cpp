@@ -38,9 +38,16 @@ void warm_matrices(const Triangulation &tri, bool across) {
   hdt::group::TranslationTable &T = tri.table();
   for (const Face &f : tri.faces())
     for (int i = 0; i < 3; ++i) {
-      T.moebius(f.t[i]);
-      if (across) T.moebius(f.nt[i]);
+      if (f.t[i] != 0) T.moebius(f.t[i]);
+      if (across && f.nt[i] != 0) T.moebius(f.nt[i]);
     }
+}
+
+// The per-vertex functions' scratch, reused from call to call on a thread:
+// a caller walking every vertex would otherwise pay an allocation per call.
+std::vector<hdt::triangulation::StarEntry> &star_scratch() {
+  thread_local std::vector<hdt::triangulation::StarEntry> star;
+  return star;
 }
 
 void check_vertex(const Triangulation &tri, uint32_t v) {
@@ -75,7 +82,7 @@ HDT_API hdt_status hdt_vertex_star(const hdt_triangulation *t, uint32_t v, uint3
     const Triangulation &tri = of(t);
     if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
     check_vertex(tri, v);
-    std::vector<hdt::triangulation::StarEntry> star;
+    std::vector<hdt::triangulation::StarEntry> &star = star_scratch();
     hdt::triangulation::vertex_star(tri, v, &star);
     if (!list_fits(star.size(), capacity, count, "faces")) return HDT_OK;
     for (std::size_t k = 0; k < star.size(); ++k) {
@@ -94,26 +101,35 @@ HDT_API size_t hdt_edge_count(const hdt_triangulation *t) HDT_NOEXCEPT {
 HDT_API hdt_status hdt_edges(const hdt_triangulation *t, uint32_t *vertices, int32_t *translations, uint32_t *faces,
                              double *lengths, size_t capacity, size_t *count) HDT_NOEXCEPT {
   return guarded("hdt_edges", [&] {
+    using hdt::triangulation::edge_listed_with;
     const Triangulation &tri = of(t);
-    if (!list_fits(tri.faces().size() / 2 * 3, capacity, count, "edges")) return HDT_OK;
-    std::vector<hdt::triangulation::Edge> edges;
-    hdt::triangulation::edge_list(tri, &edges);
-    if (edges.size() != *count) throw std::logic_error("hdt_edges: the edge count is not 3F/2");
-    std::vector<double> length;
-    if (lengths) {
-      length.reserve(edges.size());
-      for (const auto &e : edges) {
-        const Face &f = tri.faces()[e.left];
-        length.push_back(hdt::triangulation::distance(hdt::triangulation::face_corner(tri, f, (e.left_edge + 1) % 3),
-                                                      hdt::triangulation::face_corner(tri, f, (e.left_edge + 2) % 3)));
+    const auto &all = tri.faces();
+    if (!list_fits(all.size() / 2 * 3, capacity, count, "edges")) return HDT_OK;
+    // What may fail (new translation ids and matrices) first, then one pass
+    // that writes every output.
+    std::vector<int32_t> h;
+    if (translations) {
+      h.reserve(*count);
+      for (uint32_t f = 0; f < all.size(); ++f)
+        for (int i = 0; i < 3; ++i)
+          if (edge_listed_with(all[f], f, i)) h.push_back(hdt::triangulation::edge_translation(tri, all[f], i));
+      if (h.size() != *count) throw std::logic_error("hdt_edges: the edge count is not 3F/2");
+    }
+    if (lengths) warm_matrices(tri, false);
+    std::size_t k = 0;
+    for (uint32_t f = 0; f < all.size(); ++f)
+      for (int i = 0; i < 3; ++i) {
+        if (!edge_listed_with(all[f], f, i) || k == *count) continue;
+        const int a = (i + 1) % 3, b = (i + 2) % 3;
+        if (vertices) vertices[2 * k] = all[f].v[a], vertices[2 * k + 1] = all[f].v[b];
+        if (translations) translations[k] = h[k];
+        if (faces) faces[2 * k] = f, faces[2 * k + 1] = all[f].n[i];
+        if (lengths)
+          lengths[k] = hdt::triangulation::distance(hdt::triangulation::face_corner(tri, all[f], a),
+                                                    hdt::triangulation::face_corner(tri, all[f], b));
+        ++k;
       }
-      std::copy(length.begin(), length.end(), lengths);
-    }
-    for (std::size_t k = 0; k < edges.size(); ++k) {
-      if (vertices) vertices[2 * k] = edges[k].a, vertices[2 * k + 1] = edges[k].b;
-      if (translations) translations[k] = edges[k].translation;
-      if (faces) faces[2 * k] = edges[k].left, faces[2 * k + 1] = edges[k].right;
-    }
+    if (k != *count) throw std::logic_error("hdt_edges: the edge count is not 3F/2");
     return HDT_OK;
   });
 }
@@ -166,7 +182,7 @@ HDT_API hdt_status hdt_voronoi_edges(const hdt_triangulation *t, double *xy, siz
     std::size_t k = 0;
     for (uint32_t f = 0; f < all.size(); ++f)
       for (int i = 0; i < 3; ++i) {
-        if (all[f].n[i] < f) continue;
+        if (!hdt::triangulation::edge_listed_with(all[f], f, i)) continue;
         const Point q = hdt::triangulation::translate(tri, all[f].nt[i], centre[all[f].n[i]]);
         xy[4 * k] = centre[f].re, xy[4 * k + 1] = centre[f].im, xy[4 * k + 2] = q.re, xy[4 * k + 3] = q.im;
         ++k;
@@ -182,15 +198,18 @@ HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, doub
     const Triangulation &tri = of(t);
     if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
     check_vertex(tri, v);
-    std::vector<hdt::triangulation::StarEntry> star;
+    std::vector<hdt::triangulation::StarEntry> &star = star_scratch();
     hdt::triangulation::vertex_star(tri, v, &star);
     if (!list_fits(star.size(), capacity, count, "corners")) return HDT_OK;
     if (!xy) throw ApiError(HDT_EINVAL, "xy must not be NULL when capacity > 0");
-    std::vector<Point> polygon;
-    polygon.reserve(star.size());
+    // Matrices first: the loop below then cannot fail half way.
     for (const auto &s : star)
-      polygon.push_back(hdt::triangulation::translate(tri, s.translation, face_circle(tri, tri.faces()[s.face]).centre));
-    for (std::size_t k = 0; k < polygon.size(); ++k) xy[2 * k] = polygon[k].re, xy[2 * k + 1] = polygon[k].im;
+      if (s.translation != 0) tri.table().moebius(s.translation);
+    for (std::size_t k = 0; k < star.size(); ++k) {
+      const Point p =
+          hdt::triangulation::translate(tri, star[k].translation, face_circle(tri, tri.faces()[star[k].face]).centre);
+      xy[2 * k] = p.re, xy[2 * k + 1] = p.im;
+    }
     return HDT_OK;
   });
 }

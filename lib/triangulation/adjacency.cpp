@@ -34,22 +34,9 @@ void vertex_star(const Triangulation &tri, uint32_t v, std::vector<StarEntry> *o
   } while (f != first);
 }
 
-void edge_list(const Triangulation &tri, std::vector<Edge> *out) {
+TranslationId edge_translation(const Triangulation &tri, const Face &F, int i) {
   group::TranslationTable &T = tri.table();
-  const auto &faces = tri.faces();
-  out->clear();
-  out->reserve(faces.size() / 2 * 3);
-  for (uint32_t f = 0; f < faces.size(); ++f) {
-    const Face &F = faces[f];
-    for (int i = 0; i < 3; ++i) {
-      if (F.n[i] == f) throw std::logic_error("edge_list: face " + std::to_string(f) + " is its own neighbour");
-      if (F.n[i] < f) continue;
-      const int a = next(i), b = prev(i);
-      // c_a^-1 c_b: b's corner seen from a's representative.
-      const TranslationId h = T.compose(T.inverse(public_corner(tri, F, a)), public_corner(tri, F, b));
-      out->push_back({F.v[a], F.v[b], h, f, F.n[i], i});
-    }
-  }
+  return T.compose(T.inverse(public_corner(tri, F, next(i))), public_corner(tri, F, prev(i)));
 }
 
 }  // namespace hdt::triangulation

@@ -24,15 +24,14 @@ struct StarEntry {
 // vertex stores. Throws std::invalid_argument for a dead or unknown vertex.
 void vertex_star(const Triangulation &tri, uint32_t v, std::vector<StarEntry> *out);
 
-struct Edge {
-  uint32_t a, b;              // the edge runs from rep(a) to translation(rep(b))
-  TranslationId translation;
-  uint32_t left, right;       // left: the face on the left of a -> b (the smaller face index)
-  int left_edge;              // the edge's index in `left` (opposite that corner)
-};
-// Every edge once, by its left face and edge index: the edge i of face f is
-// listed with f when f < f.n[i] (a face of a simplicial complex is never its
-// own neighbour).
-void edge_list(const Triangulation &tri, std::vector<Edge> *out);
+// The edges, each once: edge i of face f (opposite corner i, from corner
+// i+1 to corner i+2, f on its left) is listed with f when f is the smaller
+// of its two faces (a face of a simplicial complex is never its own
+// neighbour), by increasing f, then i.
+inline bool edge_listed_with(const Face &F, uint32_t f, int i) { return F.n[i] > f; }
+// The translation h of that edge: it runs from rep(a) to h(rep(b)), a and
+// b the vertices of corners i+1 and i+2 (c_a^-1 c_b for their corner
+// translations). May add ids to the table.
+TranslationId edge_translation(const Triangulation &tri, const Face &F, int i);
 
 }  // namespace hdt::triangulation
