@@ -323,7 +323,7 @@ HDT_API hdt_status hdt_validate(const hdt_triangulation *t) HDT_NOEXCEPT;
 
 #define HDT_SVG_NEIGHBOURS 1u    /* also the 4g copies of F_g across its sides, and the faces in them, lighter */
 #define HDT_SVG_HIDE_DUMMIES 2u  /* do not mark the dummy vertices (the faces around them are drawn either way) */
-#define HDT_SVG_VORONOI 4u       /* also the Voronoi diagram, cut at the sides like the faces (libhdt 0.4 on) */
+#define HDT_SVG_VORONOI 4u       /* also the Voronoi diagram, cut at the sides like the faces (HDT_0.4 on) */
 /* Largest picture width hdt_svg accepts, in pixels. */
 #define HDT_SVG_SIZE_MAX 100000.0
 
