@@ -141,7 +141,10 @@ def test_svg_is_to_svg(small):
 
 
 def test_to_svg_needs_no_matplotlib(small, monkeypatch):
-    monkeypatch.setitem(sys.modules, "matplotlib", None)  # import matplotlib fails now
+    # import matplotlib fails now, also when an earlier test imported it and
+    # its submodules (None in sys.modules stops each import).
+    for name in [m for m in sys.modules if m == "matplotlib" or m.startswith("matplotlib.")] + ["matplotlib"]:
+        monkeypatch.setitem(sys.modules, name, None)
     ElementTree.fromstring(small.to_svg().encode("utf-8"))
     with pytest.raises(ImportError, match="needs matplotlib"):
         small.plot()
