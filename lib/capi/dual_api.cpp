@@ -1,10 +1,10 @@
 // Adjacency, edges, corner points and the Voronoi diagram (symbol version
 // HDT_0.4). The combinatorics and the constructions live in
 // lib/triangulation (adjacency, constructions); these functions check the
-// arguments and copy the results out. Each computes everything into its own
-// vectors first, so that a failure (HDT_ENOMEM above all) writes nothing but
-// the count.
-#include <algorithm>
+// arguments and copy the results out. Each does what may fail (new
+// translation ids and matrices, memory) before it writes to the caller's
+// buffers, so that a failure (HDT_ENOMEM above all) writes nothing but the
+// count.
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -178,11 +178,12 @@ HDT_API hdt_status hdt_voronoi_edges(const hdt_triangulation *t, double *xy, siz
     warm_matrices(tri, true);
     std::vector<Point> centre(all.size());
     for (std::size_t f = 0; f < all.size(); ++f) centre[f] = face_circle(tri, all[f]).centre;
-    // hdt_edges' order: edge i of face f when f < its neighbour there.
+    // hdt_edges' order: edge i of face f when f < its neighbour there (k
+    // stops at the count: a broken invariant must not write past it).
     std::size_t k = 0;
     for (uint32_t f = 0; f < all.size(); ++f)
       for (int i = 0; i < 3; ++i) {
-        if (!hdt::triangulation::edge_listed_with(all[f], f, i)) continue;
+        if (!hdt::triangulation::edge_listed_with(all[f], f, i) || k == *count) continue;
         const Point q = hdt::triangulation::translate(tri, all[f].nt[i], centre[all[f].n[i]]);
         xy[4 * k] = centre[f].re, xy[4 * k + 1] = centre[f].im, xy[4 * k + 2] = q.re, xy[4 * k + 3] = q.im;
         ++k;
