@@ -392,7 +392,8 @@ HDT_API hdt_status hdt_load(hdt_triangulation **out, const void *bytes, size_t s
 /* ---- Adjacency, edges, corner points and the Voronoi diagram ----
    Symbol version HDT_0.4. All are queries on a const handle (they may add
    translation ids to the handle's table, as hdt_faces does). Faces are
-   indices in hdt_faces order and translations are ids of this
+   indices in hdt_faces order (until the next change of the triangulation,
+   as there; so are edge indices), and translations are ids of this
    triangulation in hdt_faces' convention: h applied to a vertex's
    representative, or to a face's canonical copy (hdt_translation_word,
    hdt_translation_matrix). Lists use the two-call pattern of hdt_faces:
