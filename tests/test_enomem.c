@@ -132,12 +132,59 @@ static void child(int genus) {
   _exit(0);
 }
 
-static void run_in_child(int genus) {
+/* The second child: the outputs of HDT_0.4 that need memory of their own
+   (hdt_voronoi_vertices, hdt_voronoi_edges, hdt_edges with translations)
+   fail with HDT_ENOMEM under a limit their scratch exceeds, and write
+   nothing to the caller's buffers but the count; with memory back they
+   answer. */
+static void dual_child(int genus) {
+  const size_t n = 200000;
+  uint64_t rng = 0xD0A1 + (uint64_t)genus;
+  double *xy = random_points(&rng, n);
+  hdt_triangulation *t = NULL;
+  require(xy && hdt_create(&t, genus) == HDT_OK, "hdt_create: %s", hdt_last_error_message());
+  require(hdt_insert_many(t, xy, n, NULL) == HDT_OK, "hdt_insert_many: %s", hdt_last_error_message());
+  const size_t F = hdt_face_count(t), E = hdt_edge_count(t);
+  double *out = malloc(4 * E * sizeof *out), *radii = malloc(F * sizeof *radii);
+  int32_t *translations = malloc(E * sizeof *translations);
+  require(out && radii && translations, "no memory for the buffers");
+  memset(out, 0x5a, 4 * E * sizeof *out), memset(radii, 0x5a, F * sizeof *radii);
+  memset(translations, 0x5a, E * sizeof *translations);
+  struct rlimit old;
+  require(getrlimit(RLIMIT_AS, &old) == 0, "getrlimit: %s", strerror(errno));
+  /* Less than any of the scratch vectors (2.4 MB and more here). */
+  const size_t headroom = (size_t)1 << 20;
+  struct rlimit tight = {(rlim_t)(address_space_bytes() + headroom), old.rlim_max};
+  require(setrlimit(RLIMIT_AS, &tight) == 0, "setrlimit: %s", strerror(errno));
+  size_t count = 0;
+  expect_out_of_memory(hdt_voronoi_vertices(t, out, radii, F, &count), "hdt_voronoi_vertices");
+  require(count == F, "hdt_voronoi_vertices: count %zu, F %zu", count, F);
+  expect_out_of_memory(hdt_voronoi_edges(t, out, E, &count), "hdt_voronoi_edges");
+  expect_out_of_memory(hdt_edges(t, NULL, translations, NULL, NULL, E, &count), "hdt_edges");
+  require(count == E, "hdt_edges: count %zu, E %zu", count, E);
+  const unsigned char *bytes = (const unsigned char *)out;
+  for (size_t i = 0; i < 4 * E * sizeof *out; ++i) require(bytes[i] == 0x5a, "a failed call wrote byte %zu", i);
+  bytes = (const unsigned char *)radii;
+  for (size_t i = 0; i < F * sizeof *radii; ++i) require(bytes[i] == 0x5a, "a failed call wrote radius byte %zu", i);
+  bytes = (const unsigned char *)translations;
+  for (size_t i = 0; i < E * sizeof *translations; ++i) require(bytes[i] == 0x5a, "a failed call wrote byte %zu", i);
+  require(setrlimit(RLIMIT_AS, &old) == 0, "setrlimit back: %s", strerror(errno));
+  require(hdt_voronoi_vertices(t, out, radii, F, &count) == HDT_OK && hdt_voronoi_edges(t, out, E, &count) == HDT_OK &&
+              hdt_edges(t, NULL, translations, NULL, NULL, E, &count) == HDT_OK,
+          "with memory back: %s", hdt_last_error_message());
+  printf("enomem g=%d: the HDT_0.4 outputs of %zu faces refused under a 1 MiB headroom, then answered\n", genus, F);
+  fflush(stdout);
+  hdt_destroy(t);
+  free(xy), free(out), free(radii), free(translations);
+  _exit(0);
+}
+
+static void run_in_child(void (*body)(int), int genus) {
   fflush(stdout);
   fflush(stderr);
   const pid_t pid = fork();
   ck_assert_msg(pid >= 0, "fork: %s", strerror(errno));
-  if (pid == 0) child(genus);
+  if (pid == 0) body(genus);
   int status = 0;
   ck_assert_msg(waitpid(pid, &status, 0) == pid, "waitpid: %s", strerror(errno));
   ck_assert_msg(WIFEXITED(status), "the child died of signal %d", WIFSIGNALED(status) ? WTERMSIG(status) : 0);
@@ -149,17 +196,24 @@ START_TEST(insert_out_of_memory_genus2) {
     printf("enomem: skipped under a sanitizer or valgrind (RLIMIT_AS does not apply)\n");
     return;
   }
-  run_in_child(2);
+  run_in_child(child, 2);
 }
 END_TEST
 
 START_TEST(insert_out_of_memory_genus4) {
   if (UNDER_SANITIZER || under_valgrind()) return;
-  run_in_child(4);
+  run_in_child(child, 4);
+}
+END_TEST
+
+START_TEST(dual_outputs_out_of_memory) {
+  if (UNDER_SANITIZER || under_valgrind()) return;
+  run_in_child(dual_child, 2);
 }
 END_TEST
 
 int main(void) {
-  const TTest *const tests[] = {insert_out_of_memory_genus2, insert_out_of_memory_genus4};
+  const TTest *const tests[] = {insert_out_of_memory_genus2, insert_out_of_memory_genus4,
+                                dual_outputs_out_of_memory};
   return run_tests("enomem", tests, sizeof tests / sizeof tests[0]);
 }
