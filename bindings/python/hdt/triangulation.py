@@ -28,8 +28,14 @@ libhdt's format (hdt_save); a loaded triangulation is the saved one, with
 the same ids and faces. Pickling, copy.copy and copy.deepcopy go through
 that format and give an independent triangulation.
 
-Arrays: with NumPy installed, :meth:`insert_many`, :meth:`vertices` and
-:meth:`faces` return NumPy arrays; without it, lists (see each method).
+
+Adjacency, edges and the Voronoi diagram: :meth:`neighbours`, :meth:`star`,
+:meth:`edges`, :meth:`face_points`, :meth:`voronoi` and :meth:`voronoi_cell`
+(the C functions of symbol version HDT_0.4; docs/dual.md of the source tree).
+
+Arrays: with NumPy installed, :meth:`insert_many`, :meth:`vertices`,
+:meth:`faces` and the methods above return NumPy arrays; without it, lists
+(see each method).
 """
 
 import collections
