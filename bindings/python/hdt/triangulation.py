@@ -28,7 +28,6 @@ libhdt's format (hdt_save); a loaded triangulation is the saved one, with
 the same ids and faces. Pickling, copy.copy and copy.deepcopy go through
 that format and give an independent triangulation.
 
-
 Adjacency, edges and the Voronoi diagram: :meth:`neighbours`, :meth:`star`,
 :meth:`edges`, :meth:`face_points`, :meth:`voronoi` and :meth:`voronoi_cell`
 (the C functions of symbol version HDT_0.4; docs/dual.md of the source tree).
