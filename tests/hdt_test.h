@@ -38,6 +38,27 @@ static inline int rng_below(uint64_t *s, int n) { return (int)(rng_next(s) % (ui
 /* Uniform in [0, 1), 53 random bits. */
 static inline double uniform01(uint64_t *s) { return (double)(rng_next(s) >> 11) * 0x1p-53; }
 
+/* A triangulation of n random points of the disk of radius 0.4: inside
+   F_g for every genus (the sides' midpoints are at radius > 0.64), so no
+   point is on F_g's boundary and each is its own representative
+   (hdt_vertex_point gives it back bit for bit); dummies removed or kept. */
+static inline hdt_triangulation *small_disk_triangulation(int genus, size_t n, uint64_t seed, int remove_dummies) {
+  hdt_triangulation *t = NULL;
+  expect(hdt_create(&t, genus) == HDT_OK, "hdt_create: %s", hdt_last_error_message());
+  double *xy = (double *)malloc((2 * n + 1) * sizeof *xy);
+  ck_assert_ptr_nonnull(xy);
+  for (size_t i = 0; i < n;) {
+    const double x = 0.8 * uniform01(&seed) - 0.4, y = 0.8 * uniform01(&seed) - 0.4;
+    if (x * x + y * y >= 0.4 * 0.4) continue;
+    xy[2 * i] = x, xy[2 * i + 1] = y;
+    ++i;
+  }
+  expect(hdt_insert_many(t, xy, n, NULL) == HDT_OK, "hdt_insert_many: %s", hdt_last_error_message());
+  if (remove_dummies) expect(hdt_remove_dummies(t, NULL) == HDT_OK, "hdt_remove_dummies: %s", hdt_last_error_message());
+  free(xy);
+  return t;
+}
+
 #if defined(_POSIX_C_SOURCE) && _POSIX_C_SOURCE >= 199309L
 #include <time.h>
 /* Monotonic seconds, for the timings a test prints (never asserts). */

@@ -37,25 +37,6 @@ static void *need(void *p) {
   return p;
 }
 
-/* n random points of the disk of radius 0.4 (inside F_g for every genus,
-   so each point is its own representative: hdt_vertex_point gives it back
-   bit for bit), dummies removed or kept. */
-static hdt_triangulation *make(int g, size_t n, uint64_t seed, int remove_dummies) {
-  hdt_triangulation *t = NULL;
-  expect(hdt_create(&t, g) == HDT_OK, "hdt_create: %s", hdt_last_error_message());
-  double *xy = need(malloc((2 * n + 1) * sizeof *xy));
-  for (size_t i = 0; i < n;) {
-    const double x = 0.8 * uniform01(&seed) - 0.4, y = 0.8 * uniform01(&seed) - 0.4;
-    if (x * x + y * y >= 0.16) continue;
-    xy[2 * i] = x, xy[2 * i + 1] = y;
-    ++i;
-  }
-  expect(hdt_insert_many(t, xy, n, NULL) == HDT_OK, "hdt_insert_many: %s", hdt_last_error_message());
-  if (remove_dummies) expect(hdt_remove_dummies(t, NULL) == HDT_OK, "hdt_remove_dummies: %s", hdt_last_error_message());
-  free(xy);
-  return t;
-}
-
 #define OK(call) expect((call) == HDT_OK, "%s: %s", #call, hdt_last_error_message())
 
 static void read_dual(hdt_triangulation *t, dual *d) {
@@ -163,7 +144,7 @@ static const setup setups[] = {{2, 0, 0}, {2, 150, 1}, {3, 120, 0}, {3, 200, 1},
 #define SETUPS (sizeof setups / sizeof setups[0])
 
 static void load(size_t k, dual *d) {
-  read_dual(make(setups[k].g, setups[k].n, 0x5eed + k, setups[k].remove_dummies), d);
+  read_dual(small_disk_triangulation(setups[k].g, setups[k].n, 0x5eed + k, setups[k].remove_dummies), d);
 }
 
 /* ---- Cases ---- */
@@ -554,7 +535,7 @@ START_TEST(constructions_against_mpfr) {
   double worst_point = 0, worst_radius = 0, worst_length = 0, worst_corner_h = 0, worst_centre_h = 0;
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
     dual d;
-    read_dual(make(cases[k].g, cases[k].n, 77 + k, cases[k].remove_dummies), &d);
+    read_dual(small_disk_triangulation(cases[k].g, cases[k].n, 77 + k, cases[k].remove_dummies), &d);
     /* Only representatives that are the stored points (every user point
        here; the dummies' are checked by hdt_point_representative) give an
        exact input; faces with another vertex are left out. */
@@ -645,7 +626,7 @@ END_TEST
 /* The contract: NULL handle and count, a too small buffer (count set,
    nothing written), a dead vertex, the size query. */
 START_TEST(bad_arguments) {
-  hdt_triangulation *t = make(2, 30, 9, 1);
+  hdt_triangulation *t = small_disk_triangulation(2, 30, 9, 1);
   size_t n = 7;
   expect_failure(hdt_face_neighbours(NULL, NULL, NULL, 0, &n), HDT_EINVAL, "hdt_face_neighbours");
   expect_failure(hdt_face_neighbours(t, NULL, NULL, 0, NULL), HDT_EINVAL, "hdt_face_neighbours");

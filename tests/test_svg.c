@@ -16,27 +16,6 @@
 #define CANARY ((char)0x5a)
 #define LENGTH_SENTINEL ((size_t)987654321)
 
-/* n points of the disk of radius 0.4, inside F_g for every genus (the
-   sides' midpoints are at radius > 0.64, the vertices farther out), so that
-   none is on F_g's boundary. */
-static hdt_triangulation *make(int genus, size_t n, uint64_t seed, int remove_dummies) {
-  hdt_triangulation *t = NULL;
-  expect(hdt_create(&t, genus) == HDT_OK, "hdt_create: %s", hdt_last_error_message());
-  double *xy = malloc((2 * n + 1) * sizeof *xy);
-  ck_assert_ptr_nonnull(xy);
-  for (size_t i = 0; i < n;) {
-    const double x = 0.8 * (double)(rng_next(&seed) >> 11) * 0x1.0p-53 - 0.4;
-    const double y = 0.8 * (double)(rng_next(&seed) >> 11) * 0x1.0p-53 - 0.4;
-    if (x * x + y * y >= 0.4 * 0.4) continue;
-    xy[2 * i] = x, xy[2 * i + 1] = y;
-    ++i;
-  }
-  expect(hdt_insert_many(t, xy, n, NULL) == HDT_OK, "hdt_insert_many: %s", hdt_last_error_message());
-  if (remove_dummies) expect(hdt_remove_dummies(t, NULL) == HDT_OK, "hdt_remove_dummies: %s", hdt_last_error_message());
-  free(xy);
-  return t;
-}
-
 /* The picture, through the two-call pattern (asserts success; free it). */
 static char *picture(const hdt_triangulation *t, double size, const char *title, unsigned flags) {
   size_t length = LENGTH_SENTINEL;
@@ -104,7 +83,7 @@ static void expect_refused(hdt_status got, hdt_status want, const char *what, co
 }
 
 START_TEST(bad_arguments_write_nothing) {
-  hdt_triangulation *t = make(2, 30, 1, 1);
+  hdt_triangulation *t = small_disk_triangulation(2, 30, 1, 1);
   char buffer[256];
   size_t length;
 #define RESET() (memset(buffer, CANARY, sizeof buffer), length = LENGTH_SENTINEL)
@@ -185,7 +164,7 @@ END_TEST
 /* ---- The text ---- */
 
 START_TEST(length_and_determinism) {
-  hdt_triangulation *t = make(2, 80, 2, 1);
+  hdt_triangulation *t = small_disk_triangulation(2, 80, 2, 1);
   const size_t faces = hdt_face_count(t), vertices = hdt_vertex_count(t);
   uint32_t *before = malloc(3 * faces * sizeof *before);
   int32_t *before_tr = malloc(3 * faces * sizeof *before_tr);
@@ -228,7 +207,7 @@ START_TEST(length_and_determinism) {
 END_TEST
 
 START_TEST(title_is_escaped) {
-  hdt_triangulation *t = make(2, 10, 3, 1);
+  hdt_triangulation *t = small_disk_triangulation(2, 10, 3, 1);
   char *text = picture(t, 800, "a<b & c>\"d\" \xc3\xa9 x\x01y\xffz\tw", 0);
   expect(strstr(text, ">a&lt;b &amp; c&gt;&quot;d&quot; \xc3\xa9 x?y?z\tw</text>") != NULL,
          "the title is not escaped as expected:\n%s", strstr(text, "<text"));
@@ -252,7 +231,7 @@ START_TEST(title_is_escaped) {
   free(text);
   hdt_destroy(t);
 
-  hdt_triangulation *one = make(3, 1, 4, 0);
+  hdt_triangulation *one = small_disk_triangulation(3, 1, 4, 0);
   text = picture(one, 800, NULL, 0);
   expect(strstr(text, ">Delaunay triangulation of 1 point on M_3</text>") != NULL, "one point: %s",
          strstr(text, "<text"));
@@ -273,7 +252,7 @@ END_TEST
 /* ---- What it shows ---- */
 
 static void check_dots(int genus, size_t n, int remove_dummies) {
-  hdt_triangulation *t = make(genus, n, 5 + (uint64_t)genus, remove_dummies);
+  hdt_triangulation *t = small_disk_triangulation(genus, n, 5 + (uint64_t)genus, remove_dummies);
   const size_t vertices = hdt_vertex_count(t), dummies = hdt_dummy_count(t), users = vertices - dummies;
   /* The places of the dummies in the closed F_g. */
   long dummy_places = 0;
@@ -325,7 +304,7 @@ START_TEST(a_dot_per_place) {
 END_TEST
 
 START_TEST(size_scales_the_picture) {
-  hdt_triangulation *t = make(2, 50, 6, 1);
+  hdt_triangulation *t = small_disk_triangulation(2, 50, 6, 1);
   char *small = picture(t, 400, NULL, 0);
   expect(strstr(small, "width=\"400\" height=\"428\" viewBox=\"0 0 400 428\"") != NULL, "size 400: %.120s", small);
   expect(strstr(small, "<circle cx=\"200\" cy=\"228\" r=\"194\" ") != NULL, "size 400: the disk");
@@ -353,7 +332,7 @@ END_TEST
 /* Each face's copies meeting F_g are drawn: at least one piece per face. */
 START_TEST(every_face_is_drawn) {
   for (int genus = 2; genus <= 4; ++genus) {
-    hdt_triangulation *t = make(genus, 100, 7, 1);
+    hdt_triangulation *t = small_disk_triangulation(genus, 100, 7, 1);
     char *text = picture(t, 800, NULL, 0);
     const char *faces = strstr(text, "<path clip-path=\"url(#hdt-polygon)\"");
     expect(faces != NULL, "no faces path");
@@ -370,7 +349,7 @@ END_TEST
 /* ---- Out of memory ---- */
 
 static void enomem_child(void) {
-  hdt_triangulation *t = make(2, 20000, 8, 1);
+  hdt_triangulation *t = small_disk_triangulation(2, 20000, 8, 1);
   size_t needed = 0;
   if (hdt_svg(t, 800, NULL, 0, NULL, 0, &needed) != HDT_OK) _exit(2);
   char *text = malloc(needed + 1);
