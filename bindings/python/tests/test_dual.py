@@ -5,24 +5,16 @@ set, corner translations applied by hand, the cells' areas)."""
 
 import cmath
 import math
-import random
 
 import pytest
 
 import hdt
 from hdt import _arrays
 from hdt.picture import moebius
+from sample_points import square_points
 
 
-def points(count, seed, radius=0.4):
-    """count random points of the disk of the given radius (inside F_g)."""
-    generator = random.Random(seed)
-    found = []
-    while len(found) < count:
-        x, y = generator.uniform(-radius, radius), generator.uniform(-radius, radius)
-        if math.hypot(x, y) < radius:
-            found.append((x, y))
-    return found
+
 
 
 def distance(z, w):
@@ -34,7 +26,7 @@ def distance(z, w):
 def tri(request):
     genus, count, remove = request.param
     with hdt.Triangulation(genus) as t:
-        t.insert_many(points(count, genus))
+        t.insert_many(square_points(count, genus, 0.4))
         if remove:
             t.remove_dummies()
         yield t
@@ -184,7 +176,7 @@ def test_copies_under_n_cover_the_voronoi_edges():
     from hdt.picture import Scene, _apply, geodesic_points
 
     with hdt.Triangulation(2) as t:
-        t.insert_many(points(20, 2, radius=0.8))
+        t.insert_many(square_points(20, 2, 0.8))
         t.remove_dummies()
         scene = Scene(t, voronoi=True)
     matrices = [tuple(m) for m in scene.neighbours]

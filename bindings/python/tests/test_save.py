@@ -3,37 +3,29 @@ objects, pickling and copies, all through libhdt's format (hdt_save)."""
 
 import copy
 import io
-import math
 import pickle
-import random
 import struct
 import zlib
 
 import pytest
 
 import hdt
+from sample_points import as_list, random_points
 
 HEADER, VERTEX_BYTES = 44, 25
 
 
-def random_points(count, seed, radius=0.95):
-    generator = random.Random(seed)
-    points = []
-    for _ in range(count):
-        r, a = radius * math.sqrt(generator.random()), 2 * math.pi * generator.random()
-        points.append((r * math.cos(a), r * math.sin(a)))
-    return points
 
 
-def as_lists(value):
-    return value.tolist() if hasattr(value, "tolist") else [list(v) if isinstance(v, tuple) else v for v in value]
+
+
 
 
 def state(t):
     """Everything the faces and vertices lists show, as plain lists."""
     faces, vertices = t.faces(), t.vertices()
-    return (t.genus, t.vertex_id_bound, as_lists(faces.vertices), as_lists(faces.translations),
-            as_lists(vertices.ids), as_lists(vertices.points), as_lists(vertices.dummy))
+    return (t.genus, t.vertex_id_bound, as_list(faces.vertices), as_list(faces.translations),
+            as_list(vertices.ids), as_list(vertices.points), as_list(vertices.dummy))
 
 
 def built(genus=2, count=200, seed=1, remove_every=4, dummies=False):
@@ -62,7 +54,7 @@ def test_bytes_round_trip_keeps_ids_faces_and_later_behaviour(genus, dummies, ar
     u.validate()
     t.validate()
     more = random_points(50, seed=99, radius=0.8)
-    assert as_lists(t.insert_many(more)) == as_lists(u.insert_many(more))
+    assert as_list(t.insert_many(more)) == as_list(u.insert_many(more))
     assert state(u) == state(t)
 
 

@@ -2,9 +2,7 @@
 well-formed, the file is the text, options and errors map as documented, and
 the text is what hdt-triangulate --svg draws for the same points."""
 
-import math
 import os
-import random
 import subprocess
 import xml.etree.ElementTree as ElementTree
 
@@ -12,28 +10,21 @@ import pytest
 
 import hdt
 from hdt import picture
+from sample_points import square_points
 
 SVG = "{http://www.w3.org/2000/svg}"
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPOSITORY = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
 
 
-def points(count, genus, seed, radius=0.9):
-    """count random points of the disk of the given radius."""
-    generator = random.Random(seed)
-    found = []
-    while len(found) < count:
-        x, y = generator.uniform(-radius, radius), generator.uniform(-radius, radius)
-        if math.hypot(x, y) < radius:
-            found.append((x, y))
-    return found
+
 
 
 @pytest.fixture(scope="module")
 def small():
     """A genus-2 triangulation of 60 points inside F_2, with its dummies."""
     with hdt.Triangulation(2) as t:
-        t.insert_many(points(60, 2, 4, radius=0.4))
+        t.insert_many(square_points(60, 4, 0.4))
         yield t
 
 
@@ -174,7 +165,7 @@ CASES = [
 @pytest.mark.parametrize("genus,count,remove,neighbours", CASES)
 def test_to_svg_is_the_cli_picture(tmp_path, genus, count, remove, neighbours):
     tool = cli_path()
-    xy = points(count, genus, 10 * genus + count)
+    xy = square_points(count, 10 * genus + count, 0.9)
     data = tmp_path / "points.txt"
     data.write_text("".join(f"{x!r} {y!r}\n" for x, y in xy))  # repr: read back to the same doubles
     options = ["--genus", str(genus)] + ([] if remove else ["--keep-dummies"]) + (["--neighbours"] if neighbours else [])

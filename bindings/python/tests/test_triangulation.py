@@ -4,7 +4,6 @@ kind of bad input, both array paths, and the handle's lifetime."""
 
 import gc
 import math
-import random
 import threading
 import weakref
 
@@ -13,6 +12,7 @@ import pytest
 import hdt
 from hdt import _arrays
 from hdt import triangulation as triangulation_module
+from sample_points import as_list, random_points
 
 HAVE_NUMPY = _arrays.numpy is not None
 if HAVE_NUMPY:
@@ -41,18 +41,10 @@ def orientation(p, q, r):
     return (q - p).real * (r - p).imag - (q - p).imag * (r - p).real
 
 
-def random_points(count, seed, radius=0.95):
-    """Points uniform in the Euclidean disk of the given radius (many outside F_g)."""
-    generator = random.Random(seed)
-    points = []
-    for _ in range(count):
-        r, a = radius * math.sqrt(generator.random()), 2 * math.pi * generator.random()
-        points.append((r * math.cos(a), r * math.sin(a)))
-    return points
 
 
-def as_list(value):
-    return value.tolist() if hasattr(value, "tolist") else [list(v) if isinstance(v, tuple) else v for v in value]
+
+
 
 
 def canonical_corners(t, faces, points):
