@@ -33,8 +33,7 @@ void CentreIndex::add(int32_t id, double p1, double p2, double error) {
   if (id < 0 || !(error >= 0 && error <= max_error_)) return;
   int64_t i, j;
   if (!cell_of(p1, p2, &i, &j)) return;
-  if (std::size_t(id) >= entries_.size()) entries_.resize(std::size_t(id) + 1);
-  Entry &e = entries_[id];
+  Entry &e = entries_.at(std::size_t(id));
   if (e.error >= 0) {
     if (e.error <= error) return;
     int64_t oi = 0, oj = 0;
@@ -65,7 +64,7 @@ int32_t CentreIndex::find(double p1, double p2, double error) const {
     for (int64_t j = j0; j <= j1; ++j) {
       auto it = cells_.find(key(i, j));
       if (it == cells_.end()) continue;
-      const Entry &e = entries_[it->second];
+      const Entry &e = entries_.get(std::size_t(it->second));
       if (std::abs(p1 - e.p1) <= error + e.error && std::abs(p2 - e.p2) <= error + e.error) return it->second;
     }
   return -1;

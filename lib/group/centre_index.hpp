@@ -22,6 +22,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "group/paged_vector.hpp"
 #include "group/presentation.hpp"
 
 namespace hdt::group {
@@ -48,7 +49,7 @@ class CentreIndex {
   static uint64_t key(int64_t i, int64_t j) { return (uint64_t(i) << 32) ^ uint64_t(uint32_t(j)); }
 
   double cell_, max_error_;
-  std::vector<Entry> entries_;  // by id
+  PagedVector<Entry> entries_;  // by id
   std::unordered_map<uint64_t, int32_t> cells_;
 };
 

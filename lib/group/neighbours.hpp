@@ -14,6 +14,8 @@
 // L = 2..2g-1 and 4g for L = 2g.
 #pragma once
 
+#include <cstdint>
+
 #include "group/presentation.hpp"
 
 namespace hdt::group {
@@ -21,12 +23,17 @@ namespace hdt::group {
 // (4g-1)^2, without enumerating.
 std::size_t neighbour_count(const Presentation &p);
 
-// The canonical word of the element with translation id `id` < |N|; costs
-// O(g^2 log g) (it sorts one word length's elements). Throws
-// std::invalid_argument when id >= |N|.
+// The canonical word of the element with translation id `id` < |N|, in
+// time linear in its length (the order within a length is known in closed
+// form, below). Throws std::invalid_argument when id >= |N|.
 Word neighbour_word(const Presentation &p, std::size_t id);
 
-// All of N in id order.
+// The translation id of w when w is the canonical word of an element of N,
+// else -1; linear in |w|, no arithmetic.
+int64_t neighbour_id(const Presentation &p, const Word &w);
+
+// All of N in id order, by enumerating and sorting each length's elements:
+// the reference the closed forms are tested against.
 std::vector<Word> neighbour_words(const Presentation &p);
 
 }  // namespace hdt::group

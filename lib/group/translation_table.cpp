@@ -17,32 +17,45 @@ std::size_t TranslationTable::WordHash::operator()(const Word &w) const noexcept
   return std::size_t(h);
 }
 
-TranslationTable::TranslationTable(const Presentation &p) : presentation_(p), centres_(p) {
-  for (const Word &w : neighbour_words(p)) add_canonical(w);
-  neighbour_count_ = words_.size();
+TranslationTable::TranslationTable(const Presentation &p)
+    : presentation_(p), neighbour_count_(group::neighbour_count(p)), centres_(p) {
+  if (neighbour_count_ >= std::size_t(INT32_MAX)) throw std::length_error("translation ids of N exceed int32");
+}
+
+const Word &TranslationTable::word(TranslationId id) const {
+  if (id < 0 || std::size_t(id) >= size()) throw std::out_of_range("translation id " + std::to_string(id) + " unknown");
+  if (std::size_t(id) >= neighbour_count_) return extra_words_[std::size_t(id) - neighbour_count_];
+  auto it = neighbour_words_.find(id);
+  if (it == neighbour_words_.end()) it = neighbour_words_.emplace(id, neighbour_word(presentation_, std::size_t(id))).first;
+  return it->second;
+}
+
+TranslationId TranslationTable::find_canonical(const Word &w) const {
+  if (const int64_t id = neighbour_id(presentation_, w); id >= 0) return TranslationId(id);
+  auto it = ids_.find(w);
+  return it == ids_.end() ? -1 : it->second;
 }
 
 TranslationId TranslationTable::add_canonical(const Word &canonical) {
-  auto it = ids_.find(canonical);
-  if (it != ids_.end()) return it->second;
-  if (words_.size() >= std::size_t(INT32_MAX)) throw std::length_error("translation table is full");
-  const auto id = static_cast<TranslationId>(words_.size());
-  words_.push_back(canonical);
-  moebius_.emplace_back();
-  lorentz_.emplace_back();
-  has_matrices_.push_back(false);
+  if (const TranslationId id = find_canonical(canonical); id >= 0) return id;
+  if (size() >= std::size_t(INT32_MAX)) throw std::length_error("translation table is full");
+  const auto id = static_cast<TranslationId>(size());
+  extra_words_.push_back(canonical);
   ids_.emplace(canonical, id);
   return id;
 }
 
-void TranslationTable::compute_matrices(TranslationId id) {
-  accurate_matrices(presentation_, words_[id], &moebius_[id], &lorentz_[id]);
-  has_matrices_[id] = true;
+const TranslationTable::Matrices &TranslationTable::compute_matrices(TranslationId id) {
+  const Word &w = word(id);  // checks the id
+  Matrices &m = matrices_.at(std::size_t(id));
+  accurate_matrices(presentation_, w, &m.moebius, &m.lorentz);
+  m.known = true;
   // Column 0 is the centre h(O), each entry within 2^-66 L_00 before its
   // rounding (u relative).
-  const Lorentz<double> &L = lorentz_[id];
+  const Lorentz<double> &L = m.lorentz;
   centres_.add(id, L.m[1][0], L.m[2][0],
                0x1p-53 * std::max(std::abs(L.m[1][0]), std::abs(L.m[2][0])) + 0x1p-64 * L.m[0][0]);
+  return m;
 }
 
 TranslationId TranslationTable::intern(const Word &w) {
@@ -90,7 +103,7 @@ void TranslationTable::product_centre(TranslationId a, TranslationId b, double *
 }
 
 TranslationId TranslationTable::inverse_interned(TranslationId a) {
-  if (std::size_t(a) >= inverses_.size()) inverses_.resize(words_.size(), -1);
+  if (std::size_t(a) >= inverses_.size()) inverses_.resize(std::size_t(a) + 1, -1);
   if (inverses_.at(a) < 0) {
     // The centre of a^-1 is L_a^-1 e_0 = (L_00, -L_01, -L_02) (L^-1 = J L^T J,
     // J = diag(1, -1, -1)): entries of L_a, each within u relative plus
@@ -103,7 +116,7 @@ TranslationId TranslationTable::inverse_interned(TranslationId a) {
       b = intern(presentation_.inverse(word(a)));
       centres_.add(b, p1, p2, error);
     }
-    if (std::size_t(b) >= inverses_.size()) inverses_.resize(words_.size(), -1);
+    if (std::size_t(b) >= inverses_.size()) inverses_.resize(std::size_t(b) + 1, -1);
     inverses_[a] = b;
     inverses_[b] = a;
   }

@@ -9,6 +9,11 @@
 // its tile centre, computed from the factors' double matrices, when the
 // centre index knows it (centre_index.hpp); only the others have their word
 // canonicalised.
+//
+// N itself is not stored: its ids and words are known in closed form
+// (neighbours.hpp), and matrices are kept in pages that follow the ids in
+// use, so a table costs memory for what it meets, not (4g-1)^2 words
+// (hundreds of megabytes at genus 128).
 #pragma once
 
 #include <cstdint>
@@ -18,6 +23,7 @@
 #include "group/centre_index.hpp"
 #include "group/lorentz.hpp"
 #include "group/moebius.hpp"
+#include "group/paged_vector.hpp"
 #include "group/presentation.hpp"
 
 namespace hdt::group {
@@ -29,15 +35,12 @@ class TranslationTable {
   explicit TranslationTable(const Presentation &p);
 
   const Presentation &presentation() const { return presentation_; }
-  std::size_t size() const { return words_.size(); }
+  std::size_t size() const { return neighbour_count_ + extra_words_.size(); }
   std::size_t neighbour_count() const { return neighbour_count_; }
 
   // The id of a word already known to be canonical, or -1 when the table
   // has not met it (no arithmetic).
-  TranslationId find_canonical(const Word &w) const {
-    auto it = ids_.find(w);
-    return it == ids_.end() ? -1 : it->second;
-  }
+  TranslationId find_canonical(const Word &w) const;
   // The id of a word the caller knows to be canonical (a copy of another
   // table's), added if new, without recomputing its canonical form.
   TranslationId intern_canonical(const Word &w) { return add_canonical(w); }
@@ -56,40 +59,44 @@ class TranslationTable {
     return inverse_interned(a);
   }
 
-  const Word &word(TranslationId id) const { return words_.at(id); }
+  // The canonical word of id (words of N are spelled on first request).
+  const Word &word(TranslationId id) const;
   // Matrices accurate to the last bit (accurate_matrices: Lorentz entries
   // within u |L_ij| + 2^-66 L_00), computed on first use (building them for
   // all of N up front would cost seconds at large genus).
-  const Moebius<double> &moebius(TranslationId id) {
-    if (!has_matrices_.at(id)) compute_matrices(id);
-    return moebius_[id];
-  }
-  const Lorentz<double> &lorentz(TranslationId id) {
-    if (!has_matrices_.at(id)) compute_matrices(id);
-    return lorentz_[id];
-  }
+  const Moebius<double> &moebius(TranslationId id) { return matrices(id).moebius; }
+  const Lorentz<double> &lorentz(TranslationId id) { return matrices(id).lorentz; }
 
  private:
+  struct Matrices {
+    Moebius<double> moebius;
+    Lorentz<double> lorentz;
+    bool known = false;
+  };
+  const Matrices &matrices(TranslationId id) {
+    const Matrices &m = matrices_.get(std::size_t(id));
+    if (m.known) return m;
+    return compute_matrices(id);
+  }
   struct WordHash {
     std::size_t operator()(const Word &w) const noexcept;
   };
   TranslationId add_canonical(const Word &canonical);
   TranslationId compose_cached(TranslationId a, TranslationId b);
   TranslationId inverse_interned(TranslationId a);
-  void compute_matrices(TranslationId id);
+  const Matrices &compute_matrices(TranslationId id);
   // The centre of a * b from the factors' matrices, and its error in each
   // coordinate.
   void product_centre(TranslationId a, TranslationId b, double *p1, double *p2, double *error);
 
   Presentation presentation_;
   std::size_t neighbour_count_ = 0;
-  std::vector<Word> words_;
-  std::vector<Moebius<double>> moebius_;
-  std::vector<Lorentz<double>> lorentz_;
-  std::vector<bool> has_matrices_;
-  std::unordered_map<Word, TranslationId, WordHash> ids_;
+  std::vector<Word> extra_words_;  // ids from |N| on
+  mutable std::unordered_map<TranslationId, Word> neighbour_words_;  // the words of N asked for
+  PagedVector<Matrices> matrices_;
+  std::unordered_map<Word, TranslationId, WordHash> ids_;  // ids from |N| on
   std::unordered_map<uint64_t, TranslationId> products_;
-  std::vector<TranslationId> inverses_;  // -1: not known yet
+  std::vector<TranslationId> inverses_;  // -1: not known yet; as long as the largest id met
   CentreIndex centres_;  // the ids whose matrices are computed, and products named by word
 };
 

@@ -23,8 +23,8 @@ Surface::Surface(int genus)
                              std::to_string(k));
     const auto L = group::accurate_lorentz(presentation_, group::Word{k});
     side_normals_.push_back({1.0 - L.m[0][0], L.m[1][0], L.m[2][0]});  // O - g_k(O), as <N, .> coefficients
-    exact_generators_.push_back(std::make_unique<group::ExactLorentz>(group::exact_generator(field_, k)));
   }
+  exact_generators_.resize(std::size_t(n));
   const exact::CyclotomicField &K = field_.cyclotomic();
   const Cyclotomic s = K.sin_2pi(1);
   sin2_ = K.mul(s, s);
@@ -46,6 +46,12 @@ Surface::Surface(int genus)
     const long last = long(std::floor((theta + beta + M_PI) / width));
     for (long j = first; j <= last; ++j) sides_by_sector_[std::size_t(((j % sectors) + sectors) % sectors)].push_back(k);
   }
+}
+
+const group::ExactLorentz &Surface::exact_generator(int k) const {
+  std::unique_ptr<group::ExactLorentz> &slot = exact_generators_.at(std::size_t(k));
+  if (!slot) slot = std::make_unique<group::ExactLorentz>(group::exact_generator(field_, k));
+  return *slot;
 }
 
 const std::vector<int> &Surface::sides_near(double angle) const {

@@ -73,7 +73,9 @@ class Surface {
   // point with hyperboloid vector N lies (+1 beyond it).
   const std::array<double, 3> &side_normal(int k) const { return side_normals_.at(std::size_t(k)); }
   // g_k's exact Lorentz matrix, times sin(pi/4g)^2 (group/exact_lorentz.hpp).
-  const group::ExactLorentz &exact_generator(int k) const { return *exact_generators_.at(std::size_t(k)); }
+  // Built on first use: 4g dense matrices over K_g cost gigabytes at genus
+  // 1024, and only the exact stage of a side test needs them.
+  const group::ExactLorentz &exact_generator(int k) const;
   // The sides whose line may hold or have beyond it a disk point of
   // argument `angle` (radians, atan2's): every other side has the point
   // strictly on F_g's side. Half the sides at genus 2, one or two at large
@@ -107,7 +109,7 @@ class Surface {
   const exact::Field &field_;
   group::TranslationTable table_;
   std::vector<std::array<double, 3>> side_normals_;
-  std::vector<std::unique_ptr<group::ExactLorentz>> exact_generators_;
+  mutable std::vector<std::unique_ptr<group::ExactLorentz>> exact_generators_;  // null until used
   std::vector<std::vector<int>> sides_by_sector_;  // sides_near, by sector of angle
   double half_trace_;
   exact::Cyclotomic sin2_;

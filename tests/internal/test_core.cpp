@@ -1,4 +1,5 @@
 // Internal tests of the C++ core (Check, compiled as C++).
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <random>
@@ -54,6 +55,43 @@ Word random_word(std::mt19937 &rng, int letters, int max_length) {
 }
 
 }  // namespace
+
+// The closed forms of N (neighbour_word, neighbour_id) against the sorted
+// enumeration, which also yields canonical words (checked above); and
+// every other word of length <= 2g is no id: a run spelled the long way, a
+// non-run, a letter out of range.
+START_TEST(neighbour_closed_forms_match_enumeration) {
+  for (int g = 2; g <= 12; ++g) {
+    const Presentation p(g);
+    const std::vector<Word> all = group::neighbour_words(p);
+    ck_assert_uint_eq(all.size(), group::neighbour_count(p));
+    for (std::size_t id = 0; id < all.size(); ++id) {
+      ck_assert_msg(group::neighbour_word(p, id) == all[id], "g=%d id %zu", g, id);
+      ck_assert_int_eq(group::neighbour_id(p, all[id]), int64_t(id));
+    }
+    const int h = p.half_relator(), n = p.letter_count();
+    int canonical_half_runs = 0;
+    for (Letter y = 0; y < n; ++y)
+      for (int s : {p.relator_step(), p.inverse_relator_step()}) {
+        Word w(h);
+        for (int i = 0; i < h; ++i) w[i] = Letter((y + int64_t(i) * s) % n);
+        const int64_t id = group::neighbour_id(p, w);
+        if (id >= 0) ++canonical_half_runs, ck_assert(all[std::size_t(id)] == w);
+        else ck_assert(std::find(all.begin(), all.end(), w) == all.end());
+      }
+    ck_assert_int_eq(canonical_half_runs, n);
+    ck_assert_int_eq(group::neighbour_id(p, Word{0, 1}), -1);
+    ck_assert_int_eq(group::neighbour_id(p, Word{0, Letter(n)}), -1);
+    ck_assert_int_eq(group::neighbour_id(p, p.relator()), -1);
+  }
+  // Large genus: the round trip on a sample, without the enumeration.
+  const Presentation p(1024);
+  for (std::size_t id = 0; id < group::neighbour_count(p); id += 9973) {
+    const Word w = group::neighbour_word(p, id);
+    ck_assert_int_eq(group::neighbour_id(p, w), int64_t(id));
+  }
+}
+END_TEST
 
 START_TEST(relation_is_identity_in_mpfr) {
   using T = exact::mp_real<100>;
@@ -327,6 +365,7 @@ int main(void) {
     tcase_add_test(tc, dehn_output_is_reduced_and_equal);
     tcase_add_test(tc, dehn_is_not_geodesic_but_canonical_is);
     tcase_add_test(tc, neighbour_ids_are_fixed_and_tables_agree);
+    tcase_add_test(tc, neighbour_closed_forms_match_enumeration);
     tcase_add_test(tc, products_named_by_centre_are_canonical);
     tcase_add_test(tc, table_matrices_match_word_products);
     tcase_add_test(tc, side_pairing_maps_paired_sides);
