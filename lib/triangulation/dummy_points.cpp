@@ -18,6 +18,7 @@
 #include <map>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 
 #include "surface/exact_polygon.hpp"
 #include "surface/polygon.hpp"
@@ -164,6 +165,11 @@ class DummyBuilder {
 
   // Inserts the point (x, y), given in the canonical frame of face `from`.
   void insert(double x, double y, uint32_t from) {
+    if (!std::isfinite(x) || !std::isfinite(y) || x * x + y * y >= 1)
+      throw std::length_error("dummy points: at genus " + std::to_string(t_.genus_) +
+                              " the double-precision circumcentre of a refinement face is lost to cancellation "
+                              "(hyperboloid coordinates near cosh(2R)); dummy points are built up to genus " +
+                              std::to_string(kDummyGenusMax));
     Triangulation::Walk w{};
     for (int attempt = 0;; ++attempt) {
       if (attempt > 64) throw std::logic_error("dummy points: cannot place a refinement point");
@@ -301,6 +307,10 @@ std::shared_ptr<const DummyTemplate> cached_dummy_template(int genus) {
 }
 
 std::shared_ptr<const DummyTemplate> build_dummy_points(Triangulation &t) {
+  if (t.genus() > kDummyGenusMax)
+    throw std::length_error("dummy points are built up to genus " + std::to_string(kDummyGenusMax) +
+                            " (HDT_CREATE_GENUS_MAX), not " + std::to_string(t.genus()) +
+                            ": beyond it their double-precision construction loses every bit");
   // Built outside the lock: two threads may both build one, the first stays.
   std::shared_ptr<const DummyTemplate> built = DummyBuilder(t).build();
   std::lock_guard<std::mutex> lock(cache_mutex);
