@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <type_traits>
 #include <vector>
 
 #include "exact/multiprecision.hpp"
@@ -43,10 +44,38 @@ template <class T>
 class GeneratorSet {
  public:
   explicit GeneratorSet(const Presentation &p) : presentation_(p) {
-    for (Letter k = 0; k < p.letter_count(); ++k) {
-      moebius_.push_back(generator<T>(p, k));
-      lorentz_.push_back(Lorentz<T>::from_moebius(moebius_.back()));
+    if constexpr (std::is_same_v<T, double>) {
+      for (Letter k = 0; k < p.letter_count(); ++k) moebius_.push_back(generator<T>(p, k));
+    } else {
+      // In multiprecision the trigonometry is most of the cost (15% of a
+      // first hdt_create at genus 32): A and |B| once, and cos(a pi/2g)
+      // for a = 0..g only; every angle k pi/2g folds onto one of them with
+      // a sign, sin(a pi/2g) = cos((g - a) pi/2g), as in surface/polygon.cpp.
+      // The folded arguments are at most pi/2, so each value is at least as
+      // accurate as generator<T>'s.
+      using std::cos;
+      using std::sqrt;
+      const int g = p.genus();
+      const T pi = exact::pi<T>();
+      const T A = half_trace<T>(g);
+      const T modulus = sqrt(A * A - T(1));
+      std::vector<T> c(std::size_t(g) + 1);
+      for (int a = 0; a <= g; ++a) c[a] = a == g ? T(0) : modulus * cos(pi * T(a) / T(2 * g));
+      for (Letter k = 0; k < p.letter_count(); ++k) {
+        // k pi/2g = q pi/2 + a pi/2g, 0 <= a < g; the quadrant q gives the signs.
+        const int q = k / g, a = k % g;
+        const T &ca = c[a], &sa = c[g - a];  // |B| cos, |B| sin of a pi/2g
+        Complex<T> b;
+        switch (q) {
+          case 0: b = {ca, sa}; break;
+          case 1: b = {-sa, ca}; break;
+          case 2: b = {-ca, -sa}; break;
+          default: b = {sa, -ca}; break;
+        }
+        moebius_.push_back(Moebius<T>{{A, T(0)}, b});
+      }
     }
+    for (const Moebius<T> &m : moebius_) lorentz_.push_back(Lorentz<T>::from_moebius(m));
   }
 
   const Presentation &presentation() const { return presentation_; }

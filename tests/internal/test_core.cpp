@@ -93,6 +93,24 @@ START_TEST(neighbour_closed_forms_match_enumeration) {
 }
 END_TEST
 
+// The multiprecision generator sets fold the angles onto [0, pi/2] (a sign
+// per quadrant): each generator agrees with the direct formula.
+START_TEST(folded_generator_sets_match_the_formula) {
+  using T = exact::mp_real<40>;
+  for (int g : {2, 3, 5, 32}) {
+    const Presentation p(g);
+    const group::GeneratorSet<T> set(p);
+    const T A = group::half_trace<T>(g);
+    for (Letter k = 0; k < p.letter_count(); ++k) {
+      const group::Moebius<T> direct = group::generator<T>(p, k), folded = set.moebius(k);
+      const T gap = abs(direct.a.re - folded.a.re) + abs(direct.a.im - folded.a.im) + abs(direct.b.re - folded.b.re) +
+                    abs(direct.b.im - folded.b.im);
+      ck_assert_msg(gap < T(1e-36) * A, "g=%d letter %d", g, k);
+    }
+  }
+}
+END_TEST
+
 START_TEST(relation_is_identity_in_mpfr) {
   using T = exact::mp_real<100>;
   for (int g = 2; g <= 32; ++g) {
@@ -358,6 +376,7 @@ END_TEST
 
 int main(void) {
   return run_suite("core", 300, [](TCase *tc) {
+    tcase_add_test(tc, folded_generator_sets_match_the_formula);
     tcase_add_test(tc, relation_is_identity_in_mpfr);
     tcase_add_test(tc, relation_is_exact_in_the_field);
     tcase_add_test(tc, relation_in_plain_double_within_its_error_bound);
