@@ -77,7 +77,7 @@ static void usage(FILE *f) {
           "FILE:LINE: message for a bad line), 2 bad usage.\n"
           "\n"
           "See hdt-triangulate(1).\n",
-          HDT_GENUS_MAX);
+          HDT_CREATE_GENUS_MAX);
 }
 
 /* ---- Options ---- */
@@ -154,8 +154,8 @@ static int apply_option(options *o, const option_spec *spec, const char *shown, 
   unsigned long long number = 0;
   switch (spec->id) {
     case OPT_GENUS:
-      if (!parse_number(value, 2, HDT_GENUS_MAX, &number))
-        return usage_error("%s needs an integer from 2 to %d", shown, HDT_GENUS_MAX);
+      if (!parse_number(value, 2, HDT_CREATE_GENUS_MAX, &number))
+        return usage_error("%s needs an integer from 2 to %d", shown, HDT_CREATE_GENUS_MAX);
       o->genus = (int)number;
       o->genus_given = 1;
       return 1;

@@ -198,8 +198,9 @@ Triangulation read_saved(const unsigned char *bytes, std::size_t size) {
   if (version != kVersion)
     bad(8, "format version " + std::to_string(version) + "; this libhdt reads version " + std::to_string(kVersion));
   const uint32_t genus = r.u32();
-  if (genus < 2 || genus > HDT_GENUS_MAX)
-    bad(12, "genus " + std::to_string(genus) + " is not in 2.." + std::to_string(HDT_GENUS_MAX));
+  // Only a genus hdt_create accepts can have been saved.
+  if (genus < 2 || genus > HDT_CREATE_GENUS_MAX)
+    bad(12, "genus " + std::to_string(genus) + " is not in 2.." + std::to_string(HDT_CREATE_GENUS_MAX));
   const uint32_t W = r.u32(), V = r.u32(), F = r.u32();
   Snapshot s;
   s.genus = int(genus);
