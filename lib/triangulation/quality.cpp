@@ -1,0 +1,56 @@
+// Face shapes in double. The angle at a corner is read where it is exact to
+// compute: with that corner moved to the origin, the geodesics from it are
+// diameters, and the hyperbolic angle is the Euclidean one between them
+// (the disk model is conformal). The law of cosines would cancel badly on
+// small faces.
+#include "triangulation/quality.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hdt::triangulation {
+
+namespace {
+
+// (z - w) / (1 - conj(w) z): the isometry taking w to 0, applied to z (as
+// in constructions.cpp; only the direction of the result is used here).
+Point to_origin(const Point &w, const Point &z) {
+  const double nr = z.re - w.re, ni = z.im - w.im;
+  const double dr = 1 - (w.re * z.re + w.im * z.im), di = -(w.re * z.im - w.im * z.re);
+  return {nr * dr + ni * di, ni * dr - nr * di};  // times a positive factor
+}
+
+double angle_at(const Point &p, const Point &q, const Point &r) {
+  const Point a = to_origin(p, q), b = to_origin(p, r);
+  return std::atan2(std::fabs(a.re * b.im - a.im * b.re), a.re * b.re + a.im * b.im);
+}
+
+}  // namespace
+
+FaceShape face_shape(const Triangulation &tri, const Face &f) {
+  const Point p[3] = {face_corner(tri, f, 0), face_corner(tri, f, 1), face_corner(tri, f, 2)};
+  const double shortest = std::min({distance(p[0], p[1]), distance(p[1], p[2]), distance(p[2], p[0])});
+  return {circumcircle(p[0], p[1], p[2]), shortest};
+}
+
+double smallest_angle(const Triangulation &tri, const Face &f) {
+  const Point p[3] = {face_corner(tri, f, 0), face_corner(tri, f, 1), face_corner(tri, f, 2)};
+  return std::min({angle_at(p[0], p[1], p[2]), angle_at(p[1], p[2], p[0]), angle_at(p[2], p[0], p[1])});
+}
+
+Quality quality(const Triangulation &tri) {
+  Quality q{std::numeric_limits<double>::infinity(), 0, 0, std::numeric_limits<double>::infinity()};
+  for (const Face &f : tri.faces()) {
+    const FaceShape s = face_shape(tri, f);
+    q.min_angle = std::min(q.min_angle, smallest_angle(tri, f));
+    q.max_ratio = std::max(q.max_ratio, s.circle.radius / s.shortest_edge);
+    q.max_radius = std::max(q.max_radius, s.circle.radius);
+    // Every edge of the surface is an edge of some face, and the closest
+    // pair of vertices is joined by a Delaunay edge.
+    q.min_edge = std::min(q.min_edge, s.shortest_edge);
+  }
+  return q;
+}
+
+}  // namespace hdt::triangulation

@@ -1,0 +1,39 @@
+// Delaunay refinement on M_g: Steiner points at the circumcentres of bad
+// faces, largest circumradius first, until every face has circumradius
+// <= max_radius and radius-edge ratio <= max_ratio, or a cap on the number
+// of points is reached. docs/refinement.md proves that it terminates for
+// max_ratio >= 1 (a packing argument on the closed surface).
+#pragma once
+
+#include <cstddef>
+
+#include "triangulation/triangulation.hpp"
+
+namespace hdt::triangulation {
+
+struct RefineBounds {
+  double max_radius;  // > 0; +infinity: no bound
+  double max_ratio;   // >= 1; +infinity: no bound
+};
+
+// The relative margin by which refine() tightens both bounds before it
+// compares them with values computed in double, so that the bounds hold for
+// the exact faces too: the constructions' relative error is below 1e-12 on
+// faces of circumradius above 1e-3 (docs/refinement.md).
+constexpr double kRefineMargin = 1e-9;
+
+// Whether the face breaks the bounds, as refine() decides it.
+bool is_bad(const Triangulation &tri, const Face &f, const RefineBounds &b, double *radius);
+
+struct Refined {
+  std::size_t added;  // Steiner points inserted
+  std::size_t unmet;  // faces still breaking the bounds (0 unless the cap stopped it)
+};
+// Steiner points are ordinary user vertices, inserted through
+// Triangulation::insert (exact predicates; the triangulation stays exactly
+// Delaunay). Throws before changing anything only on bad bounds
+// (std::invalid_argument); std::bad_alloc later keeps the points inserted
+// so far, in a valid triangulation.
+Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points);
+
+}  // namespace hdt::triangulation
