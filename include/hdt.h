@@ -486,6 +486,60 @@ HDT_API hdt_status hdt_voronoi_edges(const hdt_triangulation *t, double *xy, siz
 HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, double *xy, size_t capacity,
                                     size_t *count) HDT_NOEXCEPT;
 
+/* ---- Refinement, epsilon-nets and quality (symbol version HDT_0.4) ----
+   Meshes of controlled size and shape (docs/refinement.md, with the proof
+   that the refinement terminates and how many points it can add).
+   Sizes are hyperbolic (curvature -1) and computed in double from the
+   stored points, like hdt_voronoi_vertices' radii and hdt_edges' lengths. */
+
+/* Delaunay refinement: inserts Steiner points, the circumcentres of the
+   faces that break a bound (largest circumradius first), until every face
+   has hyperbolic circumradius <= max_radius and radius-edge ratio
+   (circumradius / shortest edge) <= max_ratio, or max_points points were
+   added in this call. A Steiner point is the circumcentre rounded to
+   double, inserted as hdt_insert would (a user vertex, the next id): the
+   result is exactly the Delaunay triangulation of its vertices. The bounds
+   are decided in double with both tightened by a relative 1e-9, more than
+   the computation's error, so that they also hold for the exact faces.
+   Dummy vertices take part like any vertex and stay (hdt_remove_dummies
+   afterwards may break the bounds around the ones it removes); on a new
+   triangulation the call meshes M_g uniformly from its dummies alone.
+   max_radius: > 0, +INFINITY for no bound on the size (every face's is
+   below sys(M_g)/4 anyway); max_ratio: >= 1, +INFINITY for no bound on
+   the shape (the proof needs >= 1). *added (may be NULL) receives the
+   number of points inserted, *unmet (may be NULL) the number of faces that
+   still break a bound: 0 when the call completed, > 0 only when the cap
+   stopped it, the triangulation then valid and Delaunay with the points
+   added so far (HDT_OK either way: check *unmet). HDT_EINVAL, nothing
+   changed, for t NULL, max_radius NaN or <= 0, max_ratio NaN or < 1.
+   HDT_ENOMEM when memory runs out: the points inserted so far stay, in a
+   valid triangulation. Time: about N log N for N points added (measured
+   in docs/refinement.md). */
+HDT_API hdt_status hdt_refine(hdt_triangulation *t, double max_radius, double max_ratio, size_t max_points,
+                              size_t *added, size_t *unmet) HDT_NOEXCEPT;
+
+/* An epsilon-net of M_g: hdt_refine(t, epsilon, INFINITY, ...), so that
+   every point of M_g is within epsilon of a vertex (covering). Each point
+   it adds is at distance >= epsilon (within a relative 1e-9) from every
+   other vertex, so the vertices are pairwise epsilon apart (packing) when
+   those present before were: on a new triangulation, for epsilon up to
+   the dummies' spacing (docs/refinement.md). hdt_quality checks both.
+   HDT_EINVAL, nothing changed, for epsilon NaN, infinite or <= 0; the
+   rest as hdt_refine. */
+HDT_API hdt_status hdt_epsilon_net(hdt_triangulation *t, double epsilon, size_t max_points, size_t *added,
+                                   size_t *unmet) HDT_NOEXCEPT;
+
+/* Quality statistics over all faces, each output may be NULL:
+   *min_angle the smallest hyperbolic angle (radians), *max_ratio the
+   largest radius-edge ratio, *max_radius the largest circumradius (the
+   covering radius: every point of M_g is within it of a vertex),
+   *min_edge the shortest edge (the packing distance: the distance on M_g
+   of the two closest vertices). The triangulation is an epsilon-net when
+   *max_radius <= epsilon <= *min_edge. HDT_EINVAL for t NULL. Time:
+   linear in the faces. */
+HDT_API hdt_status hdt_quality(const hdt_triangulation *t, double *min_angle, double *max_ratio,
+                               double *max_radius, double *min_edge) HDT_NOEXCEPT;
+
 #ifdef __cplusplus
 }
 #endif
