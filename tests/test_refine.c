@@ -1,0 +1,346 @@
+/* Refinement, epsilon-nets and quality statistics (HDT_0.4). The bounds
+   are checked independently of the library's constructions: every face's
+   circumradius, edge lengths and angles are recomputed here in 200-bit
+   MPFR on the hyperboloid (Lorentz products, no disk isometries as the
+   library uses) from the corners hdt_face_points gives. Those corners are
+   rounded images of the exact ones, within 5e-14 in the disk (measured by
+   test_dual); on the faces met here (circumradius above 0.01) that moves a
+   radius or a length by a relative 1e-11 at most, so the checks allow a
+   relative TOL = 1e-10, below the library's own margin of 1e-9: a face
+   left above a bound by more than that fails. */
+#define _DEFAULT_SOURCE
+
+#include <mpfr.h>
+
+#include "hdt_test.h"
+
+#define PREC 200
+#define TOL 1e-10
+#define OK(call) expect((call) == HDT_OK, "%s: %s", #call, hdt_last_error_message())
+
+static void *need(void *p) {
+  ck_assert_ptr_nonnull(p);
+  return p;
+}
+
+/* ---- 200-bit shapes on the hyperboloid ---- */
+
+typedef struct shape {
+  double radius, shortest, angle; /* circumradius, shortest edge, smallest angle */
+} shape;
+
+/* The hyperboloid point ((1 + |z|^2), 2x, 2y) / (1 - |z|^2) of z = x + iy. */
+static void lift(double x, double y, mpfr_t P[3]) {
+  mpfr_t n, d;
+  mpfr_inits2(PREC, n, d, (mpfr_ptr)0);
+  mpfr_set_d(n, x, MPFR_RNDN), mpfr_sqr(n, n, MPFR_RNDN);
+  mpfr_set_d(d, y, MPFR_RNDN), mpfr_sqr(d, d, MPFR_RNDN);
+  mpfr_add(n, n, d, MPFR_RNDN);       /* |z|^2 */
+  mpfr_ui_sub(d, 1, n, MPFR_RNDN);    /* 1 - |z|^2 */
+  mpfr_add_ui(P[0], n, 1, MPFR_RNDN), mpfr_div(P[0], P[0], d, MPFR_RNDN);
+  mpfr_set_d(P[1], 2 * x, MPFR_RNDN), mpfr_div(P[1], P[1], d, MPFR_RNDN);
+  mpfr_set_d(P[2], 2 * y, MPFR_RNDN), mpfr_div(P[2], P[2], d, MPFR_RNDN);
+  mpfr_clears(n, d, (mpfr_ptr)0);
+}
+
+/* <A, B> = a_t b_t - a_u b_u - a_v b_v. */
+static void lorentz(mpfr_t r, mpfr_t A[3], mpfr_t B[3]) {
+  mpfr_t s;
+  mpfr_init2(s, PREC);
+  mpfr_mul(r, A[0], B[0], MPFR_RNDN);
+  mpfr_mul(s, A[1], B[1], MPFR_RNDN), mpfr_sub(r, r, s, MPFR_RNDN);
+  mpfr_mul(s, A[2], B[2], MPFR_RNDN), mpfr_sub(r, r, s, MPFR_RNDN);
+  mpfr_clear(s);
+}
+
+/* The face with corners xy[0..5]: the circle through three points of the
+   hyperboloid lies in a plane n . X = c; its centre C is the point with
+   <C, X> proportional to n . X, C = (n_t, -n_u, -n_v) normalised, and
+   cosh R = <C, P_0>. Edges: cosh d = <P, Q>; angles by the law of cosines. */
+static shape face_shape(const double *xy) {
+  mpfr_t P[3][3], D1[3], D2[3], C[3], c[3], ch[3], sh[3], a, b;
+  for (int i = 0; i < 3; ++i) {
+    mpfr_inits2(PREC, P[i][0], P[i][1], P[i][2], D1[i], D2[i], C[i], c[i], ch[i], sh[i], (mpfr_ptr)0);
+    lift(xy[2 * i], xy[2 * i + 1], P[i]);
+  }
+  mpfr_inits2(PREC, a, b, (mpfr_ptr)0);
+  for (int k = 0; k < 3; ++k) mpfr_sub(D1[k], P[1][k], P[0][k], MPFR_RNDN), mpfr_sub(D2[k], P[2][k], P[0][k], MPFR_RNDN);
+  for (int k = 0; k < 3; ++k) { /* the Euclidean cross product D1 x D2 */
+    const int p = (k + 1) % 3, q = (k + 2) % 3;
+    mpfr_mul(a, D1[p], D2[q], MPFR_RNDN), mpfr_mul(b, D1[q], D2[p], MPFR_RNDN);
+    mpfr_sub(C[k], a, b, MPFR_RNDN);
+  }
+  mpfr_neg(C[1], C[1], MPFR_RNDN), mpfr_neg(C[2], C[2], MPFR_RNDN);
+  lorentz(a, C, C);
+  expect(mpfr_sgn(a) > 0, "a face's circle is not a hyperbolic circle");
+  mpfr_sqrt(a, a, MPFR_RNDN);
+  lorentz(b, C, P[0]);
+  mpfr_div(b, b, a, MPFR_RNDN);
+  mpfr_abs(b, b, MPFR_RNDN); /* C up to sign */
+  mpfr_acosh(b, b, MPFR_RNDN);
+  shape s;
+  s.radius = mpfr_get_d(b, MPFR_RNDN);
+  /* side i is opposite corner i: ch = cosh, sh = sinh of its length */
+  s.shortest = INFINITY;
+  for (int i = 0; i < 3; ++i) {
+    lorentz(ch[i], P[(i + 1) % 3], P[(i + 2) % 3]);
+    mpfr_sqr(sh[i], ch[i], MPFR_RNDN), mpfr_sub_ui(sh[i], sh[i], 1, MPFR_RNDN), mpfr_sqrt(sh[i], sh[i], MPFR_RNDN);
+    mpfr_acosh(a, ch[i], MPFR_RNDN);
+    s.shortest = fmin(s.shortest, mpfr_get_d(a, MPFR_RNDN));
+  }
+  s.angle = INFINITY;
+  for (int i = 0; i < 3; ++i) { /* cos A_i = (cosh b cosh c - cosh a) / (sinh b sinh c) */
+    const int p = (i + 1) % 3, q = (i + 2) % 3;
+    mpfr_mul(a, ch[p], ch[q], MPFR_RNDN), mpfr_sub(a, a, ch[i], MPFR_RNDN);
+    mpfr_mul(b, sh[p], sh[q], MPFR_RNDN), mpfr_div(a, a, b, MPFR_RNDN);
+    mpfr_acos(a, a, MPFR_RNDN);
+    s.angle = fmin(s.angle, mpfr_get_d(a, MPFR_RNDN));
+  }
+  for (int i = 0; i < 3; ++i) mpfr_clears(P[i][0], P[i][1], P[i][2], D1[i], D2[i], C[i], c[i], ch[i], sh[i], (mpfr_ptr)0);
+  mpfr_clears(a, b, (mpfr_ptr)0);
+  return s;
+}
+
+/* The extremes over all faces, recomputed here. */
+static shape extremes(const hdt_triangulation *t, double *max_ratio) {
+  size_t F = 0;
+  OK(hdt_face_points(t, NULL, 0, &F));
+  double *xy = need(malloc(6 * F * sizeof *xy));
+  OK(hdt_face_points(t, xy, F, &F));
+  shape e = {0, INFINITY, INFINITY};
+  *max_ratio = 0;
+  for (size_t f = 0; f < F; ++f) {
+    const shape s = face_shape(xy + 6 * f);
+    e.radius = fmax(e.radius, s.radius), e.shortest = fmin(e.shortest, s.shortest), e.angle = fmin(e.angle, s.angle);
+    *max_ratio = fmax(*max_ratio, s.radius / s.shortest);
+  }
+  free(xy);
+  return e;
+}
+
+/* Every face within the bounds (up to TOL), the triangulation valid and
+   Euler's formula. Returns the extremes. */
+static shape check_refined(const hdt_triangulation *t, double max_radius, double max_ratio) {
+  OK(hdt_validate(t));
+  const int g = hdt_genus(t);
+  expect(hdt_face_count(t) == 2 * (hdt_vertex_count(t) + 2 * (size_t)g - 2), "Euler: F = %zu, V = %zu",
+         hdt_face_count(t), hdt_vertex_count(t));
+  double ratio;
+  const shape e = extremes(t, &ratio);
+  expect(e.radius <= max_radius * (1 + TOL), "a circumradius %.17g above the bound %.17g", e.radius, max_radius);
+  expect(ratio <= max_ratio * (1 + TOL), "a radius-edge ratio %.17g above the bound %.17g", ratio, max_ratio);
+  return e;
+}
+
+/* The packing bound of docs/refinement.md: vertices pairwise delta apart
+   on M_g number at most 2 (g - 1) / (cosh(delta / 2) - 1). */
+static double packing_bound(int g, double delta) { return 2.0 * (g - 1) / (cosh(delta / 2) - 1); }
+
+static double min_edge(const hdt_triangulation *t) {
+  double e;
+  OK(hdt_quality(t, NULL, NULL, NULL, &e));
+  return e;
+}
+
+/* n random points of the disk of radius 0.4 (inside F_g). */
+static void insert_random(hdt_triangulation *t, size_t n, uint64_t seed) {
+  double *xy = need(malloc(2 * n * sizeof *xy));
+  for (size_t i = 0; i < n;) {
+    const double x = 0.8 * uniform01(&seed) - 0.4, y = 0.8 * uniform01(&seed) - 0.4;
+    if (x * x + y * y >= 0.16) continue;
+    xy[2 * i] = x, xy[2 * i + 1] = y;
+    ++i;
+  }
+  OK(hdt_insert_many(t, xy, n, NULL));
+  free(xy);
+}
+
+/* ---- The cases ---- */
+
+START_TEST(uniform_mesh_from_the_dummies) {
+  const struct {
+    int g;
+    double radius, ratio;
+  } cases[] = {{2, 0.3, INFINITY}, {2, 0.15, 1.5}, {3, 0.25, 2}, {2, 0.5, 1}, {5, 0.3, 1.2}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+    hdt_triangulation *t;
+    OK(hdt_create(&t, cases[k].g));
+    const double d0 = min_edge(t);
+    const size_t V0 = hdt_vertex_count(t), bound0 = hdt_vertex_id_bound(t);
+    size_t added = 99, unmet = 99;
+    OK(hdt_refine(t, cases[k].radius, cases[k].ratio, SIZE_MAX, &added, &unmet));
+    expect(unmet == 0, "case %zu: %zu faces unmet", k, unmet);
+    expect(hdt_vertex_count(t) == V0 + added, "case %zu: %zu vertices, %zu added", k, hdt_vertex_count(t), added);
+    expect(added > 0, "case %zu: nothing added", k);
+    for (size_t v = bound0; v < hdt_vertex_id_bound(t); ++v)
+      expect(hdt_vertex_is_dummy(t, (uint32_t)v) == 0, "Steiner point %zu is not a user vertex", v);
+    const shape e = check_refined(t, cases[k].radius, cases[k].ratio);
+    /* the proof's packing: pairwise at least min(r_max, d0) apart (the
+       shortest edge, up to TOL), hence at most the packing bound */
+    const double delta = fmin(cases[k].radius, d0);
+    expect(e.shortest >= delta * (1 - 1e-8), "case %zu: two vertices %.17g apart, below %.17g", k, e.shortest,
+           delta);
+    expect((double)hdt_vertex_count(t) <= packing_bound(cases[k].g, delta), "case %zu: %zu vertices", k,
+           hdt_vertex_count(t));
+    /* a second call has nothing to do */
+    OK(hdt_refine(t, cases[k].radius, cases[k].ratio, SIZE_MAX, &added, &unmet));
+    expect(added == 0 && unmet == 0, "case %zu: a second call added %zu", k, added);
+    hdt_destroy(t);
+  }
+}
+END_TEST
+
+START_TEST(point_set_refined) {
+  for (int g = 2; g <= 3; ++g) {
+    hdt_triangulation *t;
+    OK(hdt_create(&t, g));
+    insert_random(t, 150, 7 + (uint64_t)g);
+    OK(hdt_remove_dummies(t, NULL));
+    const double d0 = min_edge(t);
+    size_t added, unmet;
+    OK(hdt_refine(t, 0.2, 1.0, SIZE_MAX, &added, &unmet));
+    expect(unmet == 0, "genus %d: %zu unmet", g, unmet);
+    const shape e = check_refined(t, 0.2, 1.0);
+    expect(e.shortest >= fmin(0.2, d0) * (1 - 1e-8), "genus %d: shortest edge %.17g", g, e.shortest);
+    /* ratio <= 1 means every angle >= 30 degrees in the Euclidean limit;
+       hyperbolic angles are smaller than Euclidean ones, by the area */
+    expect(e.angle > 0.45, "genus %d: an angle of %.17g radians", g, e.angle);
+    hdt_destroy(t);
+  }
+}
+END_TEST
+
+START_TEST(quality_against_mpfr) {
+  hdt_triangulation *t;
+  OK(hdt_create(&t, 2));
+  insert_random(t, 80, 3);
+  for (int step = 0; step < 2; ++step) {
+    double angle, ratio, radius, edge, mratio;
+    OK(hdt_quality(t, &angle, &ratio, &radius, &edge));
+    const shape e = extremes(t, &mratio);
+    expect(fabs(radius - e.radius) <= 1e-11 * e.radius, "max radius %.17g, MPFR %.17g", radius, e.radius);
+    expect(fabs(edge - e.shortest) <= 1e-11 * e.shortest, "min edge %.17g, MPFR %.17g", edge, e.shortest);
+    expect(fabs(ratio - mratio) <= 1e-11 * mratio, "max ratio %.17g, MPFR %.17g", ratio, mratio);
+    expect(fabs(angle - e.angle) <= 1e-10, "min angle %.17g, MPFR %.17g", angle, e.angle);
+    OK(hdt_refine(t, 0.3, 1.4, SIZE_MAX, NULL, NULL));
+  }
+  OK(hdt_quality(t, NULL, NULL, NULL, NULL));
+  expect(hdt_quality(NULL, NULL, NULL, NULL, NULL) == HDT_EINVAL, "hdt_quality(NULL)");
+  hdt_destroy(t);
+}
+END_TEST
+
+START_TEST(cap_is_honoured) {
+  hdt_triangulation *t;
+  OK(hdt_create(&t, 2));
+  const size_t V0 = hdt_vertex_count(t);
+  size_t added = 99, unmet = 0;
+  OK(hdt_refine(t, 0.2, 1.2, 7, &added, &unmet));
+  expect(added == 7 && unmet > 0, "added %zu, unmet %zu", added, unmet);
+  expect(hdt_vertex_count(t) == V0 + 7, "%zu vertices", hdt_vertex_count(t));
+  OK(hdt_validate(t));
+  /* unmet counts the faces above a bound, recomputed here */
+  size_t F = 0;
+  OK(hdt_face_points(t, NULL, 0, &F));
+  double *xy = need(malloc(6 * F * sizeof *xy));
+  OK(hdt_face_points(t, xy, F, &F));
+  size_t above = 0, near = 0;
+  for (size_t f = 0; f < F; ++f) {
+    const shape s = face_shape(xy + 6 * f);
+    const double worst = fmax(s.radius / 0.2, s.radius / (1.2 * s.shortest));
+    above += worst > 1 + 1e-8;
+    near += fabs(worst - 1) <= 1e-8;
+  }
+  free(xy);
+  expect(near == 0 && above == unmet, "unmet %zu, faces above a bound %zu", unmet, above);
+  /* max_points 0 adds nothing and counts */
+  size_t unmet2;
+  OK(hdt_refine(t, 0.2, 1.2, 0, &added, &unmet2));
+  expect(added == 0 && unmet2 == unmet, "added %zu, unmet %zu then %zu", added, unmet, unmet2);
+  /* and the rest completes it */
+  OK(hdt_refine(t, 0.2, 1.2, SIZE_MAX, &added, &unmet));
+  expect(unmet == 0, "unmet %zu", unmet);
+  check_refined(t, 0.2, 1.2);
+  hdt_destroy(t);
+}
+END_TEST
+
+/* Everything observable of the faces and vertices, as bytes. */
+static unsigned char *observe(const hdt_triangulation *t, size_t *size) {
+  size_t F = 0, V = 0;
+  OK(hdt_faces(t, NULL, NULL, 0, &F));
+  OK(hdt_vertices(t, NULL, NULL, NULL, 0, &V));
+  *size = F * 3 * (sizeof(uint32_t) + sizeof(int32_t)) + V * (sizeof(uint32_t) + 2 * sizeof(double));
+  unsigned char *b = need(malloc(*size));
+  uint32_t *fv = (uint32_t *)b;
+  int32_t *ft = (int32_t *)(fv + 3 * F);
+  uint32_t *ids = (uint32_t *)(ft + 3 * F);
+  double *vxy = need(malloc(2 * V * sizeof *vxy));
+  OK(hdt_faces(t, fv, ft, F, &F));
+  OK(hdt_vertices(t, ids, vxy, NULL, V, &V));
+  memcpy(ids + V, vxy, 2 * V * sizeof *vxy);
+  free(vxy);
+  return b;
+}
+
+START_TEST(bad_arguments_change_nothing) {
+  hdt_triangulation *t;
+  OK(hdt_create(&t, 3));
+  insert_random(t, 30, 11);
+  size_t n0, n1;
+  unsigned char *before = observe(t, &n0);
+  const double bad_radius[] = {NAN, 0, -0.0, -1, -INFINITY};
+  const double bad_ratio[] = {NAN, 0.999999, 0, -1, -INFINITY};
+  size_t added = 12345, unmet = 12345;
+  for (size_t i = 0; i < 5; ++i) {
+    expect(hdt_refine(t, bad_radius[i], 2, SIZE_MAX, &added, &unmet) == HDT_EINVAL, "radius %g", bad_radius[i]);
+    expect(hdt_refine(t, 0.2, bad_ratio[i], SIZE_MAX, &added, &unmet) == HDT_EINVAL, "ratio %g", bad_ratio[i]);
+    expect(hdt_epsilon_net(t, bad_radius[i], SIZE_MAX, &added, &unmet) == HDT_EINVAL, "epsilon %g", bad_radius[i]);
+  }
+  expect(hdt_epsilon_net(t, INFINITY, SIZE_MAX, &added, &unmet) == HDT_EINVAL, "epsilon inf");
+  expect(strlen(hdt_last_error_message()) > 0, "no message");
+  expect(added == 12345 && unmet == 12345, "outputs written on failure");
+  expect(hdt_refine(NULL, 0.2, 2, SIZE_MAX, NULL, NULL) == HDT_EINVAL, "NULL handle");
+  expect(hdt_epsilon_net(NULL, 0.2, SIZE_MAX, NULL, NULL) == HDT_EINVAL, "NULL handle");
+  /* no bound at all, or max_points 0: nothing to do */
+  OK(hdt_refine(t, INFINITY, INFINITY, SIZE_MAX, &added, &unmet));
+  expect(added == 0 && unmet == 0, "added %zu, unmet %zu", added, unmet);
+  OK(hdt_refine(t, 0.1, 1, 0, &added, &unmet));
+  expect(added == 0 && unmet > 0, "added %zu, unmet %zu", added, unmet);
+  unsigned char *after = observe(t, &n1);
+  expect(n0 == n1 && memcmp(before, after, n0) == 0, "the triangulation changed");
+  free(before), free(after);
+  hdt_destroy(t);
+}
+END_TEST
+
+START_TEST(epsilon_nets) {
+  const struct {
+    int g;
+    double eps;
+  } cases[] = {{2, 0.2}, {2, 0.1}, {3, 0.15}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+    hdt_triangulation *t;
+    OK(hdt_create(&t, cases[k].g));
+    const double eps = cases[k].eps;
+    expect(min_edge(t) >= eps, "the dummies of genus %d are %.17g apart", cases[k].g, min_edge(t));
+    size_t added, unmet;
+    OK(hdt_epsilon_net(t, eps, SIZE_MAX, &added, &unmet));
+    expect(unmet == 0, "unmet %zu", unmet);
+    const shape e = check_refined(t, eps, INFINITY);
+    expect(e.radius <= eps * (1 + TOL), "covering radius %.17g", e.radius);
+    expect(e.shortest >= eps * (1 - 1e-8), "packing: two vertices %.17g apart", e.shortest);
+    double radius, edge;
+    OK(hdt_quality(t, NULL, NULL, &radius, &edge));
+    expect(radius <= eps && edge >= eps * (1 - 1e-8), "hdt_quality: %.17g, %.17g", radius, edge);
+    expect((double)hdt_vertex_count(t) <= packing_bound(cases[k].g, eps), "%zu vertices", hdt_vertex_count(t));
+    hdt_destroy(t);
+  }
+}
+END_TEST
+
+int main(void) {
+  const TTest *const tests[] = {uniform_mesh_from_the_dummies, point_set_refined,           quality_against_mpfr,
+                                cap_is_honoured,               bad_arguments_change_nothing, epsilon_nets};
+  return run_tests("refine", tests, sizeof tests / sizeof tests[0]);
+}
