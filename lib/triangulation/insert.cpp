@@ -32,7 +32,18 @@ uint32_t Triangulation::vertex_at(const Walk &at) const {
 Triangulation::Inserted Triangulation::insert(double x, double y) {
   const predicates::Representative r = predicates::representative(*kernel_, x, y);
   jump_near(x, y, r.translation);
-  const Walk at = walk_from_hint({x, y, r.translation, -1});
+  return insert_walked(x, y, r.translation, walk_from_hint({x, y, r.translation, -1}));
+}
+
+Triangulation::Inserted Triangulation::insert_near(double x, double y, uint32_t near) {
+  if (near >= vertices_.size() || !vertices_[near].alive())
+    throw std::invalid_argument("insert_near: vertex " + std::to_string(near) + " is not live");
+  const predicates::Representative r = predicates::representative(*kernel_, x, y);
+  last_vertex_ = near;  // the walk starts around it
+  return insert_walked(x, y, r.translation, walk_from_hint({x, y, r.translation, -1}));
+}
+
+Triangulation::Inserted Triangulation::insert_walked(double x, double y, TranslationId home, const Walk &at) {
   const uint32_t existing = vertex_at(at);
   if (existing != kNone) {
     last_vertex_ = existing;
@@ -41,7 +52,7 @@ Triangulation::Inserted Triangulation::insert(double x, double y) {
     --dummies_;
     return {existing, false};
   }
-  return {insert_located(x, y, r.translation, false, at), false};
+  return {insert_located(x, y, home, false, at), false};
 }
 
 uint32_t Triangulation::insert_located(double x, double y, TranslationId home, bool dummy, const Walk &at) {

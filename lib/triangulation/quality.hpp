@@ -17,6 +17,8 @@ struct FaceShape {
   double shortest_edge; // hyperbolic length
 };
 FaceShape face_shape(const Triangulation &tri, const Face &f);
+// The hyperbolic length of the shortest side of the triangle p[0..2].
+double shortest_edge(const Point p[3]);
 
 // The smallest of the face's three hyperbolic angles, in radians.
 double smallest_angle(const Triangulation &tri, const Face &f);

@@ -16,17 +16,20 @@
 
 namespace hdt::triangulation {
 
-bool is_bad(const Triangulation &tri, const Face &f, const RefineBounds &b, double *radius) {
-  const FaceShape s = face_shape(tri, f);
-  *radius = s.circle.radius;
-  const double r = s.circle.radius * (1 + kRefineMargin);
-  return r > b.max_radius || r > b.max_ratio * s.shortest_edge;
+bool is_bad(const Triangulation &tri, const Face &f, const RefineBounds &b, Circle *circle) {
+  const Point p[3] = {face_corner(tri, f, 0), face_corner(tri, f, 1), face_corner(tri, f, 2)};
+  *circle = circumcircle(p[0], p[1], p[2]);
+  const double r = circle->radius * (1 + kRefineMargin);
+  if (r > b.max_radius) return true;
+  // No shape bound (epsilon-nets): no edge lengths needed.
+  return b.max_ratio != HUGE_VAL && r > b.max_ratio * shortest_edge(p);
 }
 
 namespace {
 
 struct Entry {
   double radius;
+  Point centre;
   uint32_t slot;
   std::array<uint32_t, 3> v;
   std::array<TranslationId, 3> t;
@@ -45,8 +48,8 @@ Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points
   std::priority_queue<Entry> queue;
   auto offer = [&](uint32_t slot) {
     const Face &f = tri.faces()[slot];
-    double radius;
-    if (is_bad(tri, f, b, &radius)) queue.push({radius, slot, f.v, f.t});
+    Circle c;
+    if (is_bad(tri, f, b, &c)) queue.push({c.radius, c.centre, slot, f.v, f.t});
   };
   for (uint32_t s = 0; s < tri.faces().size(); ++s) offer(s);
 
@@ -59,10 +62,11 @@ Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points
     const Face &f = tri.faces()[e.slot];
     if (f.v != e.v || f.t != e.t) continue;  // replaced since it was queued
     // The rounded circumcentre of the face's canonical copy: insert() finds
-    // its representative and decides everything with exact predicates.
-    const Point c = face_shape(tri, f).circle.centre;
+    // its representative and decides everything with exact predicates; its
+    // walk starts at the face's corner, a circumradius away.
+    const Point c = e.centre;
     const std::size_t before = tri.vertices().size();
-    const Triangulation::Inserted in = tri.insert(c.re, c.im);
+    const Triangulation::Inserted in = tri.insert_near(c.re, c.im, f.v[0]);
     if (in.existed || in.vertex < before)
       throw std::logic_error("refine: a circumcentre fell on a vertex (its circle is not empty)");
     ++out.added;
@@ -70,8 +74,8 @@ Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points
     for (const StarEntry &s : star) offer(s.face);
   }
   if (!queue.empty()) {
-    double radius;
-    for (const Face &f : tri.faces()) out.unmet += is_bad(tri, f, b, &radius) ? 1 : 0;
+    Circle c;
+    for (const Face &f : tri.faces()) out.unmet += is_bad(tri, f, b, &c) ? 1 : 0;
   }
   return out;
 }

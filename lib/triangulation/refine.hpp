@@ -7,6 +7,7 @@
 
 #include <cstddef>
 
+#include "triangulation/constructions.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
@@ -23,7 +24,7 @@ struct RefineBounds {
 constexpr double kRefineMargin = 1e-9;
 
 // Whether the face breaks the bounds, as refine() decides it.
-bool is_bad(const Triangulation &tri, const Face &f, const RefineBounds &b, double *radius);
+bool is_bad(const Triangulation &tri, const Face &f, const RefineBounds &b, Circle *circle);
 
 struct Refined {
   std::size_t added;  // Steiner points inserted

@@ -54,6 +54,11 @@ class Triangulation {
   };
   // Throws std::domain_error unless (x, y) is a finite point of the open disk.
   Inserted insert(double x, double y);
+  // The same, with the walk starting around the live vertex `near` instead
+  // of at the nearest of a random sample: for a caller that knows a vertex
+  // close to the point (refinement: a corner of the face whose circumcentre
+  // it inserts). Throws std::invalid_argument for a dead or unknown vertex.
+  Inserted insert_near(double x, double y, uint32_t near);
   // All points are checked before any is inserted; vertices may be null.
   void insert_many(const double *xy, std::size_t n, uint32_t *vertices);
   // False, with nothing changed, when the result would break the invariant.
@@ -170,6 +175,8 @@ class Triangulation {
   // Bowyer-Watson insertion of the point (x, y) with home `home`, located in
   // `at`. Returns the new vertex id.
   uint32_t insert_located(double x, double y, TranslationId home, bool dummy, const Walk &at);
+  // insert()'s end, once the point is located: an existing vertex, or a new one.
+  Inserted insert_walked(double x, double y, TranslationId home, const Walk &at);
   // The vertex of `at`'s face at the walked-to point, if it is one of its
   // corners (kNone otherwise).
   uint32_t vertex_at(const Walk &at) const;
