@@ -31,7 +31,7 @@ struct Refined {
   std::size_t unmet;  // faces still breaking the bounds (0 unless the cap stopped it)
 };
 // Steiner points are ordinary user vertices, inserted through
-// Triangulation::insert (exact predicates; the triangulation stays exactly
+// Triangulation::insert_near (exact predicates; the triangulation stays exactly
 // Delaunay). Throws before changing anything only on bad bounds
 // (std::invalid_argument); std::bad_alloc later keeps the points inserted
 // so far, in a valid triangulation.
