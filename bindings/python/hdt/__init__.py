@@ -42,7 +42,7 @@ from .group import (
 )
 from .library import abi_version, version
 from .surface import point_representative, polygon_side_midpoint, polygon_vertex, systole
-from .triangulation import Edges, Faces, Location, Neighbours, Star, Triangulation, Vertices, Voronoi
+from .triangulation import Edges, Faces, Location, Neighbours, Quality, Refined, Star, Triangulation, Vertices, Voronoi
 
 #: The version of these bindings (the library's is version()).
 __version__ = "0.4.0"
@@ -61,6 +61,8 @@ __all__ = [
     "NotSupported",
     "OutOfDomain",
     "OutOfMemory",
+    "Quality",
+    "Refined",
     "Star",
     "Status",
     "Triangulation",

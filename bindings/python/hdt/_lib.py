@@ -107,6 +107,9 @@ PROTOTYPES = {
     "hdt_voronoi_vertices": (_status, (_handle, _double_p, _double_p, _size, _size_p)),
     "hdt_voronoi_edges": (_status, (_handle, _double_p, _size, _size_p)),
     "hdt_voronoi_cell": (_status, (_handle, _uint32, _double_p, _size, _size_p)),
+    "hdt_refine": (_status, (_handle, _double, _double, _size, _size_p, _size_p)),
+    "hdt_epsilon_net": (_status, (_handle, _double, _size, _size_p, _size_p)),
+    "hdt_quality": (_status, (_handle, _double_p, _double_p, _double_p, _double_p)),
 }
 
 

@@ -32,6 +32,9 @@ Adjacency, edges and the Voronoi diagram: :meth:`neighbours`, :meth:`star`,
 :meth:`edges`, :meth:`face_points`, :meth:`voronoi` and :meth:`voronoi_cell`
 (the C functions of symbol version HDT_0.4; docs/dual.md of the source tree).
 
+Refinement: :meth:`refine`, :meth:`epsilon_net` and :meth:`quality`
+(docs/refinement.md of the source tree).
+
 Arrays: with NumPy installed, :meth:`insert_many`, :meth:`vertices`,
 :meth:`faces` and the methods above return NumPy arrays; without it, lists
 (see each method).
@@ -39,6 +42,8 @@ Arrays: with NumPy installed, :meth:`insert_many`, :meth:`vertices`,
 
 import collections
 import ctypes
+import math
+import numbers
 import os
 import threading
 import weakref
@@ -108,6 +113,25 @@ centres (F, 2): the hyperbolic circumcentre of each face's canonical copy
 to the right face's centre placed beside it."""
 
 #: :meth:`Triangulation.locate`: a face index and the translation of its copy.
+#: :meth:`Triangulation.refine` and :meth:`Triangulation.epsilon_net`.
+Refined = collections.namedtuple("Refined", "added unmet")
+Refined.__doc__ = """What a refinement did: added, the points it inserted; unmet, the
+faces still breaking a bound (0 unless max_points stopped it)."""
+Refined.added.__doc__ = "The number of points inserted."
+Refined.unmet.__doc__ = "The faces still breaking a bound: 0 when the refinement completed."
+
+#: :meth:`Triangulation.quality`.
+Quality = collections.namedtuple("Quality", "min_angle max_ratio max_radius min_edge")
+Quality.__doc__ = """The shape of the faces: min_angle, the smallest hyperbolic angle
+(radians); max_ratio, the largest circumradius / shortest edge; max_radius,
+the largest circumradius (the covering radius); min_edge, the shortest
+edge (the distance of the two closest vertices). An epsilon-net has
+max_radius <= eps <= min_edge."""
+Quality.min_angle.__doc__ = "The smallest hyperbolic angle of a face, in radians."
+Quality.max_ratio.__doc__ = "The largest radius-edge ratio of a face."
+Quality.max_radius.__doc__ = "The largest circumradius: every point of M_g is that close to a vertex."
+Quality.min_edge.__doc__ = "The shortest edge: the distance on M_g of the two closest vertices."
+
 Location = collections.namedtuple("Location", "face translation")
 Location.__doc__ = """Where a point lies: the face (an index into faces()) and
 the translation id h such that the point is in the closed triangle
@@ -373,6 +397,53 @@ class Triangulation:
         with self._lock:
             check(lib.hdt_remove_dummies(self._live("remove_dummies"), ctypes.byref(remaining)))
         return remaining.value
+
+    # ---- refinement ----
+
+    def refine(self, max_radius=math.inf, max_ratio=math.inf, max_points=None):
+        """Delaunay refinement (hdt_refine): inserts circumcentres of the
+        faces breaking a bound, largest first, until every face has
+        hyperbolic circumradius <= max_radius and circumradius / shortest
+        edge <= max_ratio (>= 1; inf: no bound), or max_points points were
+        added (None: no cap). Returns a :class:`Refined` (added, unmet);
+        unmet > 0 only when the cap stopped it, the triangulation valid.
+        :class:`hdt.InvalidArgument`, nothing changed, for a bound that is
+        NaN, max_radius <= 0 or max_ratio < 1. docs/refinement.md of the
+        source tree proves that it terminates."""
+        return self._refine("refine", lambda h, cap, a, u: lib.hdt_refine(
+            h, c_coordinate(max_radius, "max_radius"), c_coordinate(max_ratio, "max_ratio"), cap, a, u), max_points)
+
+    def epsilon_net(self, epsilon, max_points=None):
+        """Refines into an epsilon-net (hdt_epsilon_net): every point of M_g
+        within epsilon of a vertex, and the points added at least epsilon
+        from every vertex (the whole set is an epsilon-net when the vertices
+        before were epsilon apart: on a new triangulation, for epsilon up to
+        the dummies' spacing, 0.77 at genus 2). Returns a :class:`Refined`;
+        :meth:`quality` checks the result."""
+        return self._refine("epsilon_net", lambda h, cap, a, u: lib.hdt_epsilon_net(
+            h, c_coordinate(epsilon, "epsilon"), cap, a, u), max_points)
+
+    def _refine(self, what, call, max_points):
+        if max_points is None:
+            cap = ctypes.c_size_t(-1).value
+        else:
+            if not isinstance(max_points, numbers.Integral) or isinstance(max_points, bool):
+                raise TypeError(f"max_points must be an int or None, not {type(max_points).__name__}")
+            if max_points < 0:
+                raise InvalidArgument(f"{what}: max_points must be >= 0")
+            cap = min(int(max_points), ctypes.c_size_t(-1).value)
+        added, unmet = ctypes.c_size_t(), ctypes.c_size_t()
+        with self._lock:
+            check(call(self._live(what), cap, ctypes.byref(added), ctypes.byref(unmet)))
+        return Refined(added.value, unmet.value)
+
+    def quality(self):
+        """The shape of the faces as a :class:`Quality` (min_angle,
+        max_ratio, max_radius, min_edge), computed in double (hdt_quality)."""
+        values = [ctypes.c_double() for _ in range(4)]
+        with self._lock:
+            check(lib.hdt_quality(self._live("quality"), *(ctypes.byref(v) for v in values)))
+        return Quality(*(v.value for v in values))
 
     # ---- vertices ----
 
