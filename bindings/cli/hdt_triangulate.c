@@ -26,6 +26,7 @@
 #include <hdt.h>
 
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -67,9 +68,13 @@ static void usage(FILE *f) {
           "                      (also spelled --neighbors)\n"
           "      --voronoi       also the Voronoi diagram: in the output, and drawn\n"
           "                      with --svg\n"
+          "      --refine R[,B]  then refine: circumradius <= R, circumradius / shortest\n"
+          "                      edge <= B (>= 1; default no bound; R or B may be inf)\n"
+          "      --epsilon E     then refine into an epsilon-net: every point of M_g\n"
+          "                      within E of a vertex\n"
           "      --keep-dummies  keep the dummy points (default: remove those that can go)\n"
           "      --validate      check every invariant with exact predicates first\n"
-          "      --stats         counts and timings on standard error\n"
+          "      --stats         counts, quality and timings on standard error\n"
           "  -h, --help          this text\n"
           "  -V, --version       versions of the tool and of libhdt\n"
           "\n"
@@ -96,10 +101,12 @@ typedef struct options {
   const char *input;
   int genus_given;
   int keep_dummies, neighbours, voronoi, validate, stats, help, version;
+  int refine;              /* 1: --refine, 2: --epsilon */
+  double max_radius, max_ratio;
 } options;
 
 enum { OPT_GENUS, OPT_RANDOM, OPT_SEED, OPT_FORMAT, OPT_OUTPUT, OPT_SVG, OPT_NEIGHBOURS, OPT_VORONOI, OPT_KEEP,
-       OPT_VALIDATE, OPT_STATS, OPT_HELP, OPT_VERSION, OPT_SAVE, OPT_LOAD };
+       OPT_VALIDATE, OPT_STATS, OPT_HELP, OPT_VERSION, OPT_SAVE, OPT_LOAD, OPT_REFINE, OPT_EPSILON };
 
 typedef struct option_spec {
   const char *long_name; /* without "--" */
@@ -117,6 +124,7 @@ static const option_spec option_table[] = {
     {"stats", 0, 0, OPT_STATS},          {"help", 'h', 0, OPT_HELP},
     {"version", 'V', 0, OPT_VERSION},    {"save", 0, 1, OPT_SAVE},
     {"load", 0, 1, OPT_LOAD},            {"voronoi", 0, 0, OPT_VORONOI},
+    {"refine", 0, 1, OPT_REFINE},        {"epsilon", 0, 1, OPT_EPSILON},
 };
 #define N_OPTIONS (sizeof option_table / sizeof option_table[0])
 
@@ -146,6 +154,25 @@ static int parse_number(const char *text, unsigned long long min, unsigned long 
   char *end = NULL;
   const unsigned long long value = strtoull(text, &end, 10);
   if (errno != 0 || *end != '\0' || value < min || value > max) return 0;
+  *out = value;
+  return 1;
+}
+
+/* A real number >= min (strictly > min when strict), or "inf"; nothing else. */
+static int parse_bound(const char *text, size_t length, double min, int strict, double *out) {
+  char buffer[64];
+  if (length == 0 || length >= sizeof buffer) return 0;
+  memcpy(buffer, text, length);
+  buffer[length] = '\0';
+  if (strcmp(buffer, "inf") == 0) {
+    *out = INFINITY;
+    return 1;
+  }
+  if (!((buffer[0] >= '0' && buffer[0] <= '9') || buffer[0] == '.')) return 0; /* no sign, nan, spaces */
+  errno = 0;
+  char *end = NULL;
+  const double value = strtod(buffer, &end);
+  if (errno != 0 || *end != '\0' || !isfinite(value) || value < min || (strict && value == min)) return 0;
   *out = value;
   return 1;
 }
@@ -181,6 +208,22 @@ static int apply_option(options *o, const option_spec *spec, const char *shown, 
       else if (strcmp(value, "json") == 0) o->format = FACE_FORMAT_JSON;
       else return usage_error("unknown format '%s' (text or json)", value);
       return 1;
+    case OPT_REFINE: {
+      const char *comma = strchr(value, ',');
+      const size_t length = comma ? (size_t)(comma - value) : strlen(value);
+      o->max_ratio = INFINITY;
+      if (!parse_bound(value, length, 0, 1, &o->max_radius) ||
+          (comma && !parse_bound(comma + 1, strlen(comma + 1), 1, 0, &o->max_ratio)))
+        return usage_error("%s needs R or R,B: a radius R > 0 and a ratio B >= 1 (either may be inf)", shown);
+      o->refine = 1;
+      return 1;
+    }
+    case OPT_EPSILON:
+      if (!parse_bound(value, strlen(value), 0, 1, &o->max_radius) || isinf(o->max_radius))
+        return usage_error("%s needs a finite number > 0", shown);
+      o->max_ratio = INFINITY;
+      o->refine = 2;
+      return 1;
     case OPT_OUTPUT: o->output = value; return 1;
     case OPT_SVG: o->svg = value; return 1;
     case OPT_SAVE: o->save = value; return 1;
@@ -201,7 +244,7 @@ static int parse_options(int argc, char **argv, options *o) {
   o->genus = 2;
   o->seed = 1;
   o->format = FACE_FORMAT_TEXT;
-  int only_files = 0;
+  int only_files = 0, refine_options = 0;
   for (int i = 1; i < argc; ++i) {
     const char *a = argv[i];
     if (only_files || a[0] != '-' || strcmp(a, "-") == 0) {
@@ -238,10 +281,12 @@ static int parse_options(int argc, char **argv, options *o) {
       value = argv[++i];
     }
     if (!apply_option(o, spec, shown, value)) return 0;
+    refine_options += spec->id == OPT_REFINE || spec->id == OPT_EPSILON;
   }
   if (o->help || o->version) return 1;
   if (o->random && o->input) return usage_error("--random and an input file ('%s') exclude each other", o->input);
   if (o->seed_given && !o->random) return usage_error("--seed needs --random");
+  if (refine_options > 1) return usage_error("--refine and --epsilon exclude each other, and each is given once");
   if (o->neighbours && !o->svg) return usage_error("--neighbours needs --svg");
   if (o->svg && strcmp(o->svg, "-") == 0 && (!o->output || strcmp(o->output, "-") == 0))
     return usage_error("--svg - and the triangulation would both go to standard output");
@@ -270,11 +315,11 @@ static int parse_options(int argc, char **argv, options *o) {
 /* ---- The run ---- */
 
 typedef struct timings {
-  double input, create, insert, remove, validate, output;
+  double input, create, insert, remove, refine, validate, output;
 } timings;
 
 typedef struct counts {
-  size_t points, tried, duplicates, dummies_created, dummies_after_insert, dummies_left;
+  size_t points, tried, duplicates, dummies_created, dummies_after_insert, dummies_left, refined;
 } counts;
 
 static const char *input_name(const options *o) {
@@ -385,7 +430,8 @@ static int write_picture(FILE *f, const hdt_triangulation *t, const char *title,
   return 1;
 }
 
-static void print_stats(const options *o, const snapshot *s, const counts *c, const timings *t) {
+static void print_stats(const options *o, const hdt_triangulation *tri, const snapshot *s, const counts *c,
+                        const timings *t) {
   const size_t V = s->vertex_count, F = s->face_count, E = 3 * F / 2;
   const long euler = (long)V - (long)E + (long)F;
   fflush(stdout);
@@ -401,9 +447,19 @@ static void print_stats(const options *o, const snapshot *s, const counts *c, co
           c->dummies_after_insert, c->dummies_left, o->keep_dummies ? " (--keep-dummies)" : "");
   fprintf(stderr, "  counts       : %zu vertices, %zu edges, %zu faces; V - E + F = %ld (2 - 2g = %d)\n", V, E, F,
           euler, 2 - 2 * o->genus);
+  if (o->refine)
+    fprintf(stderr, "  refinement   : %zu points added (%s, radius <= %g, ratio <= %g)\n", c->refined,
+            o->refine == 2 ? "--epsilon" : "--refine", o->max_radius, o->max_ratio);
+  double angle, ratio, radius, edge;
+  if (hdt_quality(tri, &angle, &ratio, &radius, &edge) == HDT_OK)
+    fprintf(stderr,
+            "  quality      : min angle %.4g deg, max radius-edge ratio %.6g, max circumradius %.6g, "
+            "shortest edge %.6g\n",
+            angle * 180 / 3.14159265358979323846, ratio, radius, edge);
   if (o->validate) fprintf(stderr, "  validate     : ok\n");
   fprintf(stderr, "  timings (ms) : %s %.2f, %s %.2f, insert %.2f, remove dummies %.2f", o->random ? "sample" : "read",
           t->input, o->load ? "load" : "create", t->create, t->insert, t->remove);
+  if (o->refine) fprintf(stderr, ", refine %.2f", t->refine);
   if (o->validate) fprintf(stderr, ", validate %.2f", t->validate);
   fprintf(stderr, ", output %.2f\n", t->output);
 }
@@ -467,6 +523,15 @@ static int run(const options *given) {
   tm.remove = cli_now_ms() - t0;
   c.dummies_left = hdt_dummy_count(t);
 
+  /* After the dummies' removal, which could break the bounds again. */
+  if (o->refine) {
+    t0 = cli_now_ms();
+    size_t unmet = 0;
+    if (!cli_check(hdt_refine(t, o->max_radius, o->max_ratio, SIZE_MAX, &c.refined, &unmet), "hdt_refine")) goto done;
+    tm.refine = cli_now_ms() - t0;
+    c.dummies_left = hdt_dummy_count(t);
+  }
+
   if (o->validate) {
     t0 = cli_now_ms();
     if (!cli_check(hdt_validate(t), "hdt_validate")) goto done;
@@ -503,7 +568,7 @@ static int run(const options *given) {
   if (!output_commit(&out)) goto done;
   tm.output = cli_now_ms() - t0;
 
-  if (o->stats) print_stats(o, &s, &c, &tm);
+  if (o->stats) print_stats(o, t, &s, &c, &tm);
   status = CLI_EXIT_OK;
 
 done:

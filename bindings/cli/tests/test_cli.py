@@ -623,9 +623,57 @@ def test_save_and_load(tmp):
     check(code == 2, f"--save - with the triangulation on standard output is a usage error: {err}")
 
 
+def circumradius(p):
+    """The hyperbolic circumradius of three disk points, on the hyperboloid:
+    the plane through the lifted points, its Lorentz-dual normal C, cosh R =
+    <C, P> / |C|."""
+    lifted = [((1 + abs(z) ** 2) / (1 - abs(z) ** 2), 2 * z.real / (1 - abs(z) ** 2), 2 * z.imag / (1 - abs(z) ** 2))
+              for z in p]
+    d1 = [lifted[1][k] - lifted[0][k] for k in range(3)]
+    d2 = [lifted[2][k] - lifted[0][k] for k in range(3)]
+    n = (d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0])
+    c = (n[0], -n[1], -n[2])
+    lorentz = lambda a, b: a[0] * b[0] - a[1] * b[1] - a[2] * b[2]
+    return math.acosh(abs(lorentz(c, lifted[0])) / math.sqrt(lorentz(c, c)))
+
+
+def test_refine(tmp):
+    """--refine R,B and --epsilon E: every face's circumradius and shortest
+    edge recomputed here from the vertices and translation words; --stats
+    names the refinement and the quality; bad values are usage errors."""
+    for args, radius, ratio in ((("--random", 0, "--refine", "0.3,1.2"), 0.3, 1.2),
+                                (("--genus", 3, "--random", 40, "--refine", "0.4,1"), 0.4, 1.0),
+                                (("--random", 0, "--epsilon", 0.25), 0.25, math.inf)):
+        code, js, err = run(*args, "-f", "json", "--stats", "--validate")
+        check(code == 0, f"{args}: {err}")
+        check("refinement   :" in err and "quality      : min angle" in err, f"{args}: --stats: {err}")
+        j = json.loads(js)
+        gens = generators(j["genus"])
+        point = {v["id"]: complex(v["x"], v["y"]) for v in j["vertices"]}
+        shortest = math.inf
+        for face in j["faces"]:
+            p = [apply(word_matrix(gens, j["translations"][str(t)]), point[v])
+                 for v, t in zip(face["vertices"], face["translations"])]
+            r = circumradius(p)
+            e = min(distance(p[i], p[(i + 1) % 3]) for i in range(3))
+            shortest = min(shortest, e)
+            check(r <= radius * (1 + 1e-9) and r <= ratio * e * (1 + 1e-9),
+                  f"{args}: a face of circumradius {r}, shortest edge {e}")
+        if ratio == math.inf:
+            check(shortest >= radius * (1 - 1e-8), f"{args}: two vertices {shortest} apart")
+    for bad in ("0", "-1", "nan", "0.2,0.5", "0.2,", ",1", "0.2,1,3", "x"):
+        code, _, err = run("--random", 5, "--refine", bad)
+        check(code == 2 and "--refine needs" in err, f"--refine {bad}: {code} {err}")
+    for bad in ("0", "inf", "nan", "-0.1"):
+        code, _, err = run("--random", 5, "--epsilon", bad)
+        check(code == 2 and "--epsilon needs" in err, f"--epsilon {bad}: {code} {err}")
+    code, _, err = run("--random", 5, "--refine", 0.3, "--epsilon", 0.3)
+    check(code == 2, f"--refine and --epsilon together: {err}")
+
+
 TESTS = (test_help_and_version, test_random_text_and_json, test_dummies, test_input_forms, test_bad_input,
          test_usage_errors, test_outputs, test_utf8_bom, test_decimal_comma, test_empty_input_warning,
-         test_random_cap, test_output_errors, test_save_and_load, test_voronoi)
+         test_random_cap, test_output_errors, test_save_and_load, test_voronoi, test_refine)
 
 
 def main():
