@@ -500,7 +500,8 @@ HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, doub
    double, inserted as hdt_insert would (a user vertex, the next id): the
    result is exactly the Delaunay triangulation of its vertices. The bounds
    are decided in double with both tightened by a relative 1e-9, more than
-   the computation's error, so that they also hold for the exact faces.
+   the computation's error on faces of circumradius above 1e-3, so that
+   there they also hold for the exact faces.
    Dummy vertices take part like any vertex and stay (hdt_remove_dummies
    afterwards may break the bounds around the ones it removes); on a new
    triangulation the call meshes M_g uniformly from its dummies alone.
@@ -513,8 +514,8 @@ HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, doub
    added so far (HDT_OK either way: check *unmet). HDT_EINVAL, nothing
    changed, for t NULL, max_radius NaN or <= 0, max_ratio NaN or < 1.
    HDT_ENOMEM when memory runs out: the points inserted so far stay, in a
-   valid triangulation. Time: about N log N for N points added (measured
-   in docs/refinement.md). */
+   valid triangulation. Time: 0.3-0.4 s for 83,000 points added at genus 2
+   (docs/refinement.md; it grows a little faster than the count). */
 HDT_API hdt_status hdt_refine(hdt_triangulation *t, double max_radius, double max_ratio, size_t max_points,
                               size_t *added, size_t *unmet) HDT_NOEXCEPT;
 
