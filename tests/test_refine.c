@@ -9,7 +9,11 @@
    margin of 1e-9, and a face left above a bound by more than that fails. */
 #define _DEFAULT_SOURCE
 
+#include <errno.h>
 #include <mpfr.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "hdt_test.h"
 
@@ -338,8 +342,76 @@ START_TEST(epsilon_nets) {
 }
 END_TEST
 
+/* Out of memory part way (as tests/test_enomem.c does for insertions: a
+   forked child under a tight address-space limit; skipped where RLIMIT_AS
+   means nothing): hdt_refine returns HDT_ENOMEM, the points inserted so far
+   stay in a valid triangulation, and with memory back the refinement
+   completes. */
+#define child_require(cond, ...)                      \
+  do {                                                \
+    if (!(cond)) {                                    \
+      fprintf(stderr, "refine enomem child: " __VA_ARGS__); \
+      fputc('\n', stderr);                            \
+      _exit(1);                                       \
+    }                                                 \
+  } while (0)
+
+static size_t address_space_bytes(void) {
+  FILE *f = fopen("/proc/self/statm", "r");
+  unsigned long pages = 0;
+  if (f) {
+    if (fscanf(f, "%lu", &pages) != 1) pages = 0;
+    fclose(f);
+  }
+  return (size_t)pages * (size_t)sysconf(_SC_PAGESIZE);
+}
+
+static void enomem_child(void) {
+  hdt_triangulation *t = NULL;
+  child_require(hdt_create(&t, 2) == HDT_OK, "hdt_create: %s", hdt_last_error_message());
+  const size_t V0 = hdt_vertex_count(t);
+  struct rlimit old;
+  child_require(getrlimit(RLIMIT_AS, &old) == 0, "getrlimit: %s", strerror(errno));
+  /* 83,000 points need about 15 MB; 4 MiB runs out part way. */
+  struct rlimit tight = {(rlim_t)(address_space_bytes() + ((size_t)4 << 20)), old.rlim_max};
+  child_require(setrlimit(RLIMIT_AS, &tight) == 0, "setrlimit: %s", strerror(errno));
+  size_t added = 12345, unmet = 12345;
+  const hdt_status s = hdt_refine(t, 0.01, INFINITY, SIZE_MAX, &added, &unmet);
+  child_require(setrlimit(RLIMIT_AS, &old) == 0, "setrlimit back: %s", strerror(errno));
+  child_require(s == HDT_ENOMEM, "hdt_refine returned %s under the limit", hdt_status_string(s));
+  child_require(strstr(hdt_last_error_message(), "memory") != NULL, "message \"%s\"", hdt_last_error_message());
+  const size_t V1 = hdt_vertex_count(t);
+  child_require(V1 > V0, "no point stayed (%zu vertices)", V1);
+  child_require(hdt_validate(t) == HDT_OK, "after ENOMEM: %s", hdt_last_error_message());
+  child_require(hdt_refine(t, 0.01, INFINITY, SIZE_MAX, &added, &unmet) == HDT_OK && unmet == 0,
+                "with memory back: %s", hdt_last_error_message());
+  child_require(hdt_validate(t) == HDT_OK, "after completing: %s", hdt_last_error_message());
+  printf("refine enomem: %zu vertices when memory ran out, %zu at the end\n", V1, hdt_vertex_count(t));
+  fflush(stdout);
+  hdt_destroy(t);
+  _exit(0);
+}
+
+START_TEST(out_of_memory_keeps_a_valid_triangulation) {
+  const char *preload = getenv("LD_PRELOAD");
+  if (UNDER_SANITIZER || (preload && strstr(preload, "vgpreload"))) {
+    printf("refine enomem: skipped under a sanitizer or valgrind (RLIMIT_AS does not apply)\n");
+    return;
+  }
+  fflush(stdout);
+  fflush(stderr);
+  const pid_t pid = fork();
+  ck_assert_msg(pid >= 0, "fork: %s", strerror(errno));
+  if (pid == 0) enomem_child();
+  int status = 0;
+  ck_assert_msg(waitpid(pid, &status, 0) == pid, "waitpid: %s", strerror(errno));
+  ck_assert_msg(WIFEXITED(status) && WEXITSTATUS(status) == 0, "the child failed (its message is on stderr)");
+}
+END_TEST
+
 int main(void) {
   const TTest *const tests[] = {uniform_mesh_from_the_dummies, point_set_refined,           quality_against_mpfr,
-                                cap_is_honoured,               bad_arguments_change_nothing, epsilon_nets};
+                                cap_is_honoured,               bad_arguments_change_nothing, epsilon_nets,
+                                out_of_memory_keeps_a_valid_triangulation};
   return run_tests("refine", tests, sizeof tests / sizeof tests[0]);
 }
