@@ -385,7 +385,13 @@ static void report_domain_errors(const options *o, const point_list *points) {
 }
 
 static void picture_title(const options *o, const counts *c, char *title, size_t size) {
-  if (c->points == 0)
+  if (o->refine == 2)
+    snprintf(title, size, "An epsilon-net of M_%d, eps = %g, refined from %s", o->genus, o->max_radius,
+             c->points == 0 ? "the dummy points" : "the input points");
+  else if (o->refine)
+    snprintf(title, size, "Delaunay refinement on M_%d: circumradius <= %g, radius-edge ratio <= %g", o->genus,
+             o->max_radius, o->max_ratio);
+  else if (c->points == 0)
     snprintf(title, size, "The dummy point set of M_%d%s and its Delaunay triangulation", o->genus,
              o->keep_dummies ? ", before any insertion," : "");
   else if (o->random)
