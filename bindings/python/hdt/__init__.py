@@ -31,6 +31,7 @@ from ._errors import (
     OutOfMemory,
     Status,
 )
+from . import fem  # P1 finite elements; needs NumPy and SciPy only when called
 from .group import (
     neighbour_count,
     neighbour_word,
