@@ -1,0 +1,151 @@
+#!/usr/bin/env python3
+"""The first eigenvalue of the Laplacian on the Bolza surface M_2, by P1
+finite elements on Delaunay refinements of M_2.
+
+Strohmaier and Uski (Comm. Math. Phys. 317, 2013) give lambda_1 =
+3.8388872588421995 with multiplicity 3. This meshes M_2 from the dummy
+points with Triangulation.refine (circumradius <= r, radius-edge ratio <=
+1), assembles the stiffness and (lumped) mass matrices (hdt.fem.p1_matrices,
+Klein chart), solves
+K u = lambda M u for the lowest eigenvalues with SciPy's shift-invert
+Lanczos (sigma below 0, as lambda_0 = 0), and prints per mesh: vertices,
+lambda_0, the cluster near lambda_1 and its multiplicity, the error, the time.
+The observed order p (error ~ V^(-p/2), h ~ V^(-1/2)) and a Richardson
+extrapolation of the last meshes follow.
+
+  python3 examples/bolza_spectrum.py            the table (about 10 s)
+  python3 examples/bolza_spectrum.py --quick    one mesh of 809 vertices: lambda_0 ~ 0,
+                                                multiplicity 3, lambda_1 within 2% (CI)
+
+Needs NumPy and SciPy; finds libhdt as the hdt package does (HDT_LIBRARY).
+"""
+
+import argparse
+import math
+import sys
+import time
+
+import numpy as np
+from scipy.sparse.linalg import eigsh
+
+import hdt
+from hdt.fem import p1_matrices
+
+REFERENCE = 3.8388872588421995  # Strohmaier and Uski 2013
+MULTIPLICITY = 3
+
+
+def mesh(max_radius, max_ratio=1.0):
+    t = hdt.Triangulation(2)
+    t.refine(max_radius=max_radius, max_ratio=max_ratio)
+    return t
+
+
+def lowest(triangulation, count=6, chart="klein", lumped=False):
+    """The count lowest eigenvalues of K u = lambda M u, increasing."""
+    k, m, _ = p1_matrices(triangulation, chart=chart, lumped=lumped)
+    values = eigsh(k, k=count, M=m, sigma=-0.1, which="LM", return_eigenvectors=False)
+    return np.sort(values)
+
+
+def cluster(values, tolerance=0.05):
+    """The eigenvalues within a relative tolerance of the first above
+    lambda_0: the discrete copies of lambda_1, split by the mesh's
+    asymmetry (their mean is the one compared)."""
+    first = values[1]
+    return [v for v in values[1:] if abs(v - first) <= tolerance * max(abs(first), 1.0)]
+
+
+def run(radii, chart, lumped, out=sys.stdout):
+    rows = []
+    print(f"chart {chart}, {'lumped' if lumped else 'consistent'} mass; reference lambda_1 = {REFERENCE}", file=out)
+    print(f"{'r_max':>6} {'V':>7} {'lambda_0':>10} {'lambda_1 (cluster)':>38} {'mult':>4} "
+          f"{'rel. error':>10} {'order':>6} {'time s':>7}", file=out)
+    for r in radii:
+        start = time.perf_counter()
+        t = mesh(r)
+        values = lowest(t, chart=chart, lumped=lumped)
+        elapsed = time.perf_counter() - start
+        near = cluster(values)
+        lam = float(np.mean(near))
+        n = t.vertex_count
+        error = (lam - REFERENCE) / REFERENCE
+        order = ""
+        if rows:
+            n0, lam0 = rows[-1][0], rows[-1][1]
+            order = f"{2 * math.log(abs(lam0 - REFERENCE) / abs(lam - REFERENCE)) / math.log(n / n0):6.2f}"
+        rows.append((n, lam))
+        shown = " ".join(f"{v:.6f}" for v in near)
+        print(f"{r:6.3f} {n:7d} {values[0]:10.1e} {shown:>38} {len(near):4d} {error:10.2e} {order:>6} "
+              f"{elapsed:7.2f}", file=out)
+    return rows
+
+
+def richardson(rows):
+    """Extrapolates the last three meshes: fits lambda(V) = L + C V^(-q) by
+    solving for q from three values, then L; also L with q = 1 (order 2)
+    from the last two."""
+    (n1, l1), (n2, l2), (n3, l3) = rows[-3:]
+
+    def mismatch(q):
+        a = (l1 - l2) / (n1 ** -q - n2 ** -q)
+        b = (l2 - l3) / (n2 ** -q - n3 ** -q)
+        return a - b
+
+    lo, hi = 0.3, 3.0
+    q = None
+    if mismatch(lo) * mismatch(hi) < 0:
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            if mismatch(lo) * mismatch(mid) <= 0:
+                hi = mid
+            else:
+                lo = mid
+        q = 0.5 * (lo + hi)
+    fixed = (l3 * n3 - l2 * n2) / (n3 - n2)  # q = 1
+    fitted = None
+    if q is not None:
+        c = (l2 - l3) / (n2 ** -q - n3 ** -q)
+        fitted = l3 - c * n3 ** -q
+    return q, fitted, fixed
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--quick", action="store_true", help="one small mesh, loose check (CI)")
+    parser.add_argument("--chart", choices=hdt.fem.CHARTS, default="klein")
+    parser.add_argument("--mass", choices=("lumped", "consistent"), default="lumped",
+                        help="the mass matrix: diagonal row sums (smaller error here) or the full one")
+    parser.add_argument("--radii", type=float, nargs="+", default=[0.1, 0.05, 0.025, 0.0125],
+                        help="the meshes' largest circumradius, one per row")
+    args = parser.parse_args(argv)
+    lumped = args.mass == "lumped"
+
+    if args.quick:
+        t = mesh(0.1)
+        values = lowest(t, chart=args.chart, lumped=lumped)
+        near = cluster(values)
+        lam = float(np.mean(near))
+        print(f"V = {t.vertex_count}, eigenvalues {np.array2string(values, precision=5)}")
+        print(f"lambda_1 ~ {lam:.6f} (multiplicity {len(near)}), reference {REFERENCE}, "
+              f"relative error {(lam - REFERENCE) / REFERENCE:.2e}")
+        assert abs(values[0]) < 1e-8, f"lambda_0 = {values[0]} is not ~0"
+        assert len(near) == MULTIPLICITY, f"multiplicity {len(near)}, expected {MULTIPLICITY}"
+        assert abs(lam - REFERENCE) < 0.02 * REFERENCE, f"lambda_1 = {lam}, not within 2% of {REFERENCE}"
+        return 0
+
+    start = time.perf_counter()
+    rows = run(args.radii, args.chart, lumped)
+    if len(rows) >= 3:
+        q, fitted, fixed = richardson(rows)
+        print(f"Richardson, order 2 assumed (last two meshes): {fixed:.10f}  "
+              f"rel. error {(fixed - REFERENCE) / REFERENCE:.1e}")
+        if fitted is not None:
+            print(f"Richardson, order fitted to the last three ({2 * q:.2f}): {fitted:.10f}  "
+                  f"rel. error {(fitted - REFERENCE) / REFERENCE:.1e}")
+    print(f"total {time.perf_counter() - start:.1f} s")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
