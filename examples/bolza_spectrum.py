@@ -76,7 +76,7 @@ def run(radii, chart, lumped, out=sys.stdout):
             order = f"{2 * math.log(abs(lam0 - REFERENCE) / abs(lam - REFERENCE)) / math.log(n / n0):6.2f}"
         rows.append((n, lam))
         shown = " ".join(f"{v:.6f}" for v in near)
-        print(f"{r:6.3f} {n:7d} {values[0]:10.1e} {shown:>38} {len(near):4d} {error:10.2e} {order:>6} "
+        print(f"{r:6.4f} {n:7d} {values[0]:10.1e} {shown:>38} {len(near):4d} {error:10.2e} {order:>6} "
               f"{elapsed:7.2f}", file=out)
     return rows
 
