@@ -70,7 +70,7 @@ HDT_API const char *hdt_last_error_message(void) HDT_NOEXCEPT;
    a later function can test at compile time, e.g. hdt_save (HDT_0.4) with
    #if HDT_VERSION >= 400. hdt_version() is the library's own at run time. */
 #define HDT_VERSION_MAJOR 0
-#define HDT_VERSION_MINOR 4
+#define HDT_VERSION_MINOR 5
 #define HDT_VERSION_PATCH 0
 #define HDT_VERSION (HDT_VERSION_MAJOR * 10000 + HDT_VERSION_MINOR * 100 + HDT_VERSION_PATCH)
 
@@ -540,6 +540,29 @@ HDT_API hdt_status hdt_epsilon_net(hdt_triangulation *t, double epsilon, size_t 
    linear in the faces. */
 HDT_API hdt_status hdt_quality(const hdt_triangulation *t, double *min_angle, double *max_ratio,
                                double *max_radius, double *min_edge) HDT_NOEXCEPT;
+
+/* ---- Progress and cancellation (symbol version HDT_0.5) ---- */
+
+/* A caller's progress function: done items of total so far (hdt_insert_many:
+   points handled, duplicates included, of n; hdt_refine, hdt_epsilon_net:
+   points added, total 0 as the count is not known in advance). done only
+   grows; a call that runs to the end reports last with done == total (then
+   the return value is ignored). A non-zero return stops the call. It runs
+   on the calling thread inside the call: it must not use the same handle. */
+typedef int (*hdt_progress_fn)(void *user, size_t done, size_t total);
+
+/* Has t's next hdt_insert_many, hdt_refine and hdt_epsilon_net calls report
+   to fn(user, ...), at most once per interval_seconds (0: as often as it
+   looks, which is once per 256 points; +INFINITY: only the final report),
+   until replaced; fn NULL turns reports off (the default). The clock is
+   read once per 256 points, so a call without fn runs as fast as before.
+   A call that fn stops returns HDT_OK with the work done so far, in a
+   valid Delaunay triangulation (the same contract as HDT_ENOMEM part way):
+   hdt_insert_many's vertices[i] is HDT_NO_VERTEX for each point i not
+   inserted; hdt_refine's *unmet > 0 tells that bounds are still broken.
+   HDT_EINVAL, nothing changed, for t NULL or interval_seconds NaN or < 0. */
+HDT_API hdt_status hdt_set_progress(hdt_triangulation *t, hdt_progress_fn fn, void *user,
+                                    double interval_seconds) HDT_NOEXCEPT;
 
 #ifdef __cplusplus
 }

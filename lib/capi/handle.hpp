@@ -7,12 +7,14 @@
 
 #include "capi/guard.hpp"
 #include "hdt.h"
+#include "triangulation/progress.hpp"
 #include "triangulation/triangulation.hpp"
 
 struct hdt_triangulation {
   explicit hdt_triangulation(int genus) : tri(genus) {}
   explicit hdt_triangulation(hdt::triangulation::Triangulation &&t) : tri(std::move(t)) {}
   hdt::triangulation::Triangulation tri;
+  hdt::triangulation::Progress progress;  // hdt_set_progress; none by default
 };
 
 namespace hdt::capi {

@@ -20,7 +20,8 @@ hdt_status run(hdt_triangulation *t, double max_radius, double max_ratio, size_t
   hdt::triangulation::Triangulation &tri = of(t);
   if (!(max_radius > 0)) throw ApiError(HDT_EINVAL, "the radius bound must be > 0 (and not NaN)");
   if (!(max_ratio >= 1)) throw ApiError(HDT_EINVAL, "max_ratio must be >= 1 (and not NaN)");
-  const hdt::triangulation::Refined r = hdt::triangulation::refine(tri, {max_radius, max_ratio}, max_points);
+  const hdt::triangulation::Refined r =
+      hdt::triangulation::refine(tri, {max_radius, max_ratio}, max_points, &t->progress);
   if (added) *added = r.added;
   if (unmet) *unmet = r.unmet;
   return HDT_OK;

@@ -55,7 +55,7 @@ HDT_API hdt_status hdt_insert_many(hdt_triangulation *t, const double *xy, size_
   return guarded("hdt_insert_many", [&] {
     Triangulation &tri = of(t);
     if (n > 0 && !xy) throw ApiError(HDT_EINVAL, "xy is NULL but n is " + std::to_string(n));
-    tri.insert_many(xy, n, vertices);
+    tri.insert_many(xy, n, vertices, &t->progress);
     return HDT_OK;
   });
 }

@@ -168,7 +168,7 @@ void sort_along_curve(std::vector<Item> &items) {
 
 }  // namespace
 
-void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) {
+void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out, const Progress *progress) {
   // Check every point first: a bad one rejects the call before any change.
   // The points are copied in Hilbert order of their representatives (reading
   // the caller's array in that order would miss the cache at every point),
@@ -205,6 +205,8 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
   // From here on a failure (out of memory) keeps the points inserted so far;
   // the caller learns which ones from the ids.
   if (out) std::fill(out, out + n, kNone);
+  ProgressTicker ticker(progress, n);
+  std::size_t done = 0;
   for (const Item &item : order) {
     const double x = item.x, y = item.y;
     const TranslationId home = item.home;
@@ -217,7 +219,9 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out) 
       v = insert_located(x, y, home, false, at);
     }
     if (out) out[item.index] = v;
+    if (ticker.stop(++done)) return;
   }
+  ticker.finish(n);
 }
 
 }  // namespace hdt::triangulation

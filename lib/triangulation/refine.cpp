@@ -43,7 +43,7 @@ void check(const RefineBounds &b) {
 
 }  // namespace
 
-Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points) {
+Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points, const Progress *progress) {
   check(b);
   std::priority_queue<Entry> queue;
   auto offer = [&](uint32_t slot) {
@@ -55,7 +55,9 @@ Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points
 
   Refined out{0, 0};
   std::vector<StarEntry> star;
-  while (!queue.empty() && out.added < max_points) {
+  ProgressTicker ticker(progress, 0);
+  bool stopped = false;
+  while (!queue.empty() && out.added < max_points && !stopped) {
     const Entry e = queue.top();
     queue.pop();
     if (e.slot >= tri.faces().size()) continue;
@@ -72,7 +74,9 @@ Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points
     ++out.added;
     vertex_star(tri, in.vertex, &star);
     for (const StarEntry &s : star) offer(s.face);
+    stopped = ticker.stop(out.added);
   }
+  if (!stopped) ticker.finish(out.added);
   if (!queue.empty()) {
     Circle c;
     for (const Face &f : tri.faces()) out.unmet += is_bad(tri, f, b, &c) ? 1 : 0;

@@ -8,6 +8,7 @@
 #include <cstddef>
 
 #include "triangulation/constructions.hpp"
+#include "triangulation/progress.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
@@ -28,13 +29,15 @@ bool is_bad(const Triangulation &tri, const Face &f, const RefineBounds &b, Circ
 
 struct Refined {
   std::size_t added;  // Steiner points inserted
-  std::size_t unmet;  // faces still breaking the bounds (0 unless the cap stopped it)
+  std::size_t unmet;  // faces still breaking the bounds (0 unless the cap or progress stopped it)
 };
 // Steiner points are ordinary user vertices, inserted through
 // Triangulation::insert_near (exact predicates; the triangulation stays exactly
 // Delaunay). Throws before changing anything only on bad bounds
 // (std::invalid_argument); std::bad_alloc later keeps the points inserted
-// so far, in a valid triangulation.
-Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points);
+// so far, in a valid triangulation. progress (may be null) is told the
+// points added (total 0: unknown) and can stop it like the cap.
+Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points,
+               const Progress *progress = nullptr);
 
 }  // namespace hdt::triangulation

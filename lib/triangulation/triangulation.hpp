@@ -20,6 +20,7 @@
 #include "predicates/kernel.hpp"
 #include "triangulation/hole.hpp"
 #include "triangulation/mesh.hpp"
+#include "triangulation/progress.hpp"
 #include "triangulation/snapshot.hpp"
 
 namespace hdt::triangulation {
@@ -60,7 +61,9 @@ class Triangulation {
   // it inserts). Throws std::invalid_argument for a dead or unknown vertex.
   Inserted insert_near(double x, double y, uint32_t near);
   // All points are checked before any is inserted; vertices may be null.
-  void insert_many(const double *xy, std::size_t n, uint32_t *vertices);
+  // progress (may be null) can stop it part way: the points not handled
+  // get kNone.
+  void insert_many(const double *xy, std::size_t n, uint32_t *vertices, const Progress *progress = nullptr);
   // False, with nothing changed, when the result would break the invariant.
   // Throws std::invalid_argument for a dead or unknown vertex.
   bool remove(uint32_t v);

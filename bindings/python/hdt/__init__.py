@@ -46,7 +46,7 @@ from .surface import point_representative, polygon_side_midpoint, polygon_vertex
 from .triangulation import Edges, Faces, Location, Neighbours, Quality, Refined, Star, Triangulation, Vertices, Voronoi
 
 #: The version of these bindings (the library's is version()).
-__version__ = "0.4.0"
+__version__ = "0.5.0"
 
 __all__ = [
     "AlreadyExists",
