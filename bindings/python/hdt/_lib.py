@@ -19,9 +19,11 @@ A candidate is accepted when it loads, reports ``hdt_abi_version() == 0`` and
 exports every function of the table below. Otherwise importing ``hdt`` raises
 :class:`LibraryLoadError` (an :class:`ImportError`) that lists what was tried.
 
-Calls into the library release the GIL (ctypes.CDLL) but cannot be
-interrupted: Python handles Ctrl-C (SIGINT) only when the call has returned,
-so a long call (``insert_many`` of millions of points, ``remove_dummies``,
+Calls into the library release the GIL (ctypes.CDLL). ``insert_many``,
+``refine`` and ``epsilon_net`` stop on Ctrl-C (SIGINT) within about 0.05 s,
+keeping the points inserted so far, and raise ``KeyboardInterrupt``
+(hdt/_interrupt.py). Other calls cannot be interrupted: Python handles
+Ctrl-C only when the call has returned, so a long one (``remove_dummies``,
 ``validate``, ``Triangulation(genus)`` of a large genus) finishes first, its
 work done, and ``KeyboardInterrupt`` comes after it.
 """
@@ -58,6 +60,8 @@ _int32_p = ctypes.POINTER(ctypes.c_int32)
 _uint8_p = ctypes.POINTER(ctypes.c_uint8)
 _unsigned = ctypes.c_uint
 _char_p = ctypes.POINTER(ctypes.c_char)  # an output buffer of bytes
+#: hdt_progress_fn: int (*)(void *user, size_t done, size_t total).
+progress_fn = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_size_t, ctypes.c_size_t)
 
 #: Every function of include/hdt.h: name -> (restype, argtypes).
 PROTOTYPES = {
@@ -110,6 +114,7 @@ PROTOTYPES = {
     "hdt_refine": (_status, (_handle, _double, _double, _size, _size_p, _size_p)),
     "hdt_epsilon_net": (_status, (_handle, _double, _size, _size_p, _size_p)),
     "hdt_quality": (_status, (_handle, _double_p, _double_p, _double_p, _double_p)),
+    "hdt_set_progress": (_status, (_handle, progress_fn, ctypes.c_void_p, _double)),
 }
 
 

@@ -49,6 +49,7 @@ import threading
 import weakref
 
 from . import _arrays, picture
+from ._interrupt import interruptible
 from ._convert import c_coordinate, c_genus, c_translation, c_vertex, call_doubles, call_point, call_word
 from ._errors import HandleClosed, InternalError, InvalidArgument, Status, check, error_for_status
 from ._lib import lib
@@ -369,12 +370,16 @@ class Triangulation:
         turns it into a user vertex. New vertices get their ids in the
         spatial order, not in input order. Every point is checked first: a
         point outside the open unit disk raises :class:`hdt.OutOfDomain`
-        naming its index, and nothing is inserted.
+        naming its index, and nothing is inserted. Ctrl-C stops it within
+        about 0.05 s with KeyboardInterrupt, the points inserted so far
+        staying in a valid triangulation (likewise :meth:`refine`).
         """
         xy, count, owner = _arrays.point_buffer(points)
         ids_pointer, ids = _arrays.output(ctypes.c_uint32, count)
         with self._lock:
-            check(lib.hdt_insert_many(self._live("insert_many"), xy, count, ids_pointer))
+            handle = self._live("insert_many")
+            with interruptible(handle):
+                check(lib.hdt_insert_many(handle, xy, count, ids_pointer))
         del owner  # the points stay alive until here
         return _arrays.result(ids)
 
@@ -434,7 +439,9 @@ class Triangulation:
             cap = min(int(max_points), ctypes.c_size_t(-1).value)
         added, unmet = ctypes.c_size_t(), ctypes.c_size_t()
         with self._lock:
-            check(call(self._live(what), cap, ctypes.byref(added), ctypes.byref(unmet)))
+            handle = self._live(what)
+            with interruptible(handle):
+                check(call(handle, cap, ctypes.byref(added), ctypes.byref(unmet)))
         return Refined(added.value, unmet.value)
 
     def quality(self):
