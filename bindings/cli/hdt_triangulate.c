@@ -19,6 +19,7 @@
 #include "face_writer.h"
 #include "output_file.h"
 #include "point_reader.h"
+#include "progress_bar.h"
 #include "random_points.h"
 #include "saved_file.h"
 #include "snapshot.h"
@@ -515,7 +516,10 @@ static int run(const options *given) {
   point_vertex = cli_alloc(points.count, sizeof *point_vertex);
   if (!point_vertex) goto done;
   t0 = cli_now_ms();
+  progress_bar bar;
+  progress_bar_attach(t, &bar, "insert");
   const hdt_status inserted = hdt_insert_many(t, points.xy, points.count, point_vertex);
+  progress_bar_detach(t, &bar);
   if (inserted == HDT_EDOMAIN) {
     report_domain_errors(o, &points);
     goto done;
@@ -533,7 +537,10 @@ static int run(const options *given) {
   if (o->refine) {
     t0 = cli_now_ms();
     size_t unmet = 0;
-    if (!cli_check(hdt_refine(t, o->max_radius, o->max_ratio, SIZE_MAX, &c.refined, &unmet), "hdt_refine")) goto done;
+    progress_bar_attach(t, &bar, "refine");
+    const hdt_status refined = hdt_refine(t, o->max_radius, o->max_ratio, SIZE_MAX, &c.refined, &unmet);
+    progress_bar_detach(t, &bar);
+    if (!cli_check(refined, "hdt_refine")) goto done;
     tm.refine = cli_now_ms() - t0;
     c.dummies_left = hdt_dummy_count(t);
   }
