@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "hdt_test.h"
+#include "limited_child.h"
 
 static int under_valgrind(void) {
   const char *preload = getenv("LD_PRELOAD");
@@ -33,16 +34,6 @@ static int under_valgrind(void) {
     }                                               \
   } while (0)
 
-/* The process's address space now, in bytes (first field of statm). */
-static size_t address_space_bytes(void) {
-  FILE *f = fopen("/proc/self/statm", "r");
-  unsigned long pages = 0;
-  if (f) {
-    if (fscanf(f, "%lu", &pages) != 1) pages = 0;
-    fclose(f);
-  }
-  return (size_t)pages * (size_t)sysconf(_SC_PAGESIZE);
-}
 
 /* n random points of the disk of radius 0.95. */
 static double *random_points(uint64_t *rng, size_t n) {

@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "hdt_test.h"
+#include "limited_child.h"
 
 #define PREC 200
 #define TOL 1e-10
@@ -356,15 +357,6 @@ END_TEST
     }                                                 \
   } while (0)
 
-static size_t address_space_bytes(void) {
-  FILE *f = fopen("/proc/self/statm", "r");
-  unsigned long pages = 0;
-  if (f) {
-    if (fscanf(f, "%lu", &pages) != 1) pages = 0;
-    fclose(f);
-  }
-  return (size_t)pages * (size_t)sysconf(_SC_PAGESIZE);
-}
 
 static void enomem_child(void) {
   hdt_triangulation *t = NULL;
@@ -398,14 +390,7 @@ START_TEST(out_of_memory_keeps_a_valid_triangulation) {
     printf("refine enomem: skipped under a sanitizer or valgrind (RLIMIT_AS does not apply)\n");
     return;
   }
-  fflush(stdout);
-  fflush(stderr);
-  const pid_t pid = fork();
-  ck_assert_msg(pid >= 0, "fork: %s", strerror(errno));
-  if (pid == 0) enomem_child();
-  int status = 0;
-  ck_assert_msg(waitpid(pid, &status, 0) == pid, "waitpid: %s", strerror(errno));
-  ck_assert_msg(WIFEXITED(status) && WEXITSTATUS(status) == 0, "the child failed (its message is on stderr)");
+  run_child(enomem_child);
 }
 END_TEST
 

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "hdt_test.h"
+#include "limited_child.h"
 
 #define USER_COLOUR "#1f2a44"
 #define DUMMY_COLOUR "#d62728"
@@ -357,11 +358,9 @@ static void enomem_child(void) {
   memset(text, CANARY, needed + 1);
   struct rlimit old;
   if (getrlimit(RLIMIT_AS, &old) != 0) _exit(4);
-  FILE *f = fopen("/proc/self/statm", "r");
-  unsigned long pages = 0;
-  if (!f || fscanf(f, "%lu", &pages) != 1) _exit(5);
-  fclose(f);
-  const struct rlimit tight = {(rlim_t)pages * (rlim_t)sysconf(_SC_PAGESIZE) + ((rlim_t)1 << 20), old.rlim_max};
+  const size_t used = address_space_bytes();
+  if (used == 0) _exit(5);
+  const struct rlimit tight = {(rlim_t)used + ((rlim_t)1 << 20), old.rlim_max};
   if (setrlimit(RLIMIT_AS, &tight) != 0) _exit(6);
   size_t length = LENGTH_SENTINEL;
   const hdt_status s = hdt_svg(t, 800, NULL, HDT_SVG_NEIGHBOURS, text, needed + 1, &length);
@@ -391,15 +390,7 @@ START_TEST(out_of_memory) {
     printf("svg: out_of_memory skipped under a sanitizer or valgrind (RLIMIT_AS does not apply)\n");
     return;
   }
-  fflush(stdout);
-  fflush(stderr);
-  const pid_t pid = fork();
-  ck_assert_msg(pid >= 0, "fork: %s", strerror(errno));
-  if (pid == 0) enomem_child();
-  int status = 0;
-  ck_assert_msg(waitpid(pid, &status, 0) == pid, "waitpid: %s", strerror(errno));
-  ck_assert_msg(WIFEXITED(status) && WEXITSTATUS(status) == 0, "the child failed: exit %d, signal %d",
-                WIFEXITED(status) ? WEXITSTATUS(status) : -1, WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  run_child(enomem_child);
 }
 END_TEST
 
