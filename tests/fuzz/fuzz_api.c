@@ -73,6 +73,8 @@ enum {
   MAX_WORD = 24,           /* letters per word */
   HISTORY = 64,            /* remembered points, for duplicates */
   SLOTS = 2,               /* triangulations alive at once */
+  MAX_LOADS = 2,           /* op_save_load calls per input (each loads three times, validating) */
+  MAX_STEINER = 8,         /* points one hdt_refine / hdt_epsilon_net call may add */
 };
 
 /* ---- Reporting ---- */
@@ -122,6 +124,11 @@ static double hyp_norm_factor(int g) {
 
 /* ---- State ---- */
 
+/* What a progress function saw (op_refine sets one). */
+typedef struct progress_state {
+  size_t last_done, calls;
+} progress_state;
+
 typedef struct state {
   hdt_triangulation *t[SLOTS];
   unsigned unvalidated[SLOTS]; /* changes since the last hdt_validate */
@@ -133,6 +140,8 @@ typedef struct state {
   unsigned creates;
   unsigned full_checks;     /* check_inserted calls so far */
   unsigned representatives; /* hdt_point_representative calls of op_vertex and op_words */
+  unsigned loads;           /* op_save_load calls */
+  progress_state progress[SLOTS];
 } state;
 
 static void remember(state *s, double x, double y) {
@@ -578,6 +587,7 @@ static void op_insert_many(reader *r, state *s) {
   }
   const fingerprint before = take(t);
   const size_t v0 = hdt_vertex_count(t);
+  s->progress[slot].last_done = 0; /* done grows within one call (op_refine may set a progress function) */
   const hdt_status st_ = hdt_insert_many(t, null_xy ? NULL : xy, n, with_out ? vs : NULL);
   if (trace_on) {
     trace("double xy[%zu] = {", 2 * n);
@@ -1051,6 +1061,361 @@ static void op_words(reader *r, state *s) {
 }
 
 /* Every handle function with a NULL handle. */
+/* ---- The HDT_0.3 .. HDT_0.5 functions ---- */
+
+/* An output array of `cap` items of `per` elements of `size` bytes, plus one
+   guard element, filled with 0xAB so that a write beyond what a call returns
+   shows. NULL when the array is left out. */
+typedef struct out_array {
+  unsigned char *p;
+  size_t per, size;
+} out_array;
+
+static out_array out_alloc(int present, size_t cap, size_t per, size_t size) {
+  out_array a = {NULL, per, size};
+  if (!present) return a;
+  a.p = malloc((cap * per + 1) * size);
+  if (!a.p) abort();
+  memset(a.p, 0xAB, (cap * per + 1) * size);
+  return a;
+}
+
+/* No byte of items written.. cap (and the guard) changed. */
+static void out_untouched_from(const out_array *a, size_t written, size_t cap, const char *call, const char *what) {
+  if (!a->p) return;
+  for (size_t i = written * a->per * a->size; i < (cap * a->per + 1) * a->size; ++i)
+    CHECK(a->p[i] == 0xAB, "%s wrote %s byte %zu beyond the %zu items it returned", call, what, i, written);
+}
+
+/* A capacity for a list of `needed` items: 0 (asks), one short, exact, more. */
+static size_t pick_capacity(uint8_t b, size_t needed) {
+  switch (b % 4) {
+    case 0: return 0;
+    case 1: return needed ? needed - 1 : 0;
+    case 2: return needed;
+    default: return needed + 1 + (b >> 5);
+  }
+}
+
+static int in_disk(const double *xy) { return isfinite(xy[0]) && isfinite(xy[1]) && xy[0] * xy[0] + xy[1] * xy[1] < 1; }
+
+/* The degree of live vertex v, counted from the face list. */
+static size_t degree_of(const hdt_triangulation *t, uint32_t v, uint32_t **faces_out) {
+  const size_t f = hdt_face_count(t);
+  uint32_t *fv = malloc(3 * f * sizeof *fv + 1);
+  size_t count = 0, d = 0;
+  CHECK(hdt_faces(t, fv, NULL, f, &count) == HDT_OK && count == f, "hdt_faces");
+  for (size_t i = 0; i < 3 * f; ++i) d += fv[i] == v;
+  *faces_out = fv;
+  return d;
+}
+
+enum { DUAL_NEIGHBOURS, DUAL_STAR, DUAL_EDGES, DUAL_POINTS, DUAL_VORONOI_VERTICES, DUAL_VORONOI_EDGES, DUAL_CELL };
+
+/* Adjacency, edges, corner points and the Voronoi diagram: the two-call
+   contract with every kind of capacity, nothing written beyond what a call
+   returns, and properties a wrong answer breaks (adjacency is symmetric, a
+   star's faces hold the vertex and number its degree, E = 3F/2 with each
+   face on three edges, every point in the open disk, radii and lengths
+   positive and below the guarantee). */
+static void op_dual(reader *r, state *s) {
+  int slot;
+  hdt_triangulation *t = *slot_of(r, s, &slot);
+  if (hdt_vertex_count(t) >= FINGERPRINT_MAX_V) return;
+  const uint8_t kind = u8(r) % 7, b = u8(r);
+  const size_t f = hdt_face_count(t), e = hdt_edge_count(t);
+  CHECK(2 * e == 3 * f, "hdt_edge_count %zu for %zu faces", e, f);
+  uint32_t v = 0, *fv = NULL;
+  size_t needed = f;
+  int live = 1;
+  if (kind == DUAL_STAR || kind == DUAL_CELL) {
+    v = gen_vertex(r, t);
+    live = hdt_vertex_is_dummy(t, v) >= 0;
+    needed = live ? degree_of(t, v, &fv) : 0;
+  } else if (kind == DUAL_EDGES || kind == DUAL_VORONOI_EDGES) {
+    needed = e;
+  }
+  const size_t cap = pick_capacity(b, needed);
+  const int drop = (b >> 2) & 7; /* which optional outputs are NULL */
+  out_array a = {0}, c = {0}, d = {0}, l = {0};
+  size_t count = SIZE_MAX;
+  hdt_status st_ = HDT_ERROR;
+  const char *call = "";
+  switch (kind) {
+    case DUAL_NEIGHBOURS:
+      call = "hdt_face_neighbours";
+      a = out_alloc(!(drop & 1), cap, 3, 4), c = out_alloc(!(drop & 2), cap, 3, 4);
+      st_ = hdt_face_neighbours(t, (uint32_t *)a.p, (int32_t *)c.p, cap, &count);
+      break;
+    case DUAL_STAR:
+      call = "hdt_vertex_star";
+      a = out_alloc(!(drop & 1), cap, 1, 4), c = out_alloc(!(drop & 2), cap, 1, 1), d = out_alloc(!(drop & 4), cap, 1, 4);
+      st_ = hdt_vertex_star(t, v, (uint32_t *)a.p, c.p, (int32_t *)d.p, cap, &count);
+      break;
+    case DUAL_EDGES:
+      call = "hdt_edges";
+      a = out_alloc(!(drop & 1), cap, 2, 4), c = out_alloc(!(drop & 2), cap, 1, 4), d = out_alloc(!(drop & 4), cap, 2, 4);
+      l = out_alloc(drop != 7, cap, 1, 8);
+      st_ = hdt_edges(t, (uint32_t *)a.p, (int32_t *)c.p, (uint32_t *)d.p, (double *)l.p, cap, &count);
+      break;
+    case DUAL_POINTS:
+      call = "hdt_face_points";
+      a = out_alloc(1, cap, 6, 8);
+      st_ = hdt_face_points(t, (double *)a.p, cap, &count);
+      break;
+    case DUAL_VORONOI_VERTICES:
+      call = "hdt_voronoi_vertices";
+      a = out_alloc(!(drop & 1), cap, 2, 8), c = out_alloc(!(drop & 2), cap, 1, 8);
+      st_ = hdt_voronoi_vertices(t, (double *)a.p, (double *)c.p, cap, &count);
+      break;
+    case DUAL_VORONOI_EDGES:
+      call = "hdt_voronoi_edges";
+      a = out_alloc(1, cap, 4, 8);
+      st_ = hdt_voronoi_edges(t, (double *)a.p, cap, &count);
+      break;
+    default:
+      call = "hdt_voronoi_cell";
+      a = out_alloc(1, cap, 2, 8);
+      st_ = hdt_voronoi_cell(t, v, (double *)a.p, cap, &count);
+      break;
+  }
+  trace("%s(t%d, v %u, capacity %zu, drop %d) = %d, count %zu", call, slot, v, cap, drop, (int)st_, count);
+  no_internal(st_, call);
+  size_t written = 0;
+  if (!live) {
+    CHECK(st_ == HDT_EINVAL, "%s(vertex %u, not live): %s", call, v, st(st_));
+  } else if (cap < needed) {
+    CHECK(st_ == (cap == 0 ? HDT_OK : HDT_EBUFS) && count == needed, "%s(capacity %zu of %zu): %s, count %zu", call,
+          cap, needed, st(st_), count);
+  } else {
+    CHECK(st_ == HDT_OK && count == needed, "%s(capacity %zu >= %zu): %s, count %zu", call, cap, needed, st(st_),
+          count);
+    written = needed;
+  }
+  out_untouched_from(&a, written, cap, call, "output 1");
+  out_untouched_from(&c, written, cap, call, "output 2");
+  out_untouched_from(&d, written, cap, call, "output 3");
+  out_untouched_from(&l, written, cap, call, "lengths");
+  const double quarter_sys = hdt_systole(hdt_genus(t)) / 4;
+  if (written) switch (kind) {
+      case DUAL_NEIGHBOURS:
+        if (a.p)
+          for (size_t i = 0; i < 3 * f; ++i) {
+            const uint32_t *nb = (const uint32_t *)a.p, n = nb[i];
+            CHECK(n < f && n != i / 3, "hdt_face_neighbours: face %zu, corner %zu: %u", i / 3, i % 3, n);
+            CHECK(nb[3 * n] == i / 3 || nb[3 * n + 1] == i / 3 || nb[3 * n + 2] == i / 3,
+                  "hdt_face_neighbours: %zu is across from %u, not back", i / 3, n);
+          }
+        break;
+      case DUAL_STAR:
+        if (a.p && c.p)
+          for (size_t k = 0; k < needed; ++k) {
+            const uint32_t face = ((const uint32_t *)a.p)[k];
+            CHECK(face < f && c.p[k] < 3 && fv[3 * face + c.p[k]] == v, "hdt_vertex_star(%u): face %u corner %u", v,
+                  face, c.p[k]);
+          }
+        break;
+      case DUAL_EDGES:
+        if (d.p) {
+          unsigned *seen = calloc(f, sizeof *seen);
+          for (size_t i = 0; i < 2 * e; ++i) {
+            const uint32_t face = ((const uint32_t *)d.p)[i];
+            CHECK(face < f && ++seen[face] <= 3, "hdt_edges: face %u on more than 3 edges", face);
+          }
+          free(seen);
+        }
+        if (l.p)
+          for (size_t i = 0; i < e; ++i) {
+            const double len = ((const double *)l.p)[i];
+            /* >= 0, not > 0: a user point within an ulp of a dummy's
+               algebraic point rounds to the same double, length 0. */
+            CHECK(len >= 0 && len < 2 * quarter_sys * (1 + 1e-9), "hdt_edges: edge %zu has length %a", i, len);
+          }
+        break;
+      case DUAL_VORONOI_VERTICES:
+        if (c.p)
+          for (size_t i = 0; i < f; ++i) {
+            const double rad = ((const double *)c.p)[i];
+            CHECK(rad > 0 && rad < quarter_sys * (1 + 1e-9), "hdt_voronoi_vertices: face %zu has radius %a", i, rad);
+          }
+        /* fall through: the centres */
+      default:
+        if (a.p)
+          for (size_t i = 0; i < written * a.per; i += 2)
+            CHECK(in_disk((const double *)a.p + i), "%s: point %zu not in the open disk", call, i / 2);
+        break;
+    }
+  free(a.p), free(c.p), free(d.p), free(l.p), free(fv);
+}
+
+/* Save and load: the loaded triangulation gives the same faces and
+   vertices; a prefix of the bytes, or the bytes with one changed, load to
+   HDT_EINVAL (or, for a change the checksum cannot see, a valid
+   triangulation) and nothing else. Sometimes the loaded one replaces the
+   original, so that later calls run on it. */
+static void op_save_load(reader *r, state *s) {
+  int slot;
+  hdt_triangulation *t = *slot_of(r, s, &slot);
+  const uint8_t b = u8(r);
+  if (s->loads >= MAX_LOADS || hdt_vertex_count(t) >= FINGERPRINT_MAX_V) return;
+  ++s->loads;
+  const fingerprint before = take(t);
+  size_t size = 0;
+  hdt_status st_ = hdt_save(t, NULL, 0, &size);
+  CHECK(st_ == HDT_OK && size > 0, "hdt_save(capacity 0): %s, size %zu", st(st_), size);
+  const size_t cap = b % 4 ? pick_capacity(b, size) : size; /* 0 was the call above */
+  out_array bytes = out_alloc(1, cap, 1, 1);
+  size_t size2 = SIZE_MAX;
+  st_ = hdt_save(t, bytes.p, cap, &size2);
+  trace("hdt_save(t%d, bytes, %zu) = %d, size %zu", slot, cap, (int)st_, size2);
+  no_internal(st_, "hdt_save");
+  CHECK(size2 == size && st_ == (cap < size ? HDT_EBUFS : HDT_OK), "hdt_save(capacity %zu of %zu): %s", cap, size,
+        st(st_));
+  out_untouched_from(&bytes, st_ == HDT_OK ? size : 0, cap, "hdt_save", "byte");
+  expect_unchanged(&before, t, "hdt_save");
+  if (st_ != HDT_OK) {
+    free(bytes.p);
+    return;
+  }
+  hdt_triangulation *u = NULL;
+  st_ = hdt_load(&u, bytes.p, size);
+  trace("hdt_load(&u, bytes, %zu) = %d", size, (int)st_);
+  CHECK(st_ == HDT_OK && u, "hdt_load of hdt_save's bytes: %s (%s)", st(st_), hdt_last_error_message());
+  expect_unchanged(&before, u, "hdt_load (compared with the saved triangulation)");
+  /* A strict prefix, then one byte changed. */
+  const size_t cut = u16(r) % size, at = u16(r) % size;
+  hdt_triangulation *bad = (hdt_triangulation *)&op_index;
+  st_ = hdt_load(&bad, bytes.p, cut);
+  CHECK(st_ == HDT_EINVAL && bad == (hdt_triangulation *)&op_index, "hdt_load of %zu of %zu bytes: %s", cut, size,
+        st(st_));
+  bytes.p[at] ^= (unsigned char)(u8(r) | 1);
+  st_ = hdt_load(&bad, bytes.p, size);
+  trace("hdt_load(&bad, bytes with byte %zu changed, %zu) = %d", at, size, (int)st_);
+  no_internal(st_, "hdt_load");
+  if (st_ == HDT_OK) {
+    CHECK(hdt_validate(bad) == HDT_OK, "hdt_load accepted changed bytes and gave an invalid triangulation");
+    hdt_destroy(bad);
+  } else {
+    CHECK(st_ == HDT_EINVAL && bad == (hdt_triangulation *)&op_index, "hdt_load of changed bytes: %s", st(st_));
+  }
+  free(bytes.p);
+  if (b & 0x80) {
+    retire(s, slot);
+    s->t[slot] = u;
+    s->unvalidated[slot] = 1;
+    s->dummy_calls[slot] = 0;
+  } else {
+    hdt_destroy(u);
+  }
+}
+
+/* A progress function that checks its contract: done only grows, and
+   never passes a known total. */
+static int progress_check(void *user, size_t done, size_t total) {
+  progress_state *p = user;
+  CHECK(done >= p->last_done && (total == 0 || done <= total), "progress: done %zu after %zu, total %zu", done,
+        p->last_done, total);
+  p->last_done = done;
+  ++p->calls;
+  return 0;
+}
+
+/* Refinement, epsilon-nets and quality, with a progress function set or
+   not; invalid bounds change nothing. A call that completes (no face left
+   unmet) leaves hdt_quality's statistics within its bounds. */
+static void op_refine(reader *r, state *s) {
+  int slot;
+  hdt_triangulation *t = *slot_of(r, s, &slot);
+  static const double radii[] = {0.3, 0.5, 1.0, 0.2, INFINITY, 0, -1, NAN, -INFINITY};
+  static const double ratios[] = {1, 1.5, 2, INFINITY, 0.99, 0, NAN, -1};
+  const uint8_t b = u8(r);
+  const double rad = radii[u8(r) % 9], ratio = ratios[u8(r) % 8];
+  const size_t cap = u8(r) % (MAX_STEINER + 1);
+  if (b & 0x10) {
+    const double interval = (b & 0x20) ? INFINITY : (b & 0x40) ? NAN : 0;
+    s->progress[slot] = (progress_state){0, 0};
+    const hdt_status p = hdt_set_progress(t, (b & 0x80) ? NULL : progress_check, &s->progress[slot], interval);
+    CHECK(p == (isnan(interval) ? HDT_EINVAL : HDT_OK), "hdt_set_progress(interval %g): %s", interval, st(p));
+  }
+  const fingerprint before = take(t);
+  size_t added = SIZE_MAX, unmet = SIZE_MAX;
+  hdt_status st_;
+  int valid;
+  double want_radius = rad, want_ratio = ratio;
+  const int what = (b & 3) % 3; /* 0 refine, 1 epsilon-net, 2 quality */
+  s->progress[slot].last_done = 0; /* done grows within one call */
+  if (what == 2) {
+    double q[4] = {NAN, NAN, NAN, NAN};
+    st_ = hdt_quality(t, (b & 4) ? NULL : &q[0], &q[1], &q[2], (b & 8) ? NULL : &q[3]);
+    trace("hdt_quality(t%d) = %d: %g %g %g %g", slot, (int)st_, q[0], q[1], q[2], q[3]);
+    CHECK(st_ == HDT_OK, "hdt_quality: %s", st(st_));
+    CHECK(q[1] > 0 && q[2] > 0 && q[2] < hdt_systole(hdt_genus(t)) / 4 * (1 + 1e-9), "hdt_quality: ratio %g, radius %g",
+          q[1], q[2]);
+    /* A hyperbolic triangle's angles sum to less than pi; the shortest edge
+       is a chord of some face's circumcircle (>= 0 for both: see op_dual). */
+    if (!(b & 4)) CHECK(q[0] >= 0 && q[0] < HDT_FUZZ_PI / 3 * (1 + 1e-12), "hdt_quality: smallest angle %g", q[0]);
+    if (!(b & 8)) CHECK(q[3] >= 0 && q[3] <= 2 * q[2] * (1 + 1e-12), "hdt_quality: shortest edge %g, radius %g", q[3], q[2]);
+    return;
+  }
+  if (what == 0) {
+    valid = rad > 0 && !isnan(rad) && ratio >= 1;
+    st_ = hdt_refine(t, rad, ratio, cap, &added, &unmet);
+    trace("hdt_refine(t%d, %g, %g, %zu) = %d, added %zu, unmet %zu", slot, rad, ratio, cap, (int)st_, added, unmet);
+  } else {
+    valid = rad > 0 && isfinite(rad);
+    want_ratio = INFINITY;
+    st_ = hdt_epsilon_net(t, rad, cap, &added, &unmet);
+    trace("hdt_epsilon_net(t%d, %g, %zu) = %d, added %zu, unmet %zu", slot, rad, cap, (int)st_, added, unmet);
+  }
+  no_internal(st_, what == 0 ? "hdt_refine" : "hdt_epsilon_net");
+  if (!valid) {
+    CHECK(st_ == HDT_EINVAL, "refinement with radius %g, ratio %g: %s", rad, ratio, st(st_));
+    expect_unchanged(&before, t, "a refinement with invalid bounds");
+    return;
+  }
+  CHECK(st_ == HDT_OK && added <= cap && hdt_vertex_count(t) == before.v + added && hdt_dummy_count(t) == before.d,
+        "refinement (cap %zu): %s, added %zu, vertices %zu -> %zu", cap, st(st_), added, before.v, hdt_vertex_count(t));
+  if (added) changed(s, slot, "a refinement");
+  if (unmet == 0) {
+    double ratio_now = NAN, radius_now = NAN;
+    CHECK(hdt_quality(t, NULL, &ratio_now, &radius_now, NULL) == HDT_OK, "hdt_quality");
+    CHECK(radius_now <= want_radius && ratio_now <= want_ratio,
+          "refinement complete but radius %g > %g or ratio %g > %g", radius_now, want_radius, ratio_now, want_ratio);
+  }
+}
+
+/* hdt_svg: the two-call contract in bytes, refused flags and sizes. */
+static void op_svg(reader *r, state *s) {
+  int slot;
+  hdt_triangulation *t = *slot_of(r, s, &slot);
+  if (hdt_vertex_count(t) >= FINGERPRINT_MAX_V / 2) return;
+  static const double sizes[] = {200, 64, HDT_SVG_SIZE_MAX, 0, -1, NAN, INFINITY, HDT_SVG_SIZE_MAX * 2};
+  const uint8_t b = u8(r);
+  const double size = sizes[b % 8];
+  const unsigned flags = (b & 0x80) ? 8u : (unsigned)((b >> 3) & 7) & ~(unsigned)HDT_SVG_NEIGHBOURS;
+  const char *title = (b & 0x40) ? "<&\x01\xff>" : NULL;
+  const int valid = size > 0 && size <= HDT_SVG_SIZE_MAX && flags < 8;
+  size_t len = SIZE_MAX;
+  hdt_status st_ = hdt_svg(t, size, title, flags, NULL, 0, &len);
+  trace("hdt_svg(t%d, %g, flags %u, capacity 0) = %d, length %zu", slot, size, flags, (int)st_, len);
+  no_internal(st_, "hdt_svg");
+  if (!valid) {
+    CHECK(st_ == HDT_EINVAL && len == SIZE_MAX, "hdt_svg(size %g, flags %u): %s", size, flags, st(st_));
+    return;
+  }
+  CHECK(st_ == HDT_OK && len > 0, "hdt_svg(capacity 0): %s", st(st_));
+  const uint8_t c = u8(r);
+  const size_t cap = c % 4 ? pick_capacity(c, len + 1) : len + 1; /* 0 was the call above */
+  out_array text = out_alloc(1, cap, 1, 1);
+  size_t len2 = SIZE_MAX;
+  st_ = hdt_svg(t, size, title, flags, (char *)text.p, cap, &len2);
+  CHECK(len2 == len && st_ == (cap < len + 1 ? HDT_EBUFS : HDT_OK), "hdt_svg(capacity %zu, length %zu): %s", cap, len,
+        st(st_));
+  out_untouched_from(&text, st_ == HDT_OK ? len + 1 : 0, cap, "hdt_svg", "text");
+  if (st_ == HDT_OK) CHECK(text.p[len] == 0 && strlen((char *)text.p) == len, "hdt_svg: text not NUL-terminated at %zu", len);
+  free(text.p);
+}
+
 static void op_null(reader *r, state *s) {
   (void)r;
   (void)s;
@@ -1072,10 +1437,24 @@ static void op_null(reader *r, state *s) {
                             hdt_translation_matrix(NULL, 0, m),
                             hdt_locate(NULL, 0, 0, &n, &tr),
                             hdt_nearest_vertex(NULL, 0, 0, &v),
-                            hdt_validate(NULL)};
+                            hdt_validate(NULL),
+                            hdt_svg(NULL, 100, NULL, 0, NULL, 0, &n),
+                            hdt_save(NULL, NULL, 0, &n),
+                            hdt_face_neighbours(NULL, NULL, NULL, 0, &n),
+                            hdt_vertex_star(NULL, 0, NULL, NULL, NULL, 0, &n),
+                            hdt_edges(NULL, NULL, NULL, NULL, NULL, 0, &n),
+                            hdt_face_points(NULL, NULL, 0, &n),
+                            hdt_voronoi_vertices(NULL, NULL, NULL, 0, &n),
+                            hdt_voronoi_edges(NULL, NULL, 0, &n),
+                            hdt_voronoi_cell(NULL, 0, NULL, 0, &n),
+                            hdt_refine(NULL, 1, 1, 0, &n, &n),
+                            hdt_epsilon_net(NULL, 1, 0, &n, &n),
+                            hdt_quality(NULL, &x, &y, &x, &y),
+                            hdt_set_progress(NULL, NULL, NULL, 0)};
   for (size_t i = 0; i < sizeof got / sizeof got[0]; ++i)
     CHECK(got[i] == HDT_EINVAL, "call %zu of the NULL-handle list: %s", i, st(got[i]));
-  CHECK(v == 7 && n == 7 && tr == 7, "a call on a NULL handle wrote an output");
+  CHECK(v == 7 && n == 7 && tr == 7 && x == 0 && y == 0, "a call on a NULL handle wrote an output");
+  CHECK(hdt_edge_count(NULL) == 0, "hdt_edge_count(NULL)");
   hdt_destroy(NULL);
 }
 
@@ -1088,6 +1467,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
       op_create,         op_insert, op_insert, op_insert,      op_insert,   op_insert_many, op_insert_many,
       op_remove,         op_remove, op_remove, op_remove_dummies, op_locate, op_locate,    op_faces,
       op_translation,    op_vertex, op_words,  op_null,        op_vertices,
+      /* HDT_0.3 .. HDT_0.5 */
+      op_dual,           op_dual,   op_save_load, op_refine,   op_svg,
   };
   if (trace_on < 0) {
     const char *e = getenv("HDT_FUZZ_TRACE");

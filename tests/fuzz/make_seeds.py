@@ -22,6 +22,7 @@ import sys
 # Operation kinds: indices into the ops[] table of fuzz_api.c.
 CREATE, INSERT, INSERT_MANY, REMOVE, REMOVE_DUMMIES, LOCATE, FACES, TRANSLATION, VERTEX, WORDS, NULL, VERTICES = (
     0, 1, 5, 7, 10, 11, 13, 14, 15, 16, 17, 18)
+DUAL, SAVE_LOAD, REFINE, SVG = 19, 21, 22, 23
 
 
 def u8(b):
@@ -192,6 +193,34 @@ def vertices(mode, slot=0, null_ids=False, null_xy=False, null_dummy=False, null
     raise ValueError("no byte for that vertices call")
 
 
+def dual(kind, cap_mode, drop=0, v=5, slot=0):
+    """op_dual: kind 0 neighbours, 1 star, 2 edges, 3 face points, 4 Voronoi
+    vertices, 5 Voronoi edges, 6 cell (of vertex v mod the id bound);
+    capacity mode 0 asks, 1 one short, 2 exact, 3 more; drop: NULL outputs."""
+    out = u8(DUAL) + u8(slot) + u8(kind) + u8(cap_mode | (drop << 2))
+    return out + (u8(2) + u16(v) if kind in (1, 6) else b"")
+
+
+def save_load(cap_mode, cut, at, xor, replace=False, slot=0):
+    """op_save_load: save (capacity mode as dual's, 0 = exact), load, then a
+    prefix of cut bytes and the bytes with byte `at` xor-ed (both mod the size)."""
+    return u8(SAVE_LOAD) + u8(slot) + u8(cap_mode | (0x80 if replace else 0)) + u16(cut) + u16(at) + u8(xor)
+
+
+def refine(what, radius_i, ratio_i, cap, progress=None, slot=0):
+    """op_refine: what (the low two bits, mod 3) 0 hdt_refine, 1 hdt_epsilon_net, 2 hdt_quality; radius
+    and ratio index op_refine's tables; progress: None (unchanged), 'set',
+    'off', 'nan' (an invalid interval)."""
+    b = what | {None: 0, "set": 0x10, "off": 0x90, "nan": 0x50}[progress]
+    return u8(REFINE) + u8(slot) + u8(b) + u8(radius_i) + u8(ratio_i) + u8(cap)
+
+
+def svg(size_i, flags, title=False, cap_mode=2, slot=0):
+    """op_svg: size index into op_svg's table, flags (8 = unknown), capacity mode."""
+    b = size_i | (0x80 if flags == 8 else (flags & 6) << 3) | (0x40 if title else 0)
+    return u8(SVG) + u8(slot) + u8(b) + u8(cap_mode)
+
+
 def genus(g):
     return u8(g - 2)
 
@@ -252,6 +281,17 @@ SEEDS = {
     "locate-nasty": genus(2) + locate(polygon_vertex(0)) + locate(on_side(1, 0.5)) + locate(near_circle(7, 0))
     + locate(special(27, 0)) + nearest(polygon_vertex(2, ulps(-1, 1))) + nearest(near_circle(123, 2))
     + locate(tiny(1, 1, 1074), flags=7),
+    "dual": genus(2) + insert_many(grid(3)) + b"".join(dual(k, m) for k in range(7) for m in (1, 2))
+    + dual(0, 2, drop=1) + dual(2, 2, drop=7) + dual(1, 2, v=40000) + dual(4, 3, drop=2) + remove_dummies()
+    + dual(6, 2, v=3),
+    "dual-capacities": genus(3) + insert(dyadic(0.1, 0.2)) + b"".join(dual(k, m) for k in range(7) for m in (0, 3)),
+    "save-load": genus(3) + insert_many(grid(3)) + save_load(0, 100, 7, 1) + save_load(1, 0, 0, 0x80)
+    + save_load(2, 5, 60, 3, replace=True) + remove_dummies() + faces(2),
+    "refine": genus(2) + refine(0, 0, 0, 8, progress="set") + refine(1, 1, 0, 4) + refine(2, 0, 0, 0)
+    + refine(0, 7, 0, 3) + refine(0, 0, 4, 3) + refine(1, 4, 0, 3, progress="nan") + refine(0, 4, 3, 8)
+    + insert_many(grid(2)) + refine(0, 2, 1, 8, progress="off"),
+    "svg": genus(2) + insert(dyadic(0.1, 0.2)) + svg(0, 0) + svg(1, 4, title=True, cap_mode=1) + svg(2, 2, cap_mode=3)
+    + svg(3, 0) + svg(5, 0) + svg(7, 0) + svg(0, 8),
     "subnormals": genus(2) + insert(tiny(1, 0, 0)) + insert(tiny(0, 1, 1074)) + insert(tiny(-1, 1, 1070))
     + insert(special(11, 12)) + insert(special(13, 0)) + insert(special(9, 10)),
 }
