@@ -28,7 +28,8 @@ namespace {
 
 Circle face_circle(const Triangulation &tri, const Face &f) {
   using hdt::triangulation::face_corner;
-  return hdt::triangulation::circumcircle(face_corner(tri, f, 0), face_corner(tri, f, 1), face_corner(tri, f, 2));
+  const Point p[3] = {face_corner(tri, f, 0), face_corner(tri, f, 1), face_corner(tri, f, 2)};
+  return hdt::triangulation::circumcircle(tri, f, p);
 }
 
 // The matrices of every corner translation (and, with `across`, of every

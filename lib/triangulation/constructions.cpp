@@ -14,8 +14,11 @@
 #pragma GCC optimize("fp-contract=off")
 #endif
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "triangulation/precise_circumcircle.hpp"
 
 namespace hdt::triangulation {
 
@@ -51,20 +54,41 @@ Point face_corner(const Triangulation &tri, const Face &f, int i) {
   return tri.table().moebius(f.t[i]).apply(Point{u.x, u.y});
 }
 
-Circle circumcircle(const Point &p0, const Point &p1, const Point &p2) {
+bool try_circumcircle(const Point &p0, const Point &p1, const Point &p2, bool rounded, Circle *circle) {
   const Point w1 = to_origin(p0, p1), w2 = to_origin(p0, p2);
   // The Euclidean circle through 0, w1, w2: its centre c has 2 c.w = |w|^2.
   const double n1 = w1.re * w1.re + w1.im * w1.im, n2 = w2.re * w2.re + w2.im * w2.im;
   const double cross = 2 * (w1.re * w2.im - w1.im * w2.re);
-  if (!(cross != 0)) throw std::logic_error("circumcircle: the three points are collinear");
+  // Resolved in double when nothing underflows (|w| > 2^-250) and the
+  // angle at p0 has sine > 2^-15: the differences are formed first, so the
+  // centre's relative error is then within about 2^-52 / sin. Corners that
+  // are rounded (translated, or a dummy's algebraic point) carry errors of
+  // a few ulps, which move the circle by about ulp / (edge x sin): that
+  // product must exceed 2^-30 too (a relative error below 2^-20 at worst,
+  // and far below on any face not built from nearly coincident points).
+  if (!(n1 > 0x1p-500 && n2 > 0x1p-500 && cross * cross > 0x1p-28 * (n1 * n2))) return false;
+  if (rounded) {
+    const double dr = w1.re - w2.re, di = w1.im - w2.im;
+    const double shortest = std::min({n1, n2, dr * dr + di * di}), sine2 = cross * cross / (4 * n1 * n2);
+    if (!(shortest * sine2 > 0x1p-60)) return false;
+  }
   const Point c{(n1 * w2.im - n2 * w1.im) / cross, (n2 * w1.re - n1 * w2.re) / cross};
   // Its diameter from 0 ends at 2c, Euclidean length s < 1, hyperbolic
   // length 2 atanh(s); the hyperbolic centre is that diameter's midpoint,
   // at Euclidean distance tanh(atanh(s) / 2) = s / (1 + sqrt(1 - s^2)).
   const double s = 2 * std::sqrt(c.re * c.re + c.im * c.im);
-  if (!(s < 1)) throw std::logic_error("circumcircle: the circle is not a hyperbolic circle");
+  if (!(s < 1)) return false;
   const double k = 2 / (1 + std::sqrt((1 - s) * (1 + s)));
-  return {from_origin(p0, Point{k * c.re, k * c.im}), std::atanh(s)};
+  *circle = {from_origin(p0, Point{k * c.re, k * c.im}), std::atanh(s)};
+  return true;
+}
+
+Circle circumcircle(const Triangulation &tri, const Face &f, const Point p[3]) {
+  bool rounded = false;
+  for (int i = 0; i < 3; ++i) rounded |= f.t[i] != 0 || tri.site_of(f.v[i]) >= 0;
+  Circle c;
+  if (try_circumcircle(p[0], p[1], p[2], rounded, &c)) return c;
+  return precise_circumcircle(tri, f);
 }
 
 double distance(const Point &p, const Point &q) {

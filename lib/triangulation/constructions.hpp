@@ -21,9 +21,15 @@ struct Circle {
   Point centre;
   double radius;  // hyperbolic
 };
-// The hyperbolic circle through three distinct points of the disk that
-// bound a proper hyperbolic circle (every Delaunay face does).
-Circle circumcircle(const Point &p0, const Point &p1, const Point &p2);
+// The hyperbolic circle through three points of the disk, in double, or
+// false when double cannot resolve it (the conditions are in the .cpp);
+// rounded: some point is not exact (a translated or algebraic corner).
+bool try_circumcircle(const Point &p0, const Point &p1, const Point &p2, bool rounded, Circle *circle);
+
+// Face f's circumcircle, p its corners (face_corner): in double, or in
+// multiprecision from the exact data for the rare faces double cannot
+// resolve (precise_circumcircle.hpp). Every face has one.
+Circle circumcircle(const Triangulation &tri, const Face &f, const Point p[3]);
 
 // Hyperbolic distance in the Poincare disk (curvature -1).
 double distance(const Point &p, const Point &q);

@@ -22,8 +22,18 @@ Point to_origin(const Point &w, const Point &z) {
 }
 
 double angle_at(const Point &p, const Point &q, const Point &r) {
-  const Point a = to_origin(p, q), b = to_origin(p, r);
-  return std::atan2(std::fabs(a.re * b.im - a.im * b.re), a.re * b.re + a.im * b.im);
+  Point a = to_origin(p, q), b = to_origin(p, r);
+  double cross = a.re * b.im - a.im * b.re, dot = a.re * b.re + a.im * b.im;
+  if (cross == 0 && dot == 0) {
+    // Underflow on a face at the scale of 1e-200 (or corners that round to
+    // one point, angle 0): scaled by powers of two, the angle is the same.
+    const int ea = std::ilogb(std::max(std::fabs(a.re), std::fabs(a.im)));
+    const int eb = std::ilogb(std::max(std::fabs(b.re), std::fabs(b.im)));
+    if (ea == FP_ILOGB0 || eb == FP_ILOGB0) return 0;
+    a = {std::scalbn(a.re, -ea), std::scalbn(a.im, -ea)}, b = {std::scalbn(b.re, -eb), std::scalbn(b.im, -eb)};
+    cross = a.re * b.im - a.im * b.re, dot = a.re * b.re + a.im * b.im;
+  }
+  return std::atan2(std::fabs(cross), dot);
 }
 
 }  // namespace
@@ -44,7 +54,7 @@ double shortest_edge(const Point p[3]) {
 
 FaceShape face_shape(const Triangulation &tri, const Face &f) {
   const Point p[3] = {face_corner(tri, f, 0), face_corner(tri, f, 1), face_corner(tri, f, 2)};
-  return {circumcircle(p[0], p[1], p[2]), shortest_edge(p)};
+  return {circumcircle(tri, f, p), shortest_edge(p)};
 }
 
 double smallest_angle(const Triangulation &tri, const Face &f) {
