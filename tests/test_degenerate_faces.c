@@ -2,10 +2,11 @@
  * hdt_voronoi_edges, hdt_quality, refinement) must still answer, with the
  * circle through the face's corners. Each triangulation here comes from the
  * fuzzer (tests/fuzz/crashes/circumcircle-* and voronoi-needles), where
- * these calls returned HDT_EINTERNAL or a circle of radius above the
- * guarantee: corners at 1e-238 whose squares underflow, needles of points an
+ * these calls returned HDT_EINTERNAL, a circle of radius above the
+ * guarantee, or corners on the unit circle: corners at 1e-238 whose squares underflow, needles of points an
  * ulp off a line, a point an ulp from a dummy's algebraic point, a point
- * 2e-15 from the polygon's corner seen under a translation.
+ * 2e-15 from the polygon's corner seen under a translation, a point 5e-5
+ * from the unit circle.
  *
  * The check is independent of the library's formulas: every Voronoi vertex
  * is at the same hyperbolic distance, its radius, from the three corners
@@ -114,6 +115,28 @@ START_TEST(near_a_corner_under_a_translation) {
 }
 END_TEST
 
+START_TEST(a_point_near_the_circle) {
+  /* A point 5e-5 from the unit circle: its face corners came out on the
+     circle, (0.6, 0.8), from the long translation applied to it in double. */
+  hdt_triangulation *t;
+  ck_assert_int_eq(hdt_create(&t, 2), HDT_OK);
+  const double xy[] = {0x1.8p-4, 0x1.9p-3, 0x1.e9c49086985d9p-1, -0x1.2a78fbf3c777ap-2, 0x1.e9c49086985d9p-2,
+                       -0x1.2a78fbf3c777ap-3, 0x1.4000d21000d02p-751, 0x1.3000d05000dp-807};
+  insert_all(t, xy, 4);
+  const size_t f = hdt_face_count(t);
+  double *corners = malloc(48 * f);
+  size_t count = 0;
+  ck_assert_int_eq(hdt_face_points(t, corners, f, &count), HDT_OK);
+  /* F_g's copies that canonical faces reach stay well inside (|z| < 0.95 at genus 2). */
+  for (size_t i = 0; i < 3 * f; ++i)
+    expect(hypot(corners[2 * i], corners[2 * i + 1]) < 0.95, "corner %zu at (%a, %a)", i, corners[2 * i],
+           corners[2 * i + 1]);
+  free(corners);
+  check_circles(t);
+  hdt_destroy(t);
+}
+END_TEST
+
 int main(void) {
   Suite *s = suite_create("degenerate_faces");
   TCase *c = tcase_create("circles");
@@ -121,6 +144,7 @@ int main(void) {
   tcase_add_test(c, needles_an_ulp_off_a_line);
   tcase_add_test(c, an_ulp_from_a_dummy);
   tcase_add_test(c, near_a_corner_under_a_translation);
+  tcase_add_test(c, a_point_near_the_circle);
   suite_add_tcase(s, c);
   SRunner *sr = srunner_create(s);
   srunner_run_all(sr, CK_NORMAL);

@@ -13,8 +13,9 @@ namespace hdt::triangulation {
 using Point = group::Complex<double>;
 
 // Corner i of face f's canonical copy: the stored point under the corner's
-// translation (which includes the vertex's home), one Moebius map with the
-// table's last-bit-accurate matrix.
+// translation t (which includes the vertex's home h), one Moebius map with
+// the table's last-bit-accurate matrix; for a vertex with a home, its
+// representative under t h^-1 (which may add ids to the table).
 Point face_corner(const Triangulation &tri, const Face &f, int i);
 
 struct Circle {
