@@ -50,11 +50,15 @@ double one_minus_norm2(const Point &z) { return 1 - (z.re * z.re + z.im * z.im);
 
 Point face_corner(const Triangulation &tri, const Face &f, int i) {
   const Vertex &u = tri.vertices()[f.v[i]];
-  if (u.home == 0) return f.t[i] == 0 ? Point{u.x, u.y} : tri.table().moebius(f.t[i]).apply(Point{u.x, u.y});
-  // A point stored away from F_g may lie near the unit circle, where the
-  // long translation t to the face loses every bit in double (a corner came
-  // out at (0.6, 0.8), on the circle, for a point 5e-5 from it). Its
-  // representative (cached, accurate) under the short t h^-1 loses nothing.
+  // A point stored near the unit circle is far from F_g, and the long
+  // translation t to the face loses about log2(1 / (1 - |z|^2)) bits in
+  // double (every bit for a point 5e-5 from the circle: a corner came out at
+  // (0.6, 0.8), on it). Up to 1 - |z|^2 = 1/16 (4 bits, the points users
+  // give in or near F_g, and refinement's Steiner points), the stored point
+  // is used; beyond, its representative (cached, accurate) under the short
+  // t h^-1, which loses nothing but costs two table look-ups.
+  if (u.home == 0 || 1 - (u.x * u.x + u.y * u.y) > 0.0625)
+    return f.t[i] == 0 ? Point{u.x, u.y} : tri.table().moebius(f.t[i]).apply(Point{u.x, u.y});
   group::TranslationTable &T = tri.table();
   const TranslationId relative = T.compose(f.t[i], T.inverse(u.home));
   double x, y;
