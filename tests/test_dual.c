@@ -116,6 +116,13 @@ static void apply(const double m[4], double x, double y, double *ox, double *oy)
   *oy = (ni * dr - nr * di) / d2;
 }
 
+/* (z - w) / (1 - conj(w) z): the isometry taking w to 0, applied to z. */
+static void to_origin(double wx, double wy, double zx, double zy, double *ox, double *oy) {
+  const double nr = zx - wx, ni = zy - wy, dr = 1 - (wx * zx + wy * zy), di = -(wx * zy - wy * zx);
+  const double q = dr * dr + di * di;
+  *ox = (nr * dr + ni * di) / q, *oy = (ni * dr - nr * di) / q;
+}
+
 /* Hyperbolic distance by the cosh formula, in long double (the library
    uses an asinh formula in double). */
 static double hdist(double x1, double y1, double x2, double y2) {
@@ -134,17 +141,40 @@ static double hgap(double x1, double y1, double x2, double y2) {
 }
 
 /* The triangulations every case looks at: with and without dummies, genus 2
-   to 4. */
+   to 4; the last two with points all over the disk (radius 0.95), most of
+   them away from F_g, so that vertices have homes other than the identity
+   (the others' points lie in F_g). */
 typedef struct setup {
   int g;
   size_t n;
   int remove_dummies;
+  int wide;
 } setup;
-static const setup setups[] = {{2, 0, 0}, {2, 150, 1}, {3, 120, 0}, {3, 200, 1}, {4, 250, 1}};
+static const setup setups[] = {{2, 0, 0, 0},   {2, 150, 1, 0}, {3, 120, 0, 0}, {3, 200, 1, 0},
+                               {4, 250, 1, 0}, {2, 200, 1, 1}, {3, 150, 0, 1}};
 #define SETUPS (sizeof setups / sizeof setups[0])
 
+static hdt_triangulation *wide_triangulation(int genus, size_t n, uint64_t seed, int remove_dummies) {
+  hdt_triangulation *t = NULL;
+  OK(hdt_create(&t, genus));
+  double *xy = need(malloc((2 * n + 1) * sizeof *xy));
+  for (size_t i = 0; i < n;) {
+    const double x = 1.9 * uniform01(&seed) - 0.95, y = 1.9 * uniform01(&seed) - 0.95;
+    if (x * x + y * y >= 0.95 * 0.95) continue;
+    xy[2 * i] = x, xy[2 * i + 1] = y;
+    ++i;
+  }
+  OK(hdt_insert_many(t, xy, n, NULL));
+  if (remove_dummies) OK(hdt_remove_dummies(t, NULL));
+  free(xy);
+  return t;
+}
+
 static void load(size_t k, dual *d) {
-  read_dual(small_disk_triangulation(setups[k].g, setups[k].n, 0x5eed + k, setups[k].remove_dummies), d);
+  const setup *s = &setups[k];
+  read_dual(s->wide ? wide_triangulation(s->g, s->n, 0x5eed + k, s->remove_dummies)
+                    : small_disk_triangulation(s->g, s->n, 0x5eed + k, s->remove_dummies),
+            d);
 }
 
 /* ---- Cases ---- */
@@ -375,7 +405,12 @@ START_TEST(voronoi_cells_tile_the_surface) {
         expect(hypot(x - cell[2 * s], y - cell[2 * s + 1]) < 1e-12, "vertex %u: cell corner %zu is not its face's centre",
                v, s);
         const size_t t = (s + 1) % n;
-        const double ax = cell[2 * s] - vx, ay = cell[2 * s + 1] - vy, bx = cell[2 * t] - vx, by = cell[2 * t + 1] - vy;
+        /* Seen with v moved to the origin, where the geodesics from v are
+           diameters: the sides of the (geodesically convex) cell bow toward
+           v, and Euclidean angles about (vx, vy) itself could miss a turn. */
+        double ax, ay, bx, by;
+        to_origin(vx, vy, cell[2 * s], cell[2 * s + 1], &ax, &ay);
+        to_origin(vx, vy, cell[2 * t], cell[2 * t + 1], &bx, &by);
         turn += atan2(ax * by - ay * bx, ax * bx + ay * by);
         area += triangle_area(vx, vy, cell[2 * s], cell[2 * s + 1], cell[2 * t], cell[2 * t + 1]);
         /* The Voronoi edge dual to the edge from v between faces s and t. */
@@ -531,7 +566,7 @@ static void to_disk(mpfr_t p[3], double *x, double *y) {
    hyperboloid points (another formula than the library's). The worst
    errors found are printed for docs/dual.md. */
 START_TEST(constructions_against_mpfr) {
-  const setup cases[] = {{2, 200, 1}, {3, 300, 1}, {5, 400, 1}, {2, 0, 0}, {4, 0, 0}};
+  const setup cases[] = {{2, 200, 1, 0}, {3, 300, 1, 0}, {5, 400, 1, 0}, {2, 0, 0, 0}, {4, 0, 0, 0}};
   double worst_point = 0, worst_radius = 0, worst_length = 0, worst_corner_h = 0, worst_centre_h = 0;
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
     dual d;
