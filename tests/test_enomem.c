@@ -124,10 +124,13 @@ static void child(int genus) {
 }
 
 /* The second child: the outputs of HDT_0.4 that need memory of their own
-   (hdt_voronoi_vertices, hdt_voronoi_edges, hdt_edges with translations)
-   fail with HDT_ENOMEM under a limit their scratch exceeds, and write
-   nothing to the caller's buffers but the count; with memory back they
-   answer. */
+   (hdt_voronoi_edges: the circumcentres; hdt_voronoi_cell: the handle's
+   cache of them) fail with HDT_ENOMEM under a limit their scratch exceeds,
+   and write nothing to the caller's buffers but the count; with memory back
+   they answer. hdt_voronoi_vertices allocates nothing: it answers under the
+   limit, the same bytes as later. hdt_edges keeps only the translations
+   other than the identity: it may answer or refuse, and a refusal writes
+   nothing. */
 static void dual_child(int genus) {
   const size_t n = 200000;
   uint64_t rng = 0xD0A1 + (uint64_t)genus;
@@ -137,36 +140,49 @@ static void dual_child(int genus) {
   require(hdt_insert_many(t, xy, n, NULL) == HDT_OK, "hdt_insert_many: %s", hdt_last_error_message());
   const size_t F = hdt_face_count(t), E = hdt_edge_count(t);
   double *out = malloc(4 * E * sizeof *out), *radii = malloc(F * sizeof *radii);
+  double *centres = malloc(2 * F * sizeof *centres), *radii_later = malloc(F * sizeof *radii_later);
   int32_t *translations = malloc(E * sizeof *translations);
-  require(out && radii && translations, "no memory for the buffers");
+  require(out && radii && centres && radii_later && translations, "no memory for the buffers");
   memset(out, 0x5a, 4 * E * sizeof *out), memset(radii, 0x5a, F * sizeof *radii);
   memset(translations, 0x5a, E * sizeof *translations);
+  size_t count = 0;
+  /* A live vertex (a size query fills no cache). */
+  uint32_t v = 0;
+  while (hdt_voronoi_cell(t, v, NULL, 0, &count) != HDT_OK) ++v;
   struct rlimit old;
   require(getrlimit(RLIMIT_AS, &old) == 0, "getrlimit: %s", strerror(errno));
-  /* Less than any of the scratch vectors (2.4 MB and more here). */
+  /* Less than any of the scratch vectors (3.2 MB and more here). */
   const size_t headroom = (size_t)1 << 20;
   struct rlimit tight = {(rlim_t)(address_space_bytes() + headroom), old.rlim_max};
   require(setrlimit(RLIMIT_AS, &tight) == 0, "setrlimit: %s", strerror(errno));
-  size_t count = 0;
-  expect_out_of_memory(hdt_voronoi_vertices(t, out, radii, F, &count), "hdt_voronoi_vertices");
+  require(hdt_voronoi_vertices(t, centres, radii, F, &count) == HDT_OK,
+          "hdt_voronoi_vertices under the limit: %s", hdt_last_error_message());
   require(count == F, "hdt_voronoi_vertices: count %zu, F %zu", count, F);
   expect_out_of_memory(hdt_voronoi_edges(t, out, E, &count), "hdt_voronoi_edges");
-  expect_out_of_memory(hdt_edges(t, NULL, translations, NULL, NULL, E, &count), "hdt_edges");
+  require(count == E, "hdt_voronoi_edges: count %zu, E %zu", count, E);
+  expect_out_of_memory(hdt_voronoi_cell(t, v, out, E, &count), "hdt_voronoi_cell");
+  const hdt_status edges_status = hdt_edges(t, NULL, translations, NULL, NULL, E, &count);
   require(count == E, "hdt_edges: count %zu, E %zu", count, E);
+  if (edges_status != HDT_OK) expect_out_of_memory(edges_status, "hdt_edges");
   const unsigned char *bytes = (const unsigned char *)out;
   for (size_t i = 0; i < 4 * E * sizeof *out; ++i) require(bytes[i] == 0x5a, "a failed call wrote byte %zu", i);
-  bytes = (const unsigned char *)radii;
-  for (size_t i = 0; i < F * sizeof *radii; ++i) require(bytes[i] == 0x5a, "a failed call wrote radius byte %zu", i);
   bytes = (const unsigned char *)translations;
-  for (size_t i = 0; i < E * sizeof *translations; ++i) require(bytes[i] == 0x5a, "a failed call wrote byte %zu", i);
+  if (edges_status != HDT_OK)
+    for (size_t i = 0; i < E * sizeof *translations; ++i) require(bytes[i] == 0x5a, "a failed call wrote byte %zu", i);
   require(setrlimit(RLIMIT_AS, &old) == 0, "setrlimit back: %s", strerror(errno));
-  require(hdt_voronoi_vertices(t, out, radii, F, &count) == HDT_OK && hdt_voronoi_edges(t, out, E, &count) == HDT_OK &&
+  require(hdt_voronoi_vertices(t, out, radii_later, F, &count) == HDT_OK && hdt_voronoi_edges(t, out, E, &count) == HDT_OK &&
+              hdt_voronoi_cell(t, v, out, E, &count) == HDT_OK &&
               hdt_edges(t, NULL, translations, NULL, NULL, E, &count) == HDT_OK,
           "with memory back: %s", hdt_last_error_message());
-  printf("enomem g=%d: the HDT_0.4 outputs of %zu faces refused under a 1 MiB headroom, then answered\n", genus, F);
+  require(hdt_voronoi_vertices(t, out, radii_later, F, &count) == HDT_OK, "hdt_voronoi_vertices: %s",
+          hdt_last_error_message());
+  require(memcmp(out, centres, 2 * F * sizeof *out) == 0 && memcmp(radii, radii_later, F * sizeof *radii) == 0,
+          "hdt_voronoi_vertices under the limit and later differ");
+  printf("enomem g=%d: the HDT_0.4 outputs of %zu faces refused under a 1 MiB headroom (hdt_edges %s), then answered\n",
+         genus, F, edges_status == HDT_OK ? "answered" : "refused");
   fflush(stdout);
   hdt_destroy(t);
-  free(xy), free(out), free(radii), free(translations);
+  free(xy), free(out), free(radii), free(centres), free(radii_later), free(translations);
   _exit(0);
 }
 

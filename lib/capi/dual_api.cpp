@@ -5,8 +5,10 @@
 // translation ids and matrices, memory) before it writes to the caller's
 // buffers, so that a failure (HDT_ENOMEM above all) writes nothing but the
 // count.
+#include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "capi/guard.hpp"
@@ -19,37 +21,11 @@ using hdt::capi::ApiError;
 using hdt::capi::guarded;
 using hdt::capi::list_fits;
 using hdt::capi::of;
-using hdt::triangulation::Circle;
 using hdt::triangulation::Face;
 using hdt::triangulation::Point;
 using hdt::triangulation::Triangulation;
 
 namespace {
-
-Circle face_circle(const Triangulation &tri, const Face &f) {
-  using hdt::triangulation::face_corner;
-  const Point p[3] = {face_corner(tri, f, 0), face_corner(tri, f, 1), face_corner(tri, f, 2)};
-  return hdt::triangulation::circumcircle(tri, f, p);
-}
-
-// The matrices of every corner translation (and, with `across`, of every
-// translation between neighbours) computed now: what follows only applies
-// them and cannot fail half way through the caller's buffer.
-void warm_matrices(const Triangulation &tri, bool across) {
-  hdt::group::TranslationTable &T = tri.table();
-  for (const Face &f : tri.faces())
-    for (int i = 0; i < 3; ++i) {
-      if (f.t[i] != 0) T.moebius(f.t[i]);
-      if (across && f.nt[i] != 0) T.moebius(f.nt[i]);
-    }
-}
-
-// The per-vertex functions' scratch, reused from call to call on a thread:
-// a caller walking every vertex would otherwise pay an allocation per call.
-std::vector<hdt::triangulation::StarEntry> &star_scratch() {
-  thread_local std::vector<hdt::triangulation::StarEntry> star;
-  return star;
-}
 
 void check_vertex(const Triangulation &tri, uint32_t v) {
   if (v >= tri.vertices().size() || !tri.vertices()[v].alive())
@@ -83,14 +59,17 @@ HDT_API hdt_status hdt_vertex_star(const hdt_triangulation *t, uint32_t v, uint3
     const Triangulation &tri = of(t);
     if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
     check_vertex(tri, v);
-    std::vector<hdt::triangulation::StarEntry> &star = star_scratch();
+    std::vector<hdt::triangulation::StarEntry> &star = t->star;
     hdt::triangulation::vertex_star(tri, v, &star);
     if (!list_fits(star.size(), capacity, count, "faces")) return HDT_OK;
-    for (std::size_t k = 0; k < star.size(); ++k) {
-      if (faces) faces[k] = star[k].face;
-      if (corners) corners[k] = uint8_t(star[k].corner);
-      if (translations) translations[k] = star[k].translation;
-    }
+    // One loop per output: a caller walking every vertex pays this per call.
+    const std::size_t n = star.size();
+    if (faces)
+      for (std::size_t k = 0; k < n; ++k) faces[k] = star[k].face;
+    if (corners)
+      for (std::size_t k = 0; k < n; ++k) corners[k] = uint8_t(star[k].corner);
+    if (translations)
+      for (std::size_t k = 0; k < n; ++k) translations[k] = star[k].translation;
     return HDT_OK;
   });
 }
@@ -103,34 +82,42 @@ HDT_API hdt_status hdt_edges(const hdt_triangulation *t, uint32_t *vertices, int
                              double *lengths, size_t capacity, size_t *count) HDT_NOEXCEPT {
   return guarded("hdt_edges", [&] {
     using hdt::triangulation::edge_listed_with;
+    using hdt::triangulation::public_corner;
     const Triangulation &tri = of(t);
     const auto &all = tri.faces();
     if (!list_fits(all.size() / 2 * 3, capacity, count, "edges")) return HDT_OK;
-    // What may fail (new translation ids and matrices) first, then one pass
-    // that writes every output.
-    std::vector<int32_t> h;
+    // What may fail (new translation ids and matrices, memory) first. An
+    // edge between corners at the identity (most, inside F_g) has the
+    // identity; the others are few, kept as (edge, translation) in order.
+    // A corner is at the identity when its translation and its vertex's
+    // home are: with no home other than the identity (points given in F_g)
+    // the faces alone tell.
+    std::vector<std::pair<std::size_t, int32_t>> moved;
     if (translations) {
-      h.reserve(*count);
-      for (uint32_t f = 0; f < all.size(); ++f)
-        for (int i = 0; i < 3; ++i)
-          if (edge_listed_with(all[f], f, i)) h.push_back(hdt::triangulation::edge_translation(tri, all[f], i));
-      if (h.size() != *count) throw std::logic_error("hdt_edges: the edge count is not 3F/2");
-    }
-    if (lengths) warm_matrices(tri, false);
-    std::size_t k = 0;
-    for (uint32_t f = 0; f < all.size(); ++f)
-      for (int i = 0; i < 3; ++i) {
-        if (!edge_listed_with(all[f], f, i) || k == *count) continue;
-        const int a = (i + 1) % 3, b = (i + 2) % 3;
-        if (vertices) vertices[2 * k] = all[f].v[a], vertices[2 * k + 1] = all[f].v[b];
-        if (translations) translations[k] = h[k];
-        if (faces) faces[2 * k] = f, faces[2 * k + 1] = all[f].n[i];
-        if (lengths)
-          lengths[k] = hdt::triangulation::distance(hdt::triangulation::face_corner(tri, all[f], a),
-                                                    hdt::triangulation::face_corner(tri, all[f], b));
-        ++k;
+      bool homes = false;
+      for (const auto &u : tri.vertices()) homes |= u.alive() && u.home != 0;
+      std::size_t k = 0;
+      for (uint32_t f = 0; f < all.size(); ++f) {
+        const Face &A = all[f];
+        for (int i = 0; i < 3; ++i) {
+          if (!edge_listed_with(A, f, i)) continue;
+          const int a = (i + 1) % 3, b = (i + 2) % 3;
+          if (A.t[a] != 0 || A.t[b] != 0 || (homes && (public_corner(tri, A, a) != 0 || public_corner(tri, A, b) != 0))) {
+            const int32_t h = hdt::triangulation::edge_translation(tri, A, i);
+            if (h != 0) moved.push_back({k, h});
+          }
+          ++k;
+        }
       }
-    if (k != *count) throw std::logic_error("hdt_edges: the edge count is not 3F/2");
+      if (k != *count) throw std::logic_error("hdt_edges: the edge count is not 3F/2");
+    }
+    if (lengths) hdt::triangulation::warm_corner_matrices(tri, false);
+    // Then the writing, which cannot fail.
+    if (vertices || faces || lengths) hdt::triangulation::write_edges(tri, *count, vertices, faces, lengths);
+    if (translations) {
+      std::fill(translations, translations + *count, 0);
+      for (const auto &m : moved) translations[m.first] = m.second;
+    }
     return HDT_OK;
   });
 }
@@ -139,15 +126,10 @@ HDT_API hdt_status hdt_face_points(const hdt_triangulation *t, double *xy, size_
                                    size_t *count) HDT_NOEXCEPT {
   return guarded("hdt_face_points", [&] {
     const Triangulation &tri = of(t);
-    const auto &all = tri.faces();
-    if (!list_fits(all.size(), capacity, count, "faces")) return HDT_OK;
+    if (!list_fits(tri.faces().size(), capacity, count, "faces")) return HDT_OK;
     if (!xy) throw ApiError(HDT_EINVAL, "xy must not be NULL when capacity > 0");
-    warm_matrices(tri, false);
-    for (std::size_t f = 0; f < all.size(); ++f)
-      for (int i = 0; i < 3; ++i) {
-        const Point p = hdt::triangulation::face_corner(tri, all[f], i);
-        xy[6 * f + 2 * i] = p.re, xy[6 * f + 2 * i + 1] = p.im;
-      }
+    hdt::triangulation::warm_corner_matrices(tri, false);
+    hdt::triangulation::face_points(tri, xy);
     return HDT_OK;
   });
 }
@@ -156,15 +138,12 @@ HDT_API hdt_status hdt_voronoi_vertices(const hdt_triangulation *t, double *xy, 
                                         size_t *count) HDT_NOEXCEPT {
   return guarded("hdt_voronoi_vertices", [&] {
     const Triangulation &tri = of(t);
-    const auto &all = tri.faces();
-    if (!list_fits(all.size(), capacity, count, "faces")) return HDT_OK;
-    std::vector<Circle> circles;
-    circles.reserve(all.size());
-    for (const Face &f : all) circles.push_back(face_circle(tri, f));
-    for (std::size_t f = 0; f < all.size(); ++f) {
-      if (xy) xy[2 * f] = circles[f].centre.re, xy[2 * f + 1] = circles[f].centre.im;
-      if (radii) radii[f] = circles[f].radius;
-    }
+    if (!list_fits(tri.faces().size(), capacity, count, "faces")) return HDT_OK;
+    // The matrices first; then nothing allocates, and the results go
+    // straight to the caller's buffers (only a broken invariant, a logic
+    // error, could stop it part way).
+    hdt::triangulation::warm_corner_matrices(tri, false);
+    if (xy || radii) hdt::triangulation::voronoi_vertices(tri, xy, radii);
     return HDT_OK;
   });
 }
@@ -176,9 +155,9 @@ HDT_API hdt_status hdt_voronoi_edges(const hdt_triangulation *t, double *xy, siz
     const auto &all = tri.faces();
     if (!list_fits(all.size() / 2 * 3, capacity, count, "edges")) return HDT_OK;
     if (!xy) throw ApiError(HDT_EINVAL, "xy must not be NULL when capacity > 0");
-    warm_matrices(tri, true);
+    hdt::triangulation::warm_corner_matrices(tri, true);
     std::vector<Point> centre(all.size());
-    for (std::size_t f = 0; f < all.size(); ++f) centre[f] = face_circle(tri, all[f]).centre;
+    hdt::triangulation::face_centres(tri, centre.data());
     // hdt_edges' order: edge i of face f when f < its neighbour there (k
     // stops at the count: a broken invariant must not write past it).
     std::size_t k = 0;
@@ -200,18 +179,22 @@ HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, doub
     const Triangulation &tri = of(t);
     if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
     check_vertex(tri, v);
-    std::vector<hdt::triangulation::StarEntry> &star = star_scratch();
+    std::vector<hdt::triangulation::StarEntry> &star = t->star;
     hdt::triangulation::vertex_star(tri, v, &star);
     if (!list_fits(star.size(), capacity, count, "corners")) return HDT_OK;
     if (!xy) throw ApiError(HDT_EINVAL, "xy must not be NULL when capacity > 0");
-    // Matrices first: the loop below then cannot fail half way.
-    for (const auto &s : star)
-      if (s.translation != 0) tri.table().moebius(s.translation);
-    for (std::size_t k = 0; k < star.size(); ++k) {
-      const Point p =
-          hdt::triangulation::translate(tri, star[k].translation, face_circle(tri, tri.faces()[star[k].face]).centre);
-      xy[2 * k] = p.re, xy[2 * k + 1] = p.im;
+    // Into scratch first: a face's centre (cached on the handle, computed
+    // on first request) may need new matrices, and a failure must leave the
+    // caller's buffer untouched.
+    hdt::triangulation::CentreCache &cache = t->centres;
+    cache.reserve(tri);
+    std::vector<Point> &cell = t->cell;
+    cell.clear();
+    for (const auto &s : star) {
+      const Point c = cache.centre(tri, s.face);
+      cell.push_back(s.translation == 0 ? c : tri.table().moebius(s.translation).apply(c));
     }
+    for (std::size_t k = 0; k < cell.size(); ++k) xy[2 * k] = cell[k].re, xy[2 * k + 1] = cell[k].im;
     return HDT_OK;
   });
 }

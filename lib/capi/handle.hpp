@@ -7,6 +7,8 @@
 
 #include "capi/guard.hpp"
 #include "hdt.h"
+#include "triangulation/adjacency.hpp"
+#include "triangulation/constructions.hpp"
 #include "triangulation/progress.hpp"
 #include "triangulation/triangulation.hpp"
 
@@ -15,6 +17,14 @@ struct hdt_triangulation {
   explicit hdt_triangulation(hdt::triangulation::Triangulation &&t) : tri(std::move(t)) {}
   hdt::triangulation::Triangulation tri;
   hdt::triangulation::Progress progress;  // hdt_set_progress; none by default
+  // hdt_voronoi_cell's circumcentres, kept from call to call; entries check
+  // themselves against the faces, so changes need not clear it. And the
+  // per-vertex functions' scratch, reused from call to call (a caller
+  // walking every vertex would otherwise pay an allocation per call). Const
+  // queries may use them: one thread uses a handle at a time (hdt.h).
+  mutable hdt::triangulation::CentreCache centres;
+  mutable std::vector<hdt::triangulation::StarEntry> star;
+  mutable std::vector<hdt::triangulation::Point> cell;
 };
 
 namespace hdt::capi {

@@ -6,31 +6,29 @@
 
 namespace hdt::triangulation {
 
-TranslationId public_corner(const Triangulation &tri, const Face &f, int i) {
-  const TranslationId home = tri.vertices()[f.v[i]].home;
-  if (home == 0) return f.t[i];
-  group::TranslationTable &T = tri.table();
-  return T.compose(f.t[i], T.inverse(home));
-}
-
 void vertex_star(const Triangulation &tri, uint32_t v, std::vector<StarEntry> *out) {
   if (v >= tri.vertices().size() || !tri.vertices()[v].alive())
     throw std::invalid_argument("vertex " + std::to_string(v) + " is not a live vertex");
   group::TranslationTable &T = tri.table();
   const auto &faces = tri.faces();
   const uint32_t first = tri.vertices()[v].face;
+  // public_corner of v's corner in each face, with v's home read once.
+  const TranslationId home = tri.vertices()[v].home, home_inverse = T.inverse(home);
   out->clear();
+  std::size_t left = faces.size();  // a star that does not close is a broken invariant
   uint32_t f = first;
   do {
     const Face &F = faces[f];
-    int c = 0;
-    while (c < 3 && F.v[c] != v) ++c;
-    if (c == 3) throw std::logic_error("vertex_star: face " + std::to_string(f) + " does not hold vertex " +
-                                       std::to_string(v));
-    out->push_back({f, c, T.inverse(public_corner(tri, F, c))});
+    const int c = F.v[0] == v ? 0 : F.v[1] == v ? 1 : 2;
+    if (F.v[c] != v)
+      throw std::logic_error("vertex_star: face " + std::to_string(f) + " does not hold vertex " + std::to_string(v));
+    // (t h^-1)^-1 for the corner's t and v's home h; most corners, and
+    // most homes, are the identity.
+    const TranslationId t = F.t[c] == 0 ? home : T.inverse(T.compose(F.t[c], home_inverse));
+    out->push_back({f, c, t});
     // Counterclockwise about v: the next face holds the edge from v to the corner after it.
-    f = F.n[next(c)];
-    if (out->size() > faces.size()) throw std::logic_error("vertex_star: the star does not close");
+    f = F.n[c == 2 ? 0 : c + 1];
+    if (--left == 0 && f != first) throw std::logic_error("vertex_star: the star does not close");
   } while (f != first);
 }
 

@@ -13,7 +13,14 @@ namespace hdt::triangulation {
 
 // Corner i of face f as hdt_faces gives it: the element c with c(rep) at
 // that corner of the canonical copy, rep the vertex's representative.
-TranslationId public_corner(const Triangulation &tri, const Face &f, int i);
+// Inline: the edge list and the stars ask it of every corner, and most
+// vertices are at home in F_g.
+inline TranslationId public_corner(const Triangulation &tri, const Face &f, int i) {
+  const TranslationId home = tri.vertices()[f.v[i]].home;
+  if (home == 0) return f.t[i];
+  group::TranslationTable &T = tri.table();
+  return T.compose(f.t[i], T.inverse(home));
+}
 
 struct StarEntry {
   uint32_t face;

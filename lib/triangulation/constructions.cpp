@@ -24,8 +24,12 @@ namespace hdt::triangulation {
 
 namespace {
 
+// Forced inline: GCC keeps them as calls otherwise, a tenth of a
+// circumcentre's instructions.
+#define HDT_INLINE inline __attribute__((always_inline))
+
 // (z - w) / (1 - conj(w) z): the isometry taking w to 0, applied to z.
-Point to_origin(const Point &w, const Point &z) {
+HDT_INLINE Point to_origin(const Point &w, const Point &z) {
   const double nr = z.re - w.re, ni = z.im - w.im;
   const double dr = 1 - (w.re * z.re + w.im * z.im), di = -(w.re * z.im - w.im * z.re);
   const double r = 1 / (dr * dr + di * di);
@@ -33,31 +37,107 @@ Point to_origin(const Point &w, const Point &z) {
 }
 
 // (z + w) / (1 + conj(w) z): its inverse.
-Point from_origin(const Point &w, const Point &z) {
+HDT_INLINE Point from_origin(const Point &w, const Point &z) {
   const double nr = z.re + w.re, ni = z.im + w.im;
   const double dr = 1 + (w.re * z.re + w.im * z.im), di = w.re * z.im - w.im * z.re;
   const double r = 1 / (dr * dr + di * di);
   return {(nr * dr + ni * di) * r, (ni * dr - nr * di) * r};
 }
 
-// 1 - |z|^2, within a few units of 2^-53 absolutely: its relative error
-// grows like 1 / (1 - |z|^2), the disk's own conformal factor, which bounds
-// the accuracy of any double point there anyway. (No hypot: the points are
-// in the unit disk, nothing overflows, and hypot costs more than the rest.)
-double one_minus_norm2(const Point &z) { return 1 - (z.re * z.re + z.im * z.im); }
+// Whether a corner of vertex u is its stored point under the corner's
+// translation. A point stored near the unit circle is far from F_g, and
+// the long translation t to the face loses about log2(1 / (1 - |z|^2))
+// bits in double (every bit for a point 5e-5 from the circle: a corner came
+// out at (0.6, 0.8), on it). Up to 1 - |z|^2 = 1/16 (4 bits: the points
+// users give in or near F_g, refinement's Steiner points) the stored point
+// serves; beyond, face_corner takes its representative (cached, accurate)
+// under the short t h^-1, which loses nothing but costs two table look-ups.
+HDT_INLINE bool stored_point_serves(const Vertex &u) { return u.home == 0 || 1 - (u.x * u.x + u.y * u.y) > 0.0625; }
+
+// The corners of face f's canonical copy: most faces lie inside F_g, with
+// no translation at all.
+HDT_INLINE void corners(const Triangulation &tri, const Face &f, Point p[3]) {
+  const std::vector<Vertex> &V = tri.vertices();
+  for (int i = 0; i < 3; ++i) {
+    const Vertex &u = V[f.v[i]];
+    if (!stored_point_serves(u)) p[i] = face_corner(tri, f, i);
+    else p[i] = f.t[i] == 0 ? Point{u.x, u.y} : tri.table().moebius(f.t[i]).apply(Point{u.x, u.y});
+  }
+}
+
+// Whether some corner of f is rounded: translated, or a dummy's algebraic point.
+HDT_INLINE bool rounded_corners(const Triangulation &tri, const Face &f) {
+  bool rounded = false;
+  for (int i = 0; i < 3; ++i) rounded |= f.t[i] != 0 || tri.site_of(f.v[i]) >= 0;
+  return rounded;
+}
+
+// The dual outputs' circumcentre (see circumcentre() in the header). With
+// N_k = p_k - p0 and D_k = 1 - conj(p0) p_k, the corners moved to the origin
+// are w_k = A_k / |D_k|^2, A_k = N_k conj(D_k), and |w_k|^2 = |N_k|^2 / |D_k|^2:
+// the Euclidean centre c of 0, w1, w2 (2 c.w_k = |w_k|^2) is then free of
+// the |D_k|^2, c = i (|N_1|^2 A_2 - |N_2|^2 A_1) / (2 A_1 x A_2) with the
+// cross product A_1 x A_2 = Im(conj(A_1) A_2).
+//
+// False, nothing written, when double cannot resolve the face: the
+// conditions of try_circumcircle, in these terms (|A_k|^2 = m_k |D_k|^2, and
+// the Euclidean |p1 - p2| stands for the third edge).
+HDT_INLINE bool centre_of(const Point &p0, const Point &p1, const Point &p2, bool rounded, Point *centre,
+                          double *radius) {
+  const double n1r = p1.re - p0.re, n1i = p1.im - p0.im, n2r = p2.re - p0.re, n2i = p2.im - p0.im;
+  const double d1r = 1 - (p0.re * p1.re + p0.im * p1.im), d1i = -(p0.re * p1.im - p0.im * p1.re);
+  const double d2r = 1 - (p0.re * p2.re + p0.im * p2.im), d2i = -(p0.re * p2.im - p0.im * p2.re);
+  const double a1r = n1r * d1r + n1i * d1i, a1i = n1i * d1r - n1r * d1i;
+  const double a2r = n2r * d2r + n2i * d2i, a2i = n2i * d2r - n2r * d2i;
+  const double m1 = n1r * n1r + n1i * n1i, m2 = n2r * n2r + n2i * n2i;
+  const double cross = 2 * (a1r * a2i - a1i * a2r);
+  const double norms = (a1r * a1r + a1i * a1i) * (a2r * a2r + a2i * a2i);
+  if (!(m1 > 0x1p-500 && m2 > 0x1p-500 && cross * cross > 0x1p-28 * norms)) return false;
+  if (rounded) {
+    const double er = p1.re - p2.re, ei = p1.im - p2.im;
+    const double shortest = std::min({m1, m2, er * er + ei * ei}), sine2 = cross * cross / (4 * norms);
+    if (!(shortest * sine2 > 0x1p-60)) return false;
+  }
+  const double inv = 1 / cross;
+  const double cr = (m1 * a2i - m2 * a1i) * inv, ci = (m2 * a1r - m1 * a2r) * inv;
+  // The circle's diameter from 0 ends at 2c, Euclidean length s < 1,
+  // hyperbolic length 2 atanh(s); the hyperbolic centre is its midpoint, at
+  // Euclidean distance tanh(atanh(s) / 2) = s / (1 + sqrt(1 - s^2)). (s is
+  // at most tanh(sys/4) < 0.9, so 1 - s^2 loses nothing.)
+  const double s2 = 4 * (cr * cr + ci * ci);
+  if (!(s2 < 1)) return false;
+  const double k = 2 / (1 + std::sqrt(1 - s2));
+  // atanh(s) = log1p(2s / (1 - s)) / 2, without atanh's case split.
+  if (radius) {
+    const double s = std::sqrt(s2);
+    *radius = 0.5 * std::log1p(2 * s / (1 - s));
+  }
+  *centre = from_origin(p0, Point{k * cr, k * ci});
+  return true;
+}
+
+// centre_of, or the multiprecision fallback.
+HDT_INLINE Point face_centre(const Triangulation &tri, const Face &f, const Point p[3], double *radius) {
+  Point c;
+  if (centre_of(p[0], p[1], p[2], rounded_corners(tri, f), &c, radius)) return c;
+  const Circle precise = precise_circumcircle(tri, f);
+  if (radius) *radius = precise.radius;
+  return precise.centre;
+}
+
+// 2 asinh(x) = log1p(2 x^2 + 2 x sqrt(1 + x^2)) for x^2 = q: one square
+// root and one logarithm.
+HDT_INLINE double length_of(const Point &p, const Point &q, double wp, double wq) {
+  const double dx = p.re - q.re, dy = p.im - q.im;
+  const double x2 = (dx * dx + dy * dy) / (wp * wq);
+  return std::log1p(2 * (x2 + std::sqrt(x2 * (1 + x2))));
+}
 
 }  // namespace
 
 Point face_corner(const Triangulation &tri, const Face &f, int i) {
   const Vertex &u = tri.vertices()[f.v[i]];
-  // A point stored near the unit circle is far from F_g, and the long
-  // translation t to the face loses about log2(1 / (1 - |z|^2)) bits in
-  // double (every bit for a point 5e-5 from the circle: a corner came out at
-  // (0.6, 0.8), on it). Up to 1 - |z|^2 = 1/16 (4 bits, the points users
-  // give in or near F_g, and refinement's Steiner points), the stored point
-  // is used; beyond, its representative (cached, accurate) under the short
-  // t h^-1, which loses nothing but costs two table look-ups.
-  if (u.home == 0 || 1 - (u.x * u.x + u.y * u.y) > 0.0625)
+  if (stored_point_serves(u))
     return f.t[i] == 0 ? Point{u.x, u.y} : tri.table().moebius(f.t[i]).apply(Point{u.x, u.y});
   group::TranslationTable &T = tri.table();
   const TranslationId relative = T.compose(f.t[i], T.inverse(u.home));
@@ -96,21 +176,104 @@ bool try_circumcircle(const Point &p0, const Point &p1, const Point &p2, bool ro
 }
 
 Circle circumcircle(const Triangulation &tri, const Face &f, const Point p[3]) {
-  bool rounded = false;
-  for (int i = 0; i < 3; ++i) rounded |= f.t[i] != 0 || tri.site_of(f.v[i]) >= 0;
   Circle c;
-  if (try_circumcircle(p[0], p[1], p[2], rounded, &c)) return c;
+  if (try_circumcircle(p[0], p[1], p[2], rounded_corners(tri, f), &c)) return c;
   return precise_circumcircle(tri, f);
 }
 
+Point circumcentre(const Triangulation &tri, const Face &f, const Point p[3], double *radius) {
+  return face_centre(tri, f, p, radius);
+}
+
 double distance(const Point &p, const Point &q) {
-  const double dx = p.re - q.re, dy = p.im - q.im, d = std::sqrt(dx * dx + dy * dy);
-  return 2 * std::asinh(d / std::sqrt(one_minus_norm2(p) * one_minus_norm2(q)));
+  return length_of(p, q, 1 - (p.re * p.re + p.im * p.im), 1 - (q.re * q.re + q.im * q.im));
 }
 
 Point translate(const Triangulation &tri, group::TranslationId h, const Point &p) {
   if (h == 0) return p;
   return tri.table().moebius(h).apply(p);
+}
+
+void warm_corner_matrices(const Triangulation &tri, bool across) {
+  group::TranslationTable &T = tri.table();
+  for (const Face &f : tri.faces()) {
+    if ((f.t[0] | f.t[1] | f.t[2]) != 0)
+      for (int i = 0; i < 3; ++i)
+        if (f.t[i] != 0) T.moebius(f.t[i]);
+    if (across && (f.nt[0] | f.nt[1] | f.nt[2]) != 0)
+      for (int i = 0; i < 3; ++i)
+        if (f.nt[i] != 0) T.moebius(f.nt[i]);
+  }
+}
+
+void face_points(const Triangulation &tri, double *xy) {
+  const std::vector<Face> &F = tri.faces();
+  for (std::size_t f = 0; f < F.size(); ++f) {
+    Point p[3];
+    corners(tri, F[f], p);
+    for (int i = 0; i < 3; ++i) xy[6 * f + 2 * i] = p[i].re, xy[6 * f + 2 * i + 1] = p[i].im;
+  }
+}
+
+void voronoi_vertices(const Triangulation &tri, double *xy, double *radii) {
+  const std::vector<Face> &F = tri.faces();
+  for (std::size_t f = 0; f < F.size(); ++f) {
+    Point p[3];
+    corners(tri, F[f], p);
+    const Point c = face_centre(tri, F[f], p, radii ? radii + f : nullptr);
+    if (xy) xy[2 * f] = c.re, xy[2 * f + 1] = c.im;
+  }
+}
+
+void write_edges(const Triangulation &tri, std::size_t count, uint32_t *vertices, uint32_t *faces, double *lengths) {
+  const std::vector<Face> &F = tri.faces();
+  std::size_t k = 0;
+  for (uint32_t f = 0; f < F.size(); ++f) {
+    const Face &A = F[f];
+    // The smaller face of an edge lists it (adjacency.hpp); a face's
+    // corners and their factors 1 - |z|^2 serve all the edges it lists.
+    if (!(A.n[0] > f || A.n[1] > f || A.n[2] > f)) continue;
+    Point p[3];
+    double w[3];
+    if (lengths) {
+      corners(tri, A, p);
+      for (int i = 0; i < 3; ++i) w[i] = 1 - (p[i].re * p[i].re + p[i].im * p[i].im);
+    }
+    for (int i = 0; i < 3; ++i) {
+      if (!(A.n[i] > f)) continue;
+      if (k == count) throw std::logic_error("write_edges: more edges than 3F/2");
+      const int a = next(i), b = prev(i);
+      if (vertices) vertices[2 * k] = A.v[a], vertices[2 * k + 1] = A.v[b];
+      if (faces) faces[2 * k] = f, faces[2 * k + 1] = A.n[i];
+      if (lengths) lengths[k] = length_of(p[a], p[b], w[a], w[b]);
+      ++k;
+    }
+  }
+  if (k != count) throw std::logic_error("write_edges: fewer edges than 3F/2");
+}
+
+void face_centres(const Triangulation &tri, Point *out) {
+  const std::vector<Face> &F = tri.faces();
+  for (std::size_t f = 0; f < F.size(); ++f) {
+    Point p[3];
+    corners(tri, F[f], p);
+    out[f] = face_centre(tri, F[f], p, nullptr);
+  }
+}
+
+void CentreCache::reserve(const Triangulation &tri) {
+  // A never-used entry names vertex kNone, which no face holds.
+  if (entries_.size() < tri.faces().size()) entries_.resize(tri.faces().size(), Entry{{kNone, kNone, kNone}, {}, {}});
+}
+
+Point CentreCache::compute(const Triangulation &tri, uint32_t f) {
+  const Face &F = tri.faces()[f];
+  Entry &e = entries_[f];
+  Point p[3];
+  corners(tri, F, p);
+  e.centre = face_centre(tri, F, p, nullptr);
+  e.v = F.v, e.t = F.t;
+  return e.centre;
 }
 
 }  // namespace hdt::triangulation

@@ -5,6 +5,10 @@
 // measured by tests/test_dual.c against a 256-bit MPFR recomputation).
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <vector>
+
 #include "group/moebius.hpp"
 #include "triangulation/triangulation.hpp"
 
@@ -25,6 +29,8 @@ struct Circle {
 // The hyperbolic circle through three points of the disk, in double, or
 // false when double cannot resolve it (the conditions are in the .cpp);
 // rounded: some point is not exact (a translated or algebraic corner).
+// Refinement's and the quality measures' form: refinement inserts these
+// centres.
 bool try_circumcircle(const Point &p0, const Point &p1, const Point &p2, bool rounded, Circle *circle);
 
 // Face f's circumcircle, p its corners (face_corner): in double, or in
@@ -32,10 +38,65 @@ bool try_circumcircle(const Point &p0, const Point &p1, const Point &p2, bool ro
 // resolve (precise_circumcircle.hpp). Every face has one.
 Circle circumcircle(const Triangulation &tri, const Face &f, const Point p[3]);
 
+// The dual outputs' form of the same construction (Voronoi vertices, edges
+// and cells all use it, so they agree to the bit): the Moebius maps'
+// denominators cancelled, one logarithm for the radius only when asked
+// (radius may be null), the same fallback. Within a few units in the last
+// place of circumcircle().
+Point circumcentre(const Triangulation &tri, const Face &f, const Point p[3], double *radius);
+
 // Hyperbolic distance in the Poincare disk (curvature -1).
 double distance(const Point &p, const Point &q);
 
 // h(p) for a translation id h.
 Point translate(const Triangulation &tri, group::TranslationId h, const Point &p);
+
+// Whole outputs, in hdt_faces' face order and hdt_edges' edge order. They
+// need the matrices of the corner translations (and of the neighbour
+// translations for hdt_voronoi_edges): warm_corner_matrices() computes
+// those first, which may fail (memory); after it these allocate nothing,
+// so a caller can write into its user's buffers.
+void warm_corner_matrices(const Triangulation &tri, bool across);
+void face_points(const Triangulation &tri, double *xy);                  // 6 per face
+void voronoi_vertices(const Triangulation &tri, double *xy, double *radii);  // 2 and 1 per face, either null
+// hdt_edges' vertices, faces and lengths (each may be null), count = 3F/2.
+void write_edges(const Triangulation &tri, std::size_t count, uint32_t *vertices, uint32_t *faces, double *lengths);
+void face_centres(const Triangulation &tri, Point *out);                // 1 per face
+
+// The circumcentres of the faces' canonical copies, each computed on first
+// request and kept: a Voronoi cell needs the centres of its vertex's star,
+// and every face is in three stars. An entry holds the face's vertices and
+// corner translations beside the centre and is used only while the face at
+// that index still has them: vertex ids are never reused and a vertex's
+// point never changes, so they determine the centre, and every change of the
+// triangulation leaves stale entries that no longer match (no hook in the
+// core). 40 bytes per face once used. Not thread-safe: it belongs to a
+// handle, which one thread uses at a time (hdt.h).
+class CentreCache {
+ public:
+  // Room for every face (may throw std::bad_alloc); nothing else allocates.
+  void reserve(const Triangulation &tri);
+  // The circumcentre of face f's canonical copy (the same bits as
+  // circumcentre() of face_corners()). reserve() first; the face's corner
+  // matrices may be computed (as face_corner does).
+  Point centre(const Triangulation &tri, uint32_t f) {
+    const Face &F = tri.faces()[f];
+    const Entry &e = entries_[f];
+    // Compared one by one: std::array's == calls memcmp.
+    if (e.v[0] == F.v[0] && e.v[1] == F.v[1] && e.v[2] == F.v[2] && e.t[0] == F.t[0] && e.t[1] == F.t[1] &&
+        e.t[2] == F.t[2])
+      return e.centre;
+    return compute(tri, f);
+  }
+
+ private:
+  Point compute(const Triangulation &tri, uint32_t f);
+  struct Entry {
+    std::array<uint32_t, 3> v;
+    std::array<TranslationId, 3> t;
+    Point centre;
+  };
+  std::vector<Entry> entries_;
+};
 
 }  // namespace hdt::triangulation
