@@ -135,16 +135,18 @@ Triangulation Triangulation::rebuild(const Snapshot &s) {
 }
 
 Triangulation Triangulation::restore(const Snapshot &s) {
-  {
-    // validate() may give new translation ids to products it meets; it runs
-    // on a scratch copy so that the result's table is exactly the saved one.
-    const Triangulation scratch = rebuild(s);
-    try {
-      scratch.validate();
-    } catch (const std::logic_error &e) {
-      throw SnapshotError(SnapshotError::kStructure, 0, e.what());
-    }
+  Triangulation t = rebuild(s);
+  const std::size_t ids = t.table().size();
+  try {
+    t.validate();
+  } catch (const std::logic_error &e) {
+    throw SnapshotError(SnapshotError::kStructure, 0, e.what());
   }
+  // validate() may give new translation ids to products it meets; the
+  // result's table must be exactly the saved one (saving it again gives the
+  // same bytes), so then it is built once more. Otherwise validate() changed
+  // only caches that hold for the same ids.
+  if (t.table().size() == ids) return t;
   return rebuild(s);
 }
 

@@ -89,12 +89,19 @@ void Triangulation::validate() const {
     // link[j + 1] when link[j] is strictly clockwise of it and link[j + 1] is
     // not. (Summed angles in double were wrong for vertices a few ulps apart
     // near the circle: the tangent directions cancel to nothing.)
+    // With o_j = orientation(centre, link[j], link[0]) (o_0 = 0: link[0]
+    // twice), the step from j to j + 1 passes when o_j > 0 and o_{j+1} <= 0
+    // (orientation(centre, link[0], b) = -o for b = link[j + 1], exactly):
+    // one exact orientation per face around v, none on the degenerate
+    // triple (which no filter decides: it cost an exact evaluation per
+    // vertex).
     const TranslatedPoint centre = corner(faces_[star_[0].face], star_[0].corner);
     long winding = 0;
+    int o = link.size() > 1 ? kernel_->orientation(centre, link[1], link[0]) : 0;
     for (std::size_t j = 1; j < link.size(); ++j) {
-      const TranslatedPoint &b = j + 1 < link.size() ? link[j + 1] : link[0];
-      if (kernel_->orientation(centre, link[j], link[0]) > 0 && kernel_->orientation(centre, link[0], b) >= 0)
-        ++winding;
+      const int o_next = j + 1 < link.size() ? kernel_->orientation(centre, link[j + 1], link[0]) : 0;
+      if (o > 0 && o_next <= 0) ++winding;
+      o = o_next;
     }
     if (winding != 1)
       broken("the faces around vertex " + std::to_string(v) + " turn " + std::to_string(winding) + " times");
