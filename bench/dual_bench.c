@@ -1,12 +1,17 @@
 /* The cost of the adjacency, edge, corner and Voronoi outputs (HDT_0.4)
  * next to hdt_faces on the same triangulation: N points uniform for area in
  * F_g, dummies removed; each output fetched whole (the stars and cells one
- * vertex at a time, every vertex), best of three warm runs.
+ * vertex at a time, every vertex): the first call, then the best of
+ * `calls - 1` more. Then the cost of saving and loading that triangulation
+ * next to hdt_insert_many of its points.
  *
- *   dual_bench [--n 1000000] [--genus 2]
+ *   dual_bench [--n 1000000] [--genus 2] [--calls 4]
  *
  * Prints one line per output: milliseconds and the ratio to hdt_faces
- * (vertex ids and translations). docs/dual.md quotes it. */
+ * (vertex ids and translations), first call and best later call; then
+ * hdt_insert_many, hdt_save and hdt_load (first and best) in ms. With
+ * --calls 1 each function runs once, for callgrind --toggle-collect.
+ * docs/dual.md and docs/format.md quote it. */
 #define _POSIX_C_SOURCE 200809L
 
 #include <stdint.h>
@@ -58,16 +63,28 @@ static void cells(void) {
   }
 }
 
-static double best_ms(void (*f)(void)) {
-  f(); /* warm: first use of translation products and matrices */
-  double best = 1e300;
-  for (int k = 0; k < 3; ++k) {
+static int calls = 4;
+
+/* The first call (it may compute translation products, matrices or cached
+   circumcentres), then the best of the others (0 with --calls 1). */
+static void time_calls(void (*f)(void), double *first, double *best) {
+  *best = 1e300;
+  for (int k = 0; k < calls; ++k) {
     const double t0 = bench_now_ms();
     f();
     const double dt = bench_now_ms() - t0;
-    if (dt < best) best = dt;
+    if (k == 0) *first = dt;
+    else if (dt < *best) *best = dt;
   }
-  return best;
+  if (calls < 2) *best = 0;
+}
+
+static hdt_triangulation *loaded;
+static void *saved;
+static size_t saved_size;
+static void load(void) {
+  if (loaded) hdt_destroy(loaded);
+  check(hdt_load(&loaded, saved, saved_size), "hdt_load");
 }
 
 int main(int argc, char **argv) {
@@ -76,11 +93,15 @@ int main(int argc, char **argv) {
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!strcmp(argv[i], "--n")) n = strtoull(argv[i + 1], NULL, 10);
     else if (!strcmp(argv[i], "--genus")) genus = atoi(argv[i + 1]);
+    else if (!strcmp(argv[i], "--calls")) calls = atoi(argv[i + 1]);
   }
+  if (calls < 1) calls = 1;
   double *xy = malloc(2 * n * sizeof *xy);
   bench_points_in_polygon(genus, n, 1, xy);
   check(hdt_create(&T, genus), "hdt_create");
+  const double insert_t0 = bench_now_ms();
   check(hdt_insert_many(T, xy, n, NULL), "hdt_insert_many");
+  const double insert_ms = bench_now_ms() - insert_t0;
   check(hdt_remove_dummies(T, NULL), "hdt_remove_dummies");
   free(xy);
   B.V = hdt_vertex_count(T), B.F = hdt_face_count(T), B.E = hdt_edge_count(T);
@@ -91,10 +112,14 @@ int main(int argc, char **argv) {
   B.u8 = malloc(B.F);
   B.d1 = malloc(6 * B.F * sizeof *B.d1);
   B.d2 = malloc(B.F * sizeof *B.d2);
+  /* Touched once: the first call must not pay the buffers' page faults. */
+  memset(B.u32a, 0, 3 * B.F * sizeof *B.u32a), memset(B.u32b, 0, 2 * B.E * sizeof *B.u32b);
+  memset(B.i32a, 0, 3 * B.F * sizeof *B.i32a), memset(B.u8, 0, B.F);
+  memset(B.d1, 0, 6 * B.F * sizeof *B.d1), memset(B.d2, 0, B.F * sizeof *B.d2);
   size_t count;
   check(hdt_vertices(T, B.ids, NULL, NULL, B.V, &count), "hdt_vertices");
-  printf("libhdt %s: genus %d, %zu vertices, %zu faces, %zu edges (best of 3 warm runs)\n", hdt_version_string(),
-         genus, B.V, B.F, B.E);
+  printf("libhdt %s: genus %d, %zu vertices, %zu faces, %zu edges (first call; best of %d later calls)\n",
+         hdt_version_string(), genus, B.V, B.F, B.E, calls - 1);
   const struct {
     const char *name;
     void (*f)(void);
@@ -106,12 +131,25 @@ int main(int argc, char **argv) {
               {"hdt_voronoi_edges", voronoi_edges},
               {"hdt_vertex_star, every vertex", stars},
               {"hdt_voronoi_cell, every vertex", cells}};
-  double base = 0;
+  double base_first = 0, base_best = 0;
   for (size_t k = 0; k < sizeof runs / sizeof runs[0]; ++k) {
-    const double ms = best_ms(runs[k].f);
-    if (k == 0) base = ms;
-    printf("  %-32s %9.1f ms  %5.2f x hdt_faces\n", runs[k].name, ms, ms / base);
+    double first, best;
+    time_calls(runs[k].f, &first, &best);
+    if (k == 0) base_first = first, base_best = best;
+    printf("  %-32s first %9.1f ms %5.2f x hdt_faces   later %9.1f ms %5.2f x hdt_faces\n", runs[k].name, first,
+           first / base_first, best, base_best > 0 ? best / base_best : 0.0);
   }
+  check(hdt_save(T, NULL, 0, &saved_size), "hdt_save");
+  saved = malloc(saved_size);
+  const double save_t0 = bench_now_ms();
+  check(hdt_save(T, saved, saved_size, &saved_size), "hdt_save");
+  const double save_ms = bench_now_ms() - save_t0;
+  double load_first, load_best;
+  time_calls(load, &load_first, &load_best);
+  printf("  hdt_insert_many %.1f ms; hdt_save %.1f ms (%zu bytes); hdt_load first %.1f ms (%.2f x insert), later %.1f ms (%.2f x insert)\n",
+         insert_ms, save_ms, saved_size, load_first, load_first / insert_ms, load_best, load_best / insert_ms);
+  hdt_destroy(loaded);
+  free(saved);
   free(B.ids), free(B.u32a), free(B.u32b), free(B.i32a), free(B.u8), free(B.d1), free(B.d2);
   hdt_destroy(T);
   return 0;
