@@ -5,6 +5,7 @@
 // the Delaunay triangulation of the periodic point set, so delta < sys/2.
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "predicates/representative.hpp"
 #include "triangulation/triangulation.hpp"
@@ -61,6 +62,7 @@ void Triangulation::validate() const {
   }
 
   std::size_t corners = 0;
+  std::vector<TranslatedPoint> link;  // one allocation for all the vertices
   for (uint32_t v = 0; v < vertices_.size(); ++v) {
     const Vertex &u = vertices_[v];
     if (!u.alive()) continue;
@@ -73,8 +75,7 @@ void Triangulation::validate() const {
     star(v, &star_);
     corners += star_.size();
     // The link: distinct vertices (no double edges), turning once around v.
-    std::vector<TranslatedPoint> link;
-    link.reserve(star_.size());
+    link.clear();
     for (std::size_t i = 0; i < star_.size(); ++i) {
       const Face &A = faces_[star_[i].face];
       const int a = next(star_[i].corner);
