@@ -660,6 +660,62 @@ END_TEST
 
 /* The contract: NULL handle and count, a too small buffer (count set,
    nothing written), a dead vertex, the size query. */
+/* hdt_voronoi_cell keeps the circumcentres it computed on the handle, and
+   the faces change under it: after insertions and removals, every cell
+   must still be its star's circumcentres as hdt_voronoi_vertices (which
+   keeps nothing) gives them, mapped by the star's translations. Each round
+   reads every cell first, so that the next round's changes leave stale
+   entries behind. */
+static void check_cells_against_vertices(hdt_triangulation *t, int round) {
+  const size_t V = hdt_vertex_count(t), F = hdt_face_count(t);
+  uint32_t *ids = need(malloc(V * sizeof *ids)), *faces = need(malloc(F * sizeof *faces));
+  int32_t *tr = need(malloc(F * sizeof *tr));
+  double *centre = need(malloc(2 * F * sizeof *centre)), *cell = need(malloc(2 * F * sizeof *cell));
+  size_t n = 0, m = 0;
+  OK(hdt_vertices(t, ids, NULL, NULL, V, &n));
+  OK(hdt_voronoi_vertices(t, centre, NULL, F, &n));
+  for (size_t i = 0; i < V; ++i) {
+    OK(hdt_vertex_star(t, ids[i], faces, NULL, tr, F, &n));
+    OK(hdt_voronoi_cell(t, ids[i], cell, F, &m));
+    expect(m == n, "round %d, vertex %u: cell of %zu corners, star of %zu", round, ids[i], m, n);
+    for (size_t k = 0; k < n; ++k) {
+      double mt[4], x, y;
+      OK(hdt_translation_matrix(t, tr[k], mt));
+      apply(mt, centre[2 * faces[k]], centre[2 * faces[k] + 1], &x, &y);
+      expect(hypot(x - cell[2 * k], y - cell[2 * k + 1]) < 1e-12,
+             "round %d, vertex %u: cell corner %zu is not face %u's centre", round, ids[i], k, faces[k]);
+    }
+  }
+  free(ids), free(faces), free(tr), free(centre), free(cell);
+}
+
+START_TEST(cells_follow_changes) {
+  hdt_triangulation *t = wide_triangulation(2, 150, 0xce11, 1);
+  uint64_t seed = 0xce12;
+  for (int round = 0; round < 4; ++round) {
+    check_cells_against_vertices(t, round);
+    /* Twenty new points (uniform in the disk of radius 0.95), then every
+       seventh vertex removed where the guarantee allows it. */
+    for (int k = 0; k < 20;) {
+      const double x = 1.9 * uniform01(&seed) - 0.95, y = 1.9 * uniform01(&seed) - 0.95;
+      if (x * x + y * y >= 0.95 * 0.95) continue;
+      OK(hdt_insert(t, x, y, NULL));
+      ++k;
+    }
+    const size_t V = hdt_vertex_count(t);
+    uint32_t *ids = need(malloc(V * sizeof *ids));
+    size_t n = 0;
+    OK(hdt_vertices(t, ids, NULL, NULL, V, &n));
+    size_t removed = 0;
+    for (size_t i = round; i < V; i += 7) removed += hdt_remove_vertex(t, ids[i]) == HDT_OK;
+    expect(removed > 0, "round %d: no vertex could be removed", round);
+    free(ids);
+  }
+  check_cells_against_vertices(t, 4);
+  hdt_destroy(t);
+}
+END_TEST
+
 START_TEST(bad_arguments) {
   hdt_triangulation *t = small_disk_triangulation(2, 30, 9, 1);
   size_t n = 7;
@@ -695,9 +751,10 @@ START_TEST(bad_arguments) {
 END_TEST
 
 int main(void) {
-  const TTest *const tests[] = {neighbours_are_an_involution,        stars_cover_each_face_three_times,
-                                edges_against_brute_force,           face_points_are_the_translated_corners,
-                                voronoi_vertices_are_empty_circles,  voronoi_cells_tile_the_surface,
-                                constructions_against_mpfr,          bad_arguments};
+  const TTest *const tests[] = {neighbours_are_an_involution,       stars_cover_each_face_three_times,
+                                edges_against_brute_force,          face_points_are_the_translated_corners,
+                                voronoi_vertices_are_empty_circles, voronoi_cells_tile_the_surface,
+                                cells_follow_changes,               constructions_against_mpfr,
+                                bad_arguments};
   return run_tests("dual", tests, sizeof tests / sizeof tests[0]);
 }
