@@ -26,7 +26,11 @@ namespace {
 
 // Forced inline: GCC keeps them as calls otherwise, a tenth of a
 // circumcentre's instructions.
+#if defined(__GNUC__)
 #define HDT_INLINE inline __attribute__((always_inline))
+#else
+#define HDT_INLINE inline
+#endif
 
 // (z - w) / (1 - conj(w) z): the isometry taking w to 0, applied to z.
 HDT_INLINE Point to_origin(const Point &w, const Point &z) {
@@ -275,5 +279,7 @@ Point CentreCache::compute(const Triangulation &tri, uint32_t f) {
   e.v = F.v, e.t = F.t;
   return e.centre;
 }
+
+#undef HDT_INLINE
 
 }  // namespace hdt::triangulation
