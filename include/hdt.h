@@ -497,7 +497,7 @@ HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, doub
    stored points, like hdt_voronoi_vertices' radii and hdt_edges' lengths. */
 
 /* Delaunay refinement: inserts Steiner points, the circumcentres of the
-   faces that break a bound (largest circumradius first), until every face
+   faces that break a bound (the largest first, up to a factor sqrt 2), until every face
    has hyperbolic circumradius <= max_radius and radius-edge ratio
    (circumradius / shortest edge) <= max_ratio, or max_points points were
    added in this call. A Steiner point is the circumcentre rounded to

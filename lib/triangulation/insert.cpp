@@ -35,12 +35,24 @@ Triangulation::Inserted Triangulation::insert(double x, double y) {
   return insert_walked(x, y, r.translation, walk_from_hint({x, y, r.translation, -1}));
 }
 
-Triangulation::Inserted Triangulation::insert_near(double x, double y, uint32_t near) {
-  if (near >= vertices_.size() || !vertices_[near].alive())
-    throw std::invalid_argument("insert_near: vertex " + std::to_string(near) + " is not live");
+Triangulation::Inserted Triangulation::insert_in_circle(double x, double y, uint32_t face,
+                                                        std::vector<uint32_t> *created) {
+  if (face >= faces_.size()) throw std::invalid_argument("insert_in_circle: face " + std::to_string(face) + " is unknown");
+  const Face &F = faces_[face];
+  const TranslatedPoint q{x, y, 0, -1};  // in the frame of F's canonical copy
   const predicates::Representative r = predicates::representative(*kernel_, x, y);
-  last_vertex_ = near;  // the walk starts around it
-  return insert_walked(x, y, r.translation, walk_from_hint({x, y, r.translation, -1}));
+  created->clear();
+  // Strictly inside the (empty) circle of a Delaunay face: q is no vertex,
+  // and F conflicts with it, so the cavity search may start at F.
+  if (kernel_->in_circle(corner(F, 0), corner(F, 1), corner(F, 2), q) > 0) {
+    const uint32_t v = insert_located(x, y, r.translation, false, {face, 0, 0});
+    created->assign(new_ids_.begin(), new_ids_.end());
+    return {v, false};
+  }
+  const std::size_t before = vertices_.size();
+  const Inserted in = insert_walked(x, y, r.translation, walk(q, face, 0));
+  if (vertices_.size() > before) created->assign(new_ids_.begin(), new_ids_.end());
+  return in;
 }
 
 Triangulation::Inserted Triangulation::insert_walked(double x, double y, TranslationId home, const Walk &at) {

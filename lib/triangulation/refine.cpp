@@ -1,17 +1,21 @@
-// Refinement with a lazy priority queue: a face is queued with its shape
-// and its identity (vertices and corner translations); an entry whose slot
-// holds another face by the time it comes out is dropped. A face that is
-// still there is still a face of the Delaunay triangulation, so its circle
-// is still empty, which is what the termination proof needs of every
-// Steiner point. The faces a Steiner point creates are exactly its star.
+// Refinement with a stack of bad faces: a face is pushed with its
+// circumcentre and its identity (vertices and corner translations); an
+// entry whose slot holds another face by the time it comes out is dropped.
+// A face that is still there is still a face of the Delaunay triangulation,
+// so its circle is still empty, which is all the termination proof needs of
+// a Steiner point (docs/refinement.md): the order is free. Last in, first
+// out keeps the work local: the faces a Steiner point creates (exactly its
+// star) are handled next, in memory that is still in the caches, and the
+// circumcentre is inserted straight into the face's cavity (it lies inside
+// the face's circle), with no walk.
 #include "triangulation/refine.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
-#include <queue>
 #include <stdexcept>
 #include <vector>
 
-#include "triangulation/adjacency.hpp"
 #include "triangulation/quality.hpp"
 
 namespace hdt::triangulation {
@@ -28,12 +32,43 @@ bool is_bad(const Triangulation &tri, const Face &f, const RefineBounds &b, Circ
 namespace {
 
 struct Entry {
-  double radius;
   Point centre;
   uint32_t slot;
   std::array<uint32_t, 3> v;
   std::array<TranslationId, 3> t;
-  bool operator<(const Entry &o) const { return radius < o.radius; }  // max-heap on the radius
+};
+
+// Bad faces by circumradius in classes of ratio 2^(1/kSteps): the largest
+// class first, last in first out within a class. Close to largest first
+// (which spreads the points evenly, so fewer of them), and local: the new
+// faces of a Steiner point are mostly handled next, while their memory is
+// still in the caches.
+class Buckets {
+ public:
+  void push(double radius, const Entry &e) {
+    const int k = std::clamp(int(std::floor(std::log2(radius) * kSteps)) + kLevels / 2, 0, kLevels - 1);
+    level_[k].push_back(e);
+    top_ = std::max(top_, k);
+  }
+  bool pop(Entry *e) {
+    for (; top_ >= 0; --top_)
+      if (!level_[top_].empty()) {
+        *e = level_[top_].back();
+        level_[top_].pop_back();
+        return true;
+      }
+    return false;
+  }
+  bool empty() const {
+    for (int k = 0; k <= top_; ++k)
+      if (!level_[k].empty()) return false;
+    return true;
+  }
+
+ private:
+  static constexpr int kSteps = 2, kLevels = 256;
+  std::array<std::vector<Entry>, kLevels> level_;
+  int top_ = -1;
 };
 
 void check(const RefineBounds &b) {
@@ -45,39 +80,35 @@ void check(const RefineBounds &b) {
 
 Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points, const Progress *progress) {
   check(b);
-  std::priority_queue<Entry> queue;
+  Buckets bad;
   auto offer = [&](uint32_t slot) {
     const Face &f = tri.faces()[slot];
     Circle c;
-    if (is_bad(tri, f, b, &c)) queue.push({c.radius, c.centre, slot, f.v, f.t});
+    if (is_bad(tri, f, b, &c)) bad.push(c.radius, {c.centre, slot, f.v, f.t});
   };
   for (uint32_t s = 0; s < tri.faces().size(); ++s) offer(s);
 
   Refined out{0, 0};
-  std::vector<StarEntry> star;
+  std::vector<uint32_t> created;
   ProgressTicker ticker(progress, 0);
   bool stopped = false;
-  while (!queue.empty() && out.added < max_points && !stopped) {
-    const Entry e = queue.top();
-    queue.pop();
+  Entry e;
+  while (out.added < max_points && !stopped && bad.pop(&e)) {
     if (e.slot >= tri.faces().size()) continue;
     const Face &f = tri.faces()[e.slot];
-    if (f.v != e.v || f.t != e.t) continue;  // replaced since it was queued
-    // The rounded circumcentre of the face's canonical copy: insert() finds
-    // its representative and decides everything with exact predicates; its
-    // walk starts at the face's corner, a circumradius away.
-    const Point c = e.centre;
+    if (f.v != e.v || f.t != e.t) continue;  // replaced since it was pushed
+    // The rounded circumcentre of the face's canonical copy, in that copy's
+    // frame; the insertion decides everything with exact predicates.
     const std::size_t before = tri.vertices().size();
-    const Triangulation::Inserted in = tri.insert_near(c.re, c.im, f.v[0]);
+    const Triangulation::Inserted in = tri.insert_in_circle(e.centre.re, e.centre.im, e.slot, &created);
     if (in.existed || in.vertex < before)
       throw std::logic_error("refine: a circumcentre fell on a vertex (its circle is not empty)");
     ++out.added;
-    vertex_star(tri, in.vertex, &star);
-    for (const StarEntry &s : star) offer(s.face);
+    for (const uint32_t s : created) offer(s);
     stopped = ticker.stop(out.added);
   }
   if (!stopped) ticker.finish(out.added);
-  if (!queue.empty()) {
+  if (!bad.empty()) {
     Circle c;
     for (const Face &f : tri.faces()) out.unmet += is_bad(tri, f, b, &c) ? 1 : 0;
   }

@@ -1,5 +1,6 @@
 // Delaunay refinement on M_g: Steiner points at the circumcentres of bad
-// faces, largest circumradius first, until every face has circumradius
+// faces, roughly largest circumradius first (classes of ratio sqrt 2, the
+// newest first within a class), until every face has circumradius
 // <= max_radius and radius-edge ratio <= max_ratio, or a cap on the number
 // of points is reached. docs/refinement.md proves that it terminates for
 // max_ratio >= 1 (a packing argument on the closed surface).
@@ -32,7 +33,7 @@ struct Refined {
   std::size_t unmet;  // faces still breaking the bounds (0 unless the cap or progress stopped it)
 };
 // Steiner points are ordinary user vertices, inserted through
-// Triangulation::insert_near (exact predicates; the triangulation stays exactly
+// Triangulation::insert_in_circle (exact predicates; the triangulation stays exactly
 // Delaunay). Throws before changing anything only on bad bounds
 // (std::invalid_argument); std::bad_alloc later keeps the points inserted
 // so far, in a valid triangulation. progress (may be null) is told the
