@@ -72,7 +72,8 @@ START_TEST(circumcentre_inserted_from_its_face_as_by_insert) {
   for (int k = 0; k < 200; ++k) {
     const auto f = uint32_t(rng() % a.faces().size());
     const Face &F = a.faces()[f];
-    const Circle c = circumcircle(face_corner(a, F, 0), face_corner(a, F, 1), face_corner(a, F, 2));
+    const Point p[3] = {face_corner(a, F, 0), face_corner(a, F, 1), face_corner(a, F, 2)};
+    const Circle c = circumcircle(a, F, p);
     insert_both(a, b, f, c.centre);
   }
 }
@@ -88,9 +89,10 @@ START_TEST(point_outside_the_circle_is_walked_to) {
     const auto f = uint32_t(rng() % a.faces().size()), g = uint32_t(rng() % a.faces().size());
     const Face &G = a.faces()[g];
     const Point p[3] = {face_corner(a, G, 0), face_corner(a, G, 1), face_corner(a, G, 2)};
-    const Circle cg = circumcircle(p[0], p[1], p[2]);
+    const Circle cg = circumcircle(a, G, p);
     const Face &F = a.faces()[f];
-    const Circle cf = circumcircle(face_corner(a, F, 0), face_corner(a, F, 1), face_corner(a, F, 2));
+    const Point q[3] = {face_corner(a, F, 0), face_corner(a, F, 1), face_corner(a, F, 2)};
+    const Circle cf = circumcircle(a, F, q);
     if (distance(cf.centre, cg.centre) > 2 * cf.radius) ++outside;
     insert_both(a, b, f, cg.centre);
   }
