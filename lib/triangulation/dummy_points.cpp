@@ -23,6 +23,7 @@
 #include "surface/exact_polygon.hpp"
 #include "surface/polygon.hpp"
 #include "predicates/representative.hpp"
+#include "triangulation/dummy_thinning.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
@@ -38,6 +39,7 @@ class DummyBuilder {
       for (int i = 0; i < 3; ++i) stack_.push_back({f, i});
     lawson();
     refine();
+    thin_dummy_points(t_);
     t_.validate();  // the certificate
     auto result = std::make_shared<DummyTemplate>();
     result->genus = t_.genus_;

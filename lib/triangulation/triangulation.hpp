@@ -105,6 +105,7 @@ class Triangulation {
 
  private:
   friend class DummyBuilder;
+  friend class DummyThinning;
   friend std::shared_ptr<const struct DummyTemplate> build_dummy_points(Triangulation &t);
   struct Empty {};
   Triangulation(int genus, Empty);  // no vertices: the dummy construction's start

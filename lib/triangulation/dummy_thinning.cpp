@@ -1,0 +1,305 @@
+// Thinning of the dummy point set (dummy_thinning.hpp).
+//
+// Every move keeps the invariant: new dummies go in by Bowyer-Watson
+// insertion (the invariant holds before it), old ones leave through
+// Triangulation::remove, which refuses, with exact predicates on the hole
+// alone, a removal that would leave a circle of diameter >= sys/2. A move
+// whose removal is refused is undone from a copy of the vertices and faces.
+// Where to put the new points is decided in double precision: it only
+// chooses what to try.
+#include "triangulation/dummy_thinning.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "predicates/representative.hpp"
+#include "triangulation/triangulation.hpp"
+
+namespace hdt::triangulation {
+
+namespace {
+
+using Point = std::array<double, 3>;  // on the hyperboloid
+
+double dot(const Point &p, const Point &q) { return p[0] * q[0] - p[1] * q[1] - p[2] * q[2]; }
+
+// cosh of the circumradius of (p, q, r), infinite for a horocycle or
+// hypercycle (as the refinement computes it).
+double cosh_circumradius(const Point &p, const Point &q, const Point &r) {
+  const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, v[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+  const Point m{u[1] * v[2] - u[2] * v[1], -(u[2] * v[0] - u[0] * v[2]), -(u[0] * v[1] - u[1] * v[0])};
+  const double mm = dot(m, m);
+  if (!(mm > 0)) return INFINITY;
+  return (m[0] > 0 ? 1 : -1) * dot(m, p) / std::sqrt(mm);
+}
+
+// The disk point of a p + b q + c r normalised: a point of the geodesic
+// triangle pqr for non-negative weights.
+bool blend(double a, const Point &p, double b, const Point &q, double c, const Point &r, double *x, double *y) {
+  const Point m{a * p[0] + b * q[0] + c * r[0], a * p[1] + b * q[1] + c * r[1], a * p[2] + b * q[2] + c * r[2]};
+  const double mm = dot(m, m);
+  if (!(mm > 0) || !(m[0] > 0)) return false;
+  const double s = 1 / std::sqrt(mm);
+  *x = m[1] * s / (1 + m[0] * s), *y = m[2] * s / (1 + m[0] * s);
+  return true;
+}
+
+// The point p of the disk, searched from (x, y) by compass steps, that
+// minimises the largest circle of the fan (p, L_i, L_i+1) over the closed
+// polygon L; returns that cosh(radius). A guess at the best new vertex for a
+// star-shaped hole (the Delaunay faces need not be the fan's).
+double best_fan_point(const std::vector<Point> &L, double *x, double *y) {
+  auto largest = [&](double px, double py) {
+    const double w = 1 - px * px - py * py;
+    if (!(w > 0)) return double(INFINITY);
+    const Point P{(2 - w) / w, 2 * px / w, 2 * py / w};
+    double r = 0;
+    for (std::size_t i = 0; i < L.size(); ++i) r = std::max(r, cosh_circumradius(P, L[i], L[(i + 1) % L.size()]));
+    return r;
+  };
+  double f = largest(*x, *y);
+  for (double h = 0.25; h > 0.002;) {  // hyperbolic step length
+    const double scale = h * (1 - *x * *x - *y * *y) / 2;
+    bool moved = false;
+    for (int d = 0; d < 8 && !moved; ++d) {
+      const double nx = *x + scale * std::cos(d * M_PI / 4), ny = *y + scale * std::sin(d * M_PI / 4);
+      const double fn = largest(nx, ny);
+      if (fn < f) *x = nx, *y = ny, f = fn, moved = true;
+    }
+    if (!moved) h /= 2;
+  }
+  return f;
+}
+
+}  // namespace
+
+class DummyThinning {
+ public:
+  explicit DummyThinning(Triangulation &t)
+      : t_(t),
+        K_(*t.kernel_),
+        T_(t.table()),
+        fixed_(uint32_t(2 * t.genus_ + 2)),
+        limit_(std::sqrt(1 + std::cos(M_PI / (2.0 * t.genus_)))) {}
+
+  void run() {
+    // Eight rounds at most: later ones gained nothing at genus 2 .. 32.
+    for (int round = 0, idle = 0; round < 8 && idle < 2; ++round) {
+      const std::size_t before = t_.dummies_;
+      for (uint32_t v = fixed_; v < t_.vertices_.size(); ++v)
+        if (removable(v)) t_.remove(v);
+      if (exhaustive()) merge_triples();
+      merge_pairs();
+      smooth();
+      idle = t_.dummies_ < before ? 0 : idle + 1;
+    }
+    renumber();
+  }
+
+ private:
+  using Corner = Triangulation::Corner;
+
+  // Small sets try every merge; larger ones only those the fan estimate
+  // finds promising (a try costs an insertion and removals).
+  bool exhaustive() const { return t_.dummies_ < 64; }
+  bool removable(uint32_t v) const { return v >= fixed_ && t_.vertices_[v].alive(); }
+  Point at(const Corner &c) { return K_.hyperboloid(t_.point(c.v, c.t)); }
+
+  // Edges between two removable dummies, shortest first (the closest pairs
+  // are the most redundant).
+  std::vector<std::pair<double, std::array<uint32_t, 2>>> edges() {
+    std::vector<std::pair<double, std::array<uint32_t, 2>>> out;
+    for (const Face &F : t_.faces_)
+      for (int i = 0; i < 3; ++i) {
+        const int a = next(i), b = prev(i);
+        if (F.v[a] < F.v[b] && removable(F.v[a]) && removable(F.v[b]))
+          out.push_back({dot(K_.hyperboloid(t_.corner(F, a)), K_.hyperboloid(t_.corner(F, b))), {F.v[a], F.v[b]}});
+      }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  // The link of u, counterclockwise, in the frame base(u's star frame);
+  // *self receives u's own corner there.
+  void link_of(uint32_t u, TranslationId base, std::vector<Corner> *out, Corner *self) {
+    t_.star(u, &star_);
+    out->clear();
+    for (const Triangulation::StarFace &s : star_) {
+      const Face &F = t_.faces_[s.face];
+      const int a = next(s.corner);
+      out->push_back({F.v[a], T_.compose(base, T_.compose(s.frame, F.t[a]))});
+    }
+    const Face &F0 = t_.faces_[star_[0].face];
+    *self = {u, T_.compose(base, F0.t[star_[0].corner])};
+  }
+
+  // The boundary of the union of the stars of the edge uv, counterclockwise
+  // in u's star frame; false if it is not the polygon expected.
+  bool edge_link(uint32_t u, uint32_t v, std::vector<Corner> *polygon, Corner *cu, Corner *cv) {
+    link_of(u, 0, &lu_, cu);
+    const auto iv = std::find_if(lu_.begin(), lu_.end(), [&](const Corner &c) { return c.v == v; });
+    if (iv == lu_.end()) return false;
+    std::rotate(lu_.begin(), iv, lu_.end());
+    *cv = lu_[0];
+    t_.star(v, &star_);
+    const TranslationId own = t_.faces_[star_[0].face].t[star_[0].corner];
+    Corner self;
+    link_of(v, T_.compose(cv->t, T_.inverse(own)), &lv_, &self);
+    const auto iu = std::find_if(lv_.begin(), lv_.end(), [&](const Corner &c) { return c.v == u; });
+    if (iu == lv_.end() || iu->t != cu->t) return false;
+    std::rotate(lv_.begin(), iu, lv_.end());
+    auto same = [](const Corner &a, const Corner &b) { return a.v == b.v && a.t == b.t; };
+    if (lu_.size() < 3 || lv_.size() < 3 || !same(lu_.back(), lv_[1]) || !same(lu_[1], lv_.back())) return false;
+    polygon->assign(lu_.begin() + 1, lu_.end());
+    polygon->insert(polygon->end(), lv_.begin() + 2, lv_.end() - 1);
+    return true;
+  }
+
+  // Two dummies u, v become one: at the best fan point of their union's
+  // boundary when that estimate is below the limit, else (small sets, or
+  // estimates within 10%) also at their midpoint.
+  void merge_pairs() {
+    std::vector<Corner> polygon;
+    std::vector<Point> L;
+    for (const auto &e : edges()) {
+      const uint32_t u = e.second[0], v = e.second[1];
+      Corner cu, cv;
+      if (!removable(u) || !removable(v) || !edge_link(u, v, &polygon, &cu, &cv)) continue;
+      L.clear();
+      for (const Corner &c : polygon) L.push_back(at(c));
+      const Point pu = at(cu), pv = at(cv);
+      double mx, my;
+      if (!blend(1, pu, 1, pv, 0, pu, &mx, &my)) continue;
+      double x = mx, y = my;
+      const double estimate = best_fan_point(L, &x, &y);
+      const bool midpoint_too = exhaustive() || estimate < limit_ * 1.1;
+      if (estimate < limit_ && try_move({{x, y}}, {u, v}, u)) continue;
+      if (midpoint_too) try_move({{mx, my}}, {u, v}, u);
+    }
+  }
+
+  // Three dummies of a face become one, at a weighted centre of it.
+  void merge_triples() {
+    for (uint32_t f = 0; f < t_.faces_.size(); ++f) {
+      const Face F = t_.faces_[f];
+      if (!removable(F.v[0]) || !removable(F.v[1]) || !removable(F.v[2])) continue;
+      const Point p = K_.hyperboloid(t_.corner(F, 0)), q = K_.hyperboloid(t_.corner(F, 1)),
+                  r = K_.hyperboloid(t_.corner(F, 2));
+      static const double weights[][3] = {{1, 1, 1}, {2, 1, 1}, {1, 2, 1}, {1, 1, 2}};
+      for (const auto &w : weights) {
+        double x, y;
+        if (blend(w[0], p, w[1], q, w[2], r, &x, &y) && try_move({{x, y}}, {F.v[0], F.v[1], F.v[2]}, F.v[0])) break;
+      }
+    }
+  }
+
+  // Each removable dummy moves to the best fan point of its link, if that
+  // makes its largest circle smaller: evenly spread points leave room for
+  // merges.
+  void smooth() {
+    std::vector<Corner> link;
+    std::vector<Point> L;
+    const auto end = uint32_t(t_.vertices_.size());  // not the moved ones again
+    for (uint32_t v = fixed_; v < end; ++v) {
+      if (!removable(v)) continue;
+      Corner self;
+      link_of(v, 0, &link, &self);
+      L.clear();
+      for (const Corner &c : link) L.push_back(at(c));
+      const Point p = at(self);
+      double x = p[1] / (1 + p[0]), y = p[2] / (1 + p[0]);
+      const double best = best_fan_point(L, &x, &y), current = [&] {
+        double r = 0;
+        for (std::size_t i = 0; i < L.size(); ++i) r = std::max(r, cosh_circumradius(p, L[i], L[(i + 1) % L.size()]));
+        return r;
+      }();
+      if (best < current * (1 - 1e-4)) try_move({{x, y}}, {v}, v);
+    }
+  }
+
+  // Inserts dummies at `points`, then removes `old`; undoes it all unless
+  // every step succeeds.
+  bool try_move(const std::vector<std::array<double, 2>> &points, const std::vector<uint32_t> &old, uint32_t near) {
+    save();
+    bool ok = true;
+    for (const auto &p : points) ok = ok && insert_dummy(p[0], p[1], near);
+    for (uint32_t v : old) ok = ok && t_.remove(v);
+    if (!ok) restore();
+    return ok;
+  }
+
+  // Bowyer-Watson insertion of a new dummy at (x, y), the walk starting
+  // around `near`. False when (x, y) is not usable (outside the disk, on a
+  // vertex).
+  bool insert_dummy(double x, double y, uint32_t near) {
+    // A relative nudge of about 2^-20: new points of symmetric moves are
+    // symmetric, and symmetric points cocircular (as in the refinement).
+    rng_ = rng_ * 6364136223846793005ull + 1442695040888963407ull;
+    x *= 1 + double(int64_t(rng_ >> 44) - (1 << 19)) * 0x1p-39;
+    y *= 1 + double(int64_t((rng_ >> 24) & 0xFFFFF) - (1 << 19)) * 0x1p-39;
+    if (!std::isfinite(x) || !std::isfinite(y) || x * x + y * y >= 1) return false;
+    const predicates::Representative r = predicates::representative(K_, x, y);
+    t_.last_vertex_ = near;
+    const Triangulation::Walk w = t_.walk_from_hint({x, y, r.translation, -1});
+    if (t_.vertex_at(w) != kNone) return false;
+    t_.insert_located(x, y, r.translation, true, w);
+    return true;
+  }
+
+  void save() {
+    saved_.vertices = t_.vertices_;
+    saved_.faces = t_.faces_;
+    saved_.dummy = t_.dummy_;
+    saved_.live = t_.live_vertices_, saved_.dummies = t_.dummies_;
+    saved_.last_face = t_.last_face_, saved_.last_vertex = t_.last_vertex_;
+  }
+  void restore() {
+    t_.vertices_.swap(saved_.vertices);
+    t_.faces_.swap(saved_.faces);
+    t_.dummy_.swap(saved_.dummy);
+    t_.live_vertices_ = saved_.live, t_.dummies_ = saved_.dummies;
+    t_.last_face_ = saved_.last_face, t_.last_vertex_ = saved_.last_vertex;
+    // The cache is by id, and the ids above the restored count will name
+    // other points.
+    if (t_.representatives_.size() > t_.vertices_.size()) t_.representatives_.resize(t_.vertices_.size());
+  }
+
+  // Dense ids, in the old order: faces' canonical copies (smallest id) and
+  // the perturbation (larger id, larger epsilon) read only the order.
+  void renumber() {
+    std::vector<uint32_t> id(t_.vertices_.size(), kNone);
+    std::vector<Vertex> vertices;
+    for (uint32_t v = 0; v < t_.vertices_.size(); ++v)
+      if (t_.vertices_[v].alive()) id[v] = uint32_t(vertices.size()), vertices.push_back(t_.vertices_[v]);
+    for (Face &F : t_.faces_)
+      for (uint32_t &v : F.v) v = id[v];
+    t_.vertices_ = vertices;
+    t_.dummy_.assign(vertices.size(), true);
+    t_.representatives_.clear();
+    t_.last_vertex_ = kNone;
+  }
+
+  struct Saved {
+    std::vector<Vertex> vertices;
+    std::vector<Face> faces;
+    std::vector<bool> dummy;
+    std::size_t live = 0, dummies = 0;
+    uint32_t last_face = 0, last_vertex = kNone;
+  };
+
+  Triangulation &t_;
+  predicates::Kernel &K_;
+  group::TranslationTable &T_;
+  const uint32_t fixed_;  // vertex 0 and the sites stay
+  const double limit_;    // cosh(sys/4)
+  Saved saved_;
+  std::vector<Triangulation::StarFace> star_;
+  std::vector<Corner> lu_, lv_;
+  uint64_t rng_ = 0x9E3779B97F4A7C15ull;
+};
+
+void thin_dummy_points(Triangulation &t) { DummyThinning(t).run(); }
+
+}  // namespace hdt::triangulation
