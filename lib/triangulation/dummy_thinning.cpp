@@ -240,7 +240,16 @@ class DummyThinning {
     x *= 1 + double(int64_t(rng_ >> 44) - (1 << 19)) * 0x1p-39;
     y *= 1 + double(int64_t((rng_ >> 24) & 0xFFFFF) - (1 << 19)) * 0x1p-39;
     if (!std::isfinite(x) || !std::isfinite(y) || x * x + y * y >= 1) return false;
-    const predicates::Representative r = predicates::representative(K_, x, y);
+    predicates::Representative r = predicates::representative(K_, x, y);
+    if (r.translation != 0) {
+      // Stored inside F_g where its image in double lands there: such a
+      // vertex is its own representative (no multiprecision image later).
+      const group::Complex<double> z = T_.moebius(r.translation).apply({x, y});
+      if (std::isfinite(z.re) && std::isfinite(z.im) && z.re * z.re + z.im * z.im < 1) {
+        const predicates::Representative home = predicates::representative(K_, z.re, z.im);
+        if (home.translation == 0) x = z.re, y = z.im, r = home;
+      }
+    }
     t_.last_vertex_ = near;
     const Triangulation::Walk w = t_.walk_from_hint({x, y, r.translation, -1});
     if (t_.vertex_at(w) != kNone) return false;
@@ -278,7 +287,12 @@ class DummyThinning {
     t_.vertices_ = vertices;
     t_.dummy_.assign(vertices.size(), true);
     t_.representatives_.clear();
+    // Where walks start and their random choices, as in a copy of the
+    // template (triangulation.cpp): the first triangulation of a genus then
+    // behaves as every later one, down to the ids its walks intern.
     t_.last_vertex_ = kNone;
+    t_.last_face_ = 0;
+    t_.rng_ = 0x9E3779B97F4A7C15ull;  // rng_'s initial value in triangulation.hpp
   }
 
   struct Saved {
