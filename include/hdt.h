@@ -96,7 +96,7 @@ HDT_API int hdt_abi_version(void) HDT_NOEXCEPT;
    its dummy points, 5 s and 41 MiB at genus 96 (measured as above); beyond
    it that construction, which places points in double precision, is not
    reliable. May grow in later versions. */
-#define HDT_CREATE_GENUS_MAX 96
+#define HDT_CREATE_GENUS_MAX 256
 
 /* The systole of M_g: 2 arccosh(1 + 2 cos(pi / 2g)), correctly rounded (the
    nearest double). NaN when genus < 2. */

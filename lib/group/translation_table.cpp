@@ -64,6 +64,23 @@ TranslationId TranslationTable::intern(const Word &w) {
   // their own geodesic words), and reducing costs no arithmetic.
   const Word reduced = dehn_reduce(presentation_, w);
   if (const TranslationId id = find_canonical(reduced); id >= 0) return id;
+  // A half relator (a run of 2g letters) has a second geodesic spelling,
+  // the inverse of the rest of its relator, and only the shortlex-least is
+  // canonical: try the other before canonicalising, which at large genus
+  // costs the most precision of any element of N.
+  const std::size_t half = std::size_t(presentation_.half_relator());
+  if (reduced.size() == half) {
+    const int n = presentation_.letter_count();
+    const int step = (reduced[1] - reduced[0] + n) % n;
+    bool run = presentation_.is_run_step(step);
+    for (std::size_t i = 1; run && i < half; ++i) run = (reduced[i] - reduced[i - 1] + n) % n == step;
+    if (run) {
+      Word other(half);  // rest = r_last + step, r_last + 2 step, ...; other = rest^-1
+      for (std::size_t j = 1; j <= half; ++j)
+        other[half - j] = presentation_.inverse(Letter((reduced.back() + int(j) * step) % n));
+      if (const TranslationId id = find_canonical(other); id >= 0) return id;
+    }
+  }
   return add_canonical(canonical_word(presentation_, reduced));
 }
 

@@ -259,4 +259,11 @@ std::array<double, 3> Kernel::hyperboloid(const TranslatedPoint &p, bool *accura
   return {f.n[0], f.n[1], f.n[2]};
 }
 
+bool Kernel::hyperboloid_mid(const TranslatedPoint &p, std::array<MidReal, 3> *n) {
+  MidPoint m;
+  if (!mpfr_.point(p, &m)) return false;
+  for (int i = 0; i < 3; ++i) (*n)[i] = m.n[i];
+  return true;
+}
+
 }  // namespace hdt::predicates

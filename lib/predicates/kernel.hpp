@@ -137,6 +137,11 @@ class Kernel {
   // relative, from the refined stages where double precision is not.
   // *accurate (may be null) tells whether that accuracy was reached.
   std::array<double, 3> hyperboloid(const TranslatedPoint &p, bool *accurate = nullptr);
+  // The same vector to 133 bits (the MPFR stage's point), for constructions
+  // whose double formulas cancel: far from O at large genus the coordinates
+  // reach cosh(2R) ~ 1e10 and a circumcentre loses twice their bits. False
+  // when that stage has no approximation of p.
+  bool hyperboloid_mid(const TranslatedPoint &p, std::array<MidReal, 3> *n);
 
   // The exact stage alone (for tests against the pipeline).
   int orientation_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);

@@ -168,10 +168,8 @@ class DummyBuilder {
   // Inserts the point (x, y), given in the canonical frame of face `from`.
   void insert(double x, double y, uint32_t from) {
     if (!std::isfinite(x) || !std::isfinite(y) || x * x + y * y >= 1)
-      throw std::length_error("dummy points: at genus " + std::to_string(t_.genus_) +
-                              " the double-precision circumcentre of a refinement face is lost to cancellation "
-                              "(hyperboloid coordinates near cosh(2R)); dummy points are built up to genus " +
-                              std::to_string(kDummyGenusMax));
+      throw std::logic_error("dummy points: at genus " + std::to_string(t_.genus_) +
+                             " the circumcentre of a refinement face is not a point of the disk");
     Triangulation::Walk w{};
     for (int attempt = 0;; ++attempt) {
       if (attempt > 64) throw std::logic_error("dummy points: cannot place a refinement point");
@@ -200,6 +198,88 @@ class DummyBuilder {
     lawson();
   }
 
+  // A face's circle as the refinement sees it: cosh of the radius (INFINITY
+  // when the three points lie on a horocycle or hypercycle, or rounding made
+  // nonsense) and the centre (the centroid when there is no circle) in the
+  // disk, in the face's canonical frame.
+  struct Circle {
+    double cosh_r, cx, cy;
+  };
+
+  // From the corners' hyperboloid vectors P (in double or MidReal): the
+  // plane's Euclidean normal, whose Minkowski dual is the centre.
+  template <class Real>
+  static Circle circle_of(const Real (&P)[3][3]) {
+    using std::sqrt;
+    const Real u[3] = {P[1][0] - P[0][0], P[1][1] - P[0][1], P[1][2] - P[0][2]};
+    const Real v[3] = {P[2][0] - P[0][0], P[2][1] - P[0][1], P[2][2] - P[0][2]};
+    const Real m[3] = {u[1] * v[2] - u[2] * v[1], -(u[2] * v[0] - u[0] * v[2]), -(u[0] * v[1] - u[1] * v[0])};
+    const Real mm = m[0] * m[0] - m[1] * m[1] - m[2] * m[2];
+    Real centre[3];
+    double cosh_r = INFINITY;
+    if (mm > 0) {
+      const Real s = Real(m[0] > 0 ? 1 : -1) / sqrt(mm);
+      for (int j = 0; j < 3; ++j) centre[j] = m[j] * s;
+      cosh_r = static_cast<double>(centre[0] * P[0][0] - centre[1] * P[0][1] - centre[2] * P[0][2]);
+      if (!(cosh_r >= 1)) cosh_r = INFINITY;  // rounding made nonsense: still a candidate
+    } else {  // a horocycle or hypercycle: take the centroid
+      return centroid_of(P);
+    }
+    return {cosh_r, static_cast<double>(centre[1] / (1 + centre[0])), static_cast<double>(centre[2] / (1 + centre[0]))};
+  }
+  template <class Real>
+  static Circle centroid_of(const Real (&P)[3][3]) {
+    using std::sqrt;
+    Real c[3], centre[3];
+    for (int j = 0; j < 3; ++j) c[j] = P[0][j] + P[1][j] + P[2][j];
+    const Real cc = sqrt(c[0] * c[0] - c[1] * c[1] - c[2] * c[2]);
+    for (int j = 0; j < 3; ++j) centre[j] = c[j] / cc;
+    return {INFINITY, static_cast<double>(centre[1] / (1 + centre[0])), static_cast<double>(centre[2] / (1 + centre[0]))};
+  }
+
+  // The normal's Minkowski norm cancels about 2 log2(n_0) bits, n_0 the
+  // corners' largest coordinate. Below n_0 = 2^16 in double, as the
+  // construction always did (the sets of genus 2..96 were certified so and
+  // stay as they were); beyond, far from O at large genus, in the MPFR
+  // stage's 133 bits, which keep about 65 bits at n_0 ~ cosh(2R) ~ 1e10
+  // (genus 256).
+  Circle circle(const Face &F, bool centroid = false) {
+    double P[3][3];
+    bool far = false;
+    for (int i = 0; i < 3; ++i) {
+      const std::array<double, 3> n = K_.hyperboloid(t_.corner(F, i));
+      for (int j = 0; j < 3; ++j) P[i][j] = n[j];
+      far = far || !(n[0] < 0x1p16);
+    }
+    if (far) {
+      predicates::MidReal M[3][3];
+      bool mid = true;
+      for (int i = 0; i < 3 && mid; ++i) {
+        std::array<predicates::MidReal, 3> n;
+        mid = K_.hyperboloid_mid(t_.corner(F, i), &n);
+        for (int j = 0; j < 3; ++j) M[i][j] = n[j];
+      }
+      if (mid) return centroid ? centroid_of(M) : circle_of(M);
+    }
+    return centroid ? centroid_of(P) : circle_of(P);  // near O, or no approximation: in double
+  }
+
+  // The circle of face f, computed once per face content (a face keeps its
+  // id while its corners change under flips and splits).
+  struct CachedCircle {
+    std::array<uint32_t, 3> v{kNone, kNone, kNone};
+    std::array<TranslationId, 3> t{};
+    Circle c{};
+    int large = 0;  // K_.large_circumdisk when asked, 0 before
+  };
+  CachedCircle &cached_circle(uint32_t f) {
+    if (circles_.size() <= f) circles_.resize(t_.faces_.size());
+    CachedCircle &e = circles_[f];
+    const Face &F = t_.faces_[f];
+    if (e.v != F.v || e.t != F.t) e = {F.v, F.t, circle(F), 0};
+    return e;
+  }
+
   // Largest circles first: the circumcentre of the face whose circle is
   // largest among those of hyperbolic diameter >= sys/2.
   void refine() {
@@ -210,37 +290,19 @@ class DummyBuilder {
       uint32_t best = kNone;
       double best_cosh = 0, cx = 0, cy = 0;
       for (uint32_t f = 0; f < t_.faces_.size(); ++f) {
-        const Face &F = t_.faces_[f];
-        double P[3][3];
-        for (int i = 0; i < 3; ++i) {
-          const std::array<double, 3> n = K_.hyperboloid(t_.corner(F, i));
-          for (int j = 0; j < 3; ++j) P[i][j] = n[j];
-        }
-        const double u[3] = {P[1][0] - P[0][0], P[1][1] - P[0][1], P[1][2] - P[0][2]};
-        const double v[3] = {P[2][0] - P[0][0], P[2][1] - P[0][1], P[2][2] - P[0][2]};
-        // The plane's Euclidean normal; its Minkowski dual is the centre.
-        double m[3] = {u[1] * v[2] - u[2] * v[1], -(u[2] * v[0] - u[0] * v[2]), -(u[0] * v[1] - u[1] * v[0])};
-        const double mm = m[0] * m[0] - m[1] * m[1] - m[2] * m[2];
-        double cosh_r = INFINITY, centre[3];
-        if (mm > 0) {
-          const double s = (m[0] > 0 ? 1 : -1) / std::sqrt(mm);
-          for (int j = 0; j < 3; ++j) centre[j] = m[j] * s;
-          cosh_r = centre[0] * P[0][0] - centre[1] * P[0][1] - centre[2] * P[0][2];
-          if (!(cosh_r >= 1)) cosh_r = INFINITY;  // rounding made nonsense: still a candidate
-        } else {  // a horocycle or hypercycle: take the centroid
-          double c[3], cc;
-          for (int j = 0; j < 3; ++j) c[j] = P[0][j] + P[1][j] + P[2][j];
-          cc = std::sqrt(c[0] * c[0] - c[1] * c[1] - c[2] * c[2]);
-          for (int j = 0; j < 3; ++j) centre[j] = c[j] / cc;
-        }
+        CachedCircle &e = cached_circle(f);
+        const double cosh_r = e.c.cosh_r;
         // The rounded radius orders the faces and decides the clear cases;
         // the exact test decides near the limit (and the final check
         // decides them all).
         if (cosh_r <= best_cosh || cosh_r < limit * (1 - 1e-6)) continue;
-        if (cosh_r < limit * (1 + 1e-6) && K_.large_circumdisk(t_.corner(F, 0), t_.corner(F, 1), t_.corner(F, 2)) < 0)
-          continue;
+        if (cosh_r < limit * (1 + 1e-6)) {
+          const Face &F = t_.faces_[f];
+          if (e.large == 0) e.large = K_.large_circumdisk(t_.corner(F, 0), t_.corner(F, 1), t_.corner(F, 2));
+          if (e.large < 0) continue;
+        }
         best = f, best_cosh = cosh_r;
-        cx = centre[1] / (1 + centre[0]), cy = centre[2] / (1 + centre[0]);
+        cx = e.c.cx, cy = e.c.cy;
       }
       if (best == kNone) {
         // Rounding may have hidden a large circle: look again, exactly.
@@ -249,22 +311,19 @@ class DummyBuilder {
           if (K_.large_circumdisk(t_.corner(F, 0), t_.corner(F, 1), t_.corner(F, 2)) > 0) best = f;
         }
         if (best == kNone) return;
-        const Face &F = t_.faces_[best];  // its centroid serves
-        double c[3] = {0, 0, 0};
-        for (int i = 0; i < 3; ++i) {
-          const std::array<double, 3> n = K_.hyperboloid(t_.corner(F, i));
-          for (int j = 0; j < 3; ++j) c[j] += n[j];
-        }
-        cx = c[1] / (c[0] + std::sqrt(c[0] * c[0] - c[1] * c[1] - c[2] * c[2]));
-        cy = c[2] / (c[0] + std::sqrt(c[0] * c[0] - c[1] * c[1] - c[2] * c[2]));
+        const Circle c = circle(t_.faces_[best], true);  // its centroid serves
+        cx = c.cx, cy = c.cy;
       }
       if (t_.vertices_.size() > max_points) throw std::logic_error("dummy points: the refinement does not end");
       // Congruent faces have symmetric circumcentres, and symmetric points
       // are cocircular: a relative nudge of about 2^-20 keeps the set in
-      // general position, so the filters decide every test.
+      // general position, so the filters decide every test. Near the circle
+      // (large genus) it is scaled by 1 - |c|^2 to stay hyperbolically small.
       rng_ = rng_ * 6364136223846793005ull + 1442695040888963407ull;
-      const double dx = double(int64_t(rng_ >> 44) - (1 << 19)) * 0x1p-39;
-      const double dy = double(int64_t((rng_ >> 24) & 0xFFFFF) - (1 << 19)) * 0x1p-39;
+      double dx = double(int64_t(rng_ >> 44) - (1 << 19)) * 0x1p-39;
+      double dy = double(int64_t((rng_ >> 24) & 0xFFFFF) - (1 << 19)) * 0x1p-39;
+      const double w = 1 - (cx * cx + cy * cy);
+      if (w < 0x1p-10) dx *= w * 0x1p10, dy *= w * 0x1p10;
       insert(cx * (1 + dx), cy * (1 + dy), best);
     }
   }
@@ -274,6 +333,7 @@ class DummyBuilder {
   group::TranslationTable &T_;
   std::vector<Edge> stack_;
   std::vector<uint32_t> ids_;
+  std::vector<CachedCircle> circles_;  // by face id
   uint64_t rng_ = 0x2545F4914F6CDD1Dull;
 };
 

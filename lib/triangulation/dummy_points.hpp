@@ -29,19 +29,18 @@ void register_q0_sites(surface::Surface &surface, double *x, double *y);
 class Triangulation;
 
 // The largest genus whose dummy points are built (HDT_CREATE_GENUS_MAX in
-// hdt.h): the refinement places its points with double-precision geometry
-// on hyperboloid coordinates, and at genus 128 those of faces near the
-// corners of F_g (entries near cosh(2R), R the circumradius of F_g) cancel
-// every bit. Every genus up to this one is built and certified by a test.
-constexpr int kDummyGenusMax = 96;
+// hdt.h): the largest that a test builds and certifies. The refinement's
+// circumcentres far from O are computed in 133 bits (hyperboloid
+// coordinates near cosh(2R), R the circumradius of F_g, cancel every bit of
+// a double from genus about 128 on).
+constexpr int kDummyGenusMax = 256;
 
 // The certified template of a genus if this process has built it, else null
 // (thread-safe).
 std::shared_ptr<const DummyTemplate> cached_dummy_template(int genus);
 // Builds and certifies the dummy points in t (no vertices yet, a fresh
 // kernel), keeps a copy for later triangulations and returns it. Throws
-// std::length_error above kDummyGenusMax, and when the refinement cannot
-// place a point in double precision.
+// std::length_error above kDummyGenusMax.
 std::shared_ptr<const DummyTemplate> build_dummy_points(Triangulation &t);
 
 }  // namespace hdt::triangulation
