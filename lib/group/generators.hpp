@@ -76,11 +76,16 @@ class GeneratorSet {
       }
     }
     for (const Moebius<T> &m : moebius_) lorentz_.push_back(Lorentz<T>::from_moebius(m));
+    // e^{i k pi/2g} = B_k / |B|, for rotated_products.hpp.
+    const T inverse_modulus = T(1) / moebius_[0].b.re;  // B_0 = |B|
+    for (const Moebius<T> &m : moebius_) rotation_.push_back({m.b.re * inverse_modulus, m.b.im * inverse_modulus});
   }
 
   const Presentation &presentation() const { return presentation_; }
   const Moebius<T> &moebius(Letter k) const { return moebius_[k]; }
   const Lorentz<T> &lorentz(Letter k) const { return lorentz_[k]; }
+  // The rotation by k pi/2g about O as the unit complex number e^{i k pi/2g}.
+  const Complex<T> &rotation(int k) const { return rotation_[k]; }
 
   // The product g_w0 g_w1 ... as written (letters must be valid).
   Moebius<T> moebius(const Letter *w, std::size_t length) const {
@@ -107,6 +112,7 @@ class GeneratorSet {
   Presentation presentation_;
   std::vector<Moebius<T>> moebius_;
   std::vector<Lorentz<T>> lorentz_;
+  std::vector<Complex<T>> rotation_;
 };
 
 // The generators of one genus at one precision, built once per process and

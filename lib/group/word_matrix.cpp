@@ -19,6 +19,7 @@
 #include "exact/unit_disk.hpp"
 #include "group/dehn.hpp"
 #include "group/generators.hpp"
+#include "group/rotated_products.hpp"
 
 namespace hdt::group {
 
@@ -91,7 +92,7 @@ double moebius_precision_bits(const Presentation &p, std::size_t m, double targe
 void accurate_matrices(const Presentation &p, const Word &w, Moebius<double> *moebius, Lorentz<double> *lorentz) {
   exact::with_precision(moebius_precision_bits(p, w.size(), 66), [&](auto zero) {
     using T = decltype(zero);
-    const Moebius<T> m = shared_generators<T>(p).moebius(w.data(), w.size());
+    const Moebius<T> m = rotated_moebius(shared_generators<T>(p), w.data(), w.size());
     *moebius = Moebius<double>{{to_double(m.a.re), to_double(m.a.im)}, {to_double(m.b.re), to_double(m.b.im)}};
     const Lorentz<T> L = Lorentz<T>::from_moebius(m);
     for (int i = 0; i < 3; ++i)
@@ -488,7 +489,7 @@ Lorentz<T> accurate_lorentz_as(const Presentation &p, const Word &w) {
   const double bits = bits_for(p, w.size()) + double(std::numeric_limits<T>::digits);
   return exact::with_precision(bits, [&](auto zero) {
     using U = decltype(zero);
-    const Lorentz<U> m = shared_generators<U>(p).lorentz(w.data(), w.size());
+    const Lorentz<U> m = rotated_lorentz(shared_generators<U>(p), w.data(), w.size());
     Lorentz<T> r;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) r.m[i][j] = static_cast<T>(m.m[i][j]);

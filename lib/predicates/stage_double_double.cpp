@@ -3,7 +3,7 @@
 #include <mpfr.h>
 
 #include "exact/precision_ladder.hpp"
-#include "group/generators.hpp"
+#include "group/rotated_products.hpp"
 #include "group/word_matrix.hpp"
 
 namespace hdt::predicates {
@@ -59,7 +59,7 @@ const group::Lorentz<FastReal> &DoubleDoubleStage::matrix(TranslationId id) {
   slot = exact::with_precision(bits, [&](auto zero) {
     using U = decltype(zero);
     const group::Lorentz<U> M =
-        group::Lorentz<U>::from_moebius(group::shared_generators<U>(surface_.presentation()).moebius(word));
+        group::Lorentz<U>::from_moebius(group::rotated_moebius(group::shared_generators<U>(surface_.presentation()), word.data(), word.size()));
     auto L = std::make_unique<group::Lorentz<FastReal>>();
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) L->m[i][j] = round_mp(M.m[i][j]);
