@@ -88,7 +88,7 @@ class DoubleStage {
   FilteredPoint compute_point(const TranslatedPoint &p);
 
   surface::Surface &surface_;
-  PointCache<FilteredPoint> cache_;
+  PointCache<FilteredPoint, 10> cache_;  // 57 KiB: see PointCache
   std::vector<std::array<double, 3>> site_vectors_;  // by site id, filled up to the last one asked for
 };
 

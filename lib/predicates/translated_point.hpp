@@ -43,12 +43,15 @@ inline bool identical(const TranslatedPoint &a, const TranslatedPoint &b) {
 // their stored points.
 inline TranslatedPoint stored(const TranslatedPoint &p) { return {p.x, p.y, 0, -1}; }
 
-// A small direct-mapped cache of a stage's points: a walk or a conflict
-// search asks for the same few corners and query again and again. 256
-// slots: points along a curve that crosses the sides of F_g make conflict
-// searches of a few dozen translated points, and 64 slots missed a quarter
-// of their lookups (to 5% more instructions per insertion).
-template <class Point>
+// A small direct-mapped cache of a stage's points, 2^Bits slots: a walk or
+// a conflict search asks for the same few corners and query again and
+// again. Points along a curve that crosses the sides of F_g make conflict
+// searches of a few dozen translated points: 64 slots missed a quarter of
+// their lookups (to 5% more instructions per insertion), 256 still 8% of
+// the double stage's in-circle lookups along a geodesic at genus 2, 1024
+// miss 3% (the double stage's size; 3% fewer instructions in curves_bench
+// --shape geodesic).
+template <class Point, int Bits = 8>
 class PointCache {
  public:
   // The cached value of p, or compute(p) stored (a throw leaves the slot as
@@ -64,7 +67,7 @@ class PointCache {
   }
 
  private:
-  static constexpr int kBits = 8;
+  static constexpr int kBits = Bits;
   static std::size_t slot(const TranslatedPoint &p) {
     uint64_t bits;
     std::memcpy(&bits, &p.x, sizeof bits);
