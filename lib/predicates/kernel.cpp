@@ -65,6 +65,13 @@ int Kernel::orientation_checked(const TranslatedPoint &p, const TranslatedPoint 
   return decide("orientation", orientation_stages(p, q, r), [&] { return exact_.orientation(p, q, r); });
 }
 
+int Kernel::orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                        const FilteredPoint &a, const FilteredPoint &b, const FilteredPoint &c) {
+  if (const Sign s = DoubleStage::orientation(a, b, c); decided(s))
+    return decide("orientation", {s, Stage::double_filter}, [&] { return exact_.orientation(p, q, r); });
+  return orientation(p, q, r);
+}
+
 int Kernel::orientation_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
   return to_int(exact_.orientation(p, q, r));
 }
@@ -157,6 +164,14 @@ int Kernel::perturbed_tie(const std::array<TranslatedPoint, 4> &pt, const std::a
       "repeated)");
 }
 
+int Kernel::in_circle_perturbed(const std::array<TranslatedPoint, 4> &pt, const std::array<uint32_t, 4> &vertex,
+                                const std::array<const FilteredPoint *, 4> &f) {
+  if (const Sign s = DoubleStage::in_circle(*f[0], *f[1], *f[2], *f[3]); decided(s))
+    return decide("in_circle_perturbed", {s, Stage::double_filter},
+                  [&] { return exact_.in_circle(pt[0], pt[1], pt[2], pt[3]); });
+  return in_circle_perturbed(pt, vertex);
+}
+
 // ---- beyond_side ----
 
 Kernel::Decision Kernel::beyond_side_stages(const FilteredPoint &a, int side, const TranslatedPoint &p) {
@@ -232,6 +247,13 @@ Kernel::Decision Kernel::large_circumdisk_stages(const TranslatedPoint &p, const
 int Kernel::large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
   return decide("large_circumdisk", large_circumdisk_stages(p, q, r),
                 [&] { return exact_.large_circumdisk(p, q, r); });
+}
+
+int Kernel::large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                             const FilteredPoint &a, const FilteredPoint &b, const FilteredPoint &c) {
+  if (const Sign s = double_.large_circumdisk(a, b, c); decided(s))
+    return decide("large_circumdisk", {s, Stage::double_filter}, [&] { return exact_.large_circumdisk(p, q, r); });
+  return large_circumdisk(p, q, r);
 }
 
 int Kernel::large_circumdisk_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {

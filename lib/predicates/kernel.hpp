@@ -132,6 +132,18 @@ class Kernel {
   int large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int large_circumdisk_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
 
+  // orientation, in_circle_perturbed and large_circumdisk with each point's
+  // double point given (a, b, c, e: certified as the double stage's, any
+  // error, an infinite one never decides): a vertex removal computes them
+  // once per hole and tests each many times, which then skips the point
+  // cache. The double stage runs on them; the later stages as above.
+  int orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                  const FilteredPoint &a, const FilteredPoint &b, const FilteredPoint &c);
+  int in_circle_perturbed(const std::array<TranslatedPoint, 4> &points, const std::array<uint32_t, 4> &vertex,
+                          const std::array<const FilteredPoint *, 4> &certified);
+  int large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
+                       const FilteredPoint &a, const FilteredPoint &b, const FilteredPoint &c);
+
   // The hyperboloid vector of p in double, for constructions (circumcentres
   // of the dummy refinement), not predicates: accurate to about 1e-9
   // relative, from the refined stages where double precision is not.

@@ -45,7 +45,13 @@ class HoleFiller {
  private:
   const TranslatedPoint &at(int i) const { return polygon_[std::size_t(i)].point; }
   const Vec3 &lift(int i) const { return polygon_[std::size_t(i)].lift; }
-  int orientation(int a, int b, int c) { return K_.orientation(at(a), at(b), at(c)); }
+  // The polygon's lifts as certified double points, made once: the tests
+  // below read them instead of the kernel's point cache (a hole of a dummy
+  // on a curve has hundreds of vertices, each tested a few times).
+  const predicates::FilteredPoint &certified(int i) const { return certified_[std::size_t(i)]; }
+  int orientation(int a, int b, int c) {
+    return K_.orientation(at(a), at(b), at(c), certified(a), certified(b), certified(c));
+  }
 
   // The crossing of the ear at b: in_circle(a, b, c, v) / orientation(a, b,
   // c) in double; +infinity for an ear that is not convex.
@@ -85,6 +91,9 @@ class HoleFiller {
   bool flip_out_removed_vertex() {
     const std::size_t k = polygon_.size();
     prev_.resize(k), next_.resize(k), beyond_.assign(k, -1), stamp_.assign(k, 0);
+    certified_.resize(k);
+    for (std::size_t i = 0; i < k; ++i) certified_[i] = polygon_[i].certified();
+    const predicates::FilteredPoint removed = removed_.certified();
     for (std::size_t i = 0; i < k; ++i) prev_[i] = int((i + k - 1) % k), next_[i] = int((i + 1) % k);
     triangles_.clear();
     triangles_.reserve(k - 2);
@@ -98,7 +107,9 @@ class HoleFiller {
       if (e.stamp != stamp_[std::size_t(b)]) continue;  // stale: a neighbour changed since
       const int a = prev_[std::size_t(b)], c = next_[std::size_t(b)];
       // Exactly: the ear is convex and v lies left of a -> c, so v-b flips.
-      if (orientation(a, b, c) <= 0 || K_.orientation(removed_.point, at(a), at(c)) <= 0) continue;
+      if (orientation(a, b, c) <= 0 ||
+          K_.orientation(removed_.point, at(a), at(c), removed, certified(a), certified(c)) <= 0)
+        continue;
       const int t = add_triangle(a, b, c);
       link(t, 0, beyond_[std::size_t(b)]);  // edge b -> c
       link(t, 2, beyond_[std::size_t(a)]);  // edge a -> b
@@ -137,7 +148,8 @@ class HoleFiller {
       const std::array<TranslatedPoint, 4> points{at(p), at(q), at(r), at(d)};
       const std::array<uint32_t, 4> ids{polygon_[std::size_t(p)].vertex, polygon_[std::size_t(q)].vertex,
                                         polygon_[std::size_t(r)].vertex, polygon_[std::size_t(d)].vertex};
-      if (K_.in_circle_perturbed(points, ids) <= 0) continue;
+      if (K_.in_circle_perturbed(points, ids, {&certified(p), &certified(q), &certified(r), &certified(d)}) <= 0)
+        continue;
       if (orientation(p, q, d) <= 0 || orientation(p, d, r) <= 0) return false;  // d in the circle: never so
       // The neighbours around the quadrilateral p q d r.
       const int across_pq = T.n[std::size_t((i + 2) % 3)], across_rp = T.n[std::size_t((i + 1) % 3)];
@@ -165,6 +177,7 @@ class HoleFiller {
   std::vector<int> stamp_;   // ear version; -1 once off the link
   std::priority_queue<Ear> heap_;
   std::vector<Triangle> triangles_;
+  std::vector<predicates::FilteredPoint> certified_;  // by polygon index
 };
 
 }  // namespace

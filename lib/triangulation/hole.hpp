@@ -35,6 +35,10 @@ struct HoleVertex {
   // fill_hole's ear order and remove()'s early refusal read them.
   std::array<double, 3> lift;
   double lift_error;
+
+  // The lift as the double stage's certified point (Kernel's overloads that
+  // take one).
+  predicates::FilteredPoint certified() const { return {{lift[0], lift[1], lift[2]}, lift_error}; }
 };
 
 // The hole's vertex at p (vertex id `vertex`) with its lift: the double

@@ -89,7 +89,10 @@ bool Triangulation::remove(uint32_t v) {
   for (const HoleFace &f : hole_faces_) {
     const TranslatedPoint &a = polygon[std::size_t(f[0])].point, &b = polygon[std::size_t(f[1])].point,
                           &c = polygon[std::size_t(f[2])].point;
-    if (kernel_->large_circumdisk(a, b, c) > 0) return false;
+    // The lifts, certified, skip the point cache (one test per new face).
+    if (kernel_->large_circumdisk(a, b, c, polygon[std::size_t(f[0])].certified(),
+                                  polygon[std::size_t(f[1])].certified(), polygon[std::size_t(f[2])].certified()) > 0)
+      return false;
     new_faces_.push_back({{Corner{polygon[std::size_t(f[0])].vertex, a.translation},
                            Corner{polygon[std::size_t(f[1])].vertex, b.translation},
                            Corner{polygon[std::size_t(f[2])].vertex, c.translation}}});
