@@ -10,7 +10,7 @@
  *   - the translation ids the faces use, each with its canonical word (the
  *     letters k of the generators g_k, product written left to right);
  *   - for each input point, in input order, the vertex that holds it (ids
- *     are given in the order of insertion, a Hilbert order, not input order);
+ *     are given in the order of insertion, rounds of Hilbert order, not input order);
  *   - with --voronoi, the Voronoi diagram last (voronoi_writer.h).
  * Numbers are printed with %.17g, so that they read back to the same
  * doubles.
