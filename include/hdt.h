@@ -399,8 +399,8 @@ HDT_API hdt_status hdt_save(const hdt_triangulation *t, void *bytes, size_t capa
    that breaks an invariant. Memory is bounded by a small multiple of size
    (every count is checked against size before anything is allocated).
    *out is not written on failure. HDT_EINVAL also for out NULL or bytes
-   NULL with size > 0; HDT_ENOMEM when memory runs out. Time: hdt_validate's
-   and a third more, 1 to 2.4 times hdt_insert_many of the same points
+   NULL with size > 0; HDT_ENOMEM when memory runs out. Time: about
+   hdt_validate's, 1.1 to 1.2 times hdt_insert_many of the same points
    (measurements in docs/format.md). */
 HDT_API hdt_status hdt_load(hdt_triangulation **out, const void *bytes, size_t size) HDT_NOEXCEPT;
 
@@ -422,7 +422,11 @@ HDT_API hdt_status hdt_load(hdt_triangulation **out, const void *bytes, size_t s
    2 and 4): points within 5e-14 of the exact ones in the disk (hyperbolic
    distance 4.3e-13), radii and edge lengths within a relative 3.2e-13; at
    genus 2 and 3 within 3.5e-14 throughout. The error grows with the
-   genus, with the entries of the translations' matrices (docs/dual.md). */
+   genus, with the entries of the translations' matrices (docs/dual.md).
+   A face double cannot resolve (corners nearly coincident or nearly
+   collinear, an ulp apart, or at the scale of 1e-300) has its circle
+   computed with 200-bit arithmetic from the exact data instead; corners
+   of such faces are rounded values, like all corners. */
 
 /* Per face f and corner i, faces[3f + i]: the face across the edge opposite
    corner i (from corner i+1 to corner i+2), and translations[3f + i]: the

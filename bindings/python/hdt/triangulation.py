@@ -166,7 +166,7 @@ class Triangulation:
     on M_g).
 
     Raises :class:`hdt.InvalidArgument` (a ValueError) for genus < 2,
-    :class:`hdt.NotSupported` above HDT_CREATE_GENUS_MAX (96) and TypeError when genus
+    :class:`hdt.NotSupported` above HDT_CREATE_GENUS_MAX (256) and TypeError when genus
     is not an int.
 
     Example::
