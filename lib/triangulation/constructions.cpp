@@ -71,9 +71,8 @@ HDT_INLINE void corners(const Triangulation &tri, const Face &f, Point p[3]) {
 
 // Whether some corner of f is rounded: translated, or a dummy's algebraic point.
 HDT_INLINE bool rounded_corners(const Triangulation &tri, const Face &f) {
-  bool rounded = false;
-  for (int i = 0; i < 3; ++i) rounded |= f.t[i] != 0 || tri.site_of(f.v[i]) >= 0;
-  return rounded;
+  if ((f.t[0] | f.t[1] | f.t[2]) != 0) return true;
+  return tri.site_of(f.v[0]) >= 0 || tri.site_of(f.v[1]) >= 0 || tri.site_of(f.v[2]) >= 0;
 }
 
 // The dual outputs' circumcentre (see circumcentre() in the header). With
@@ -95,12 +94,11 @@ HDT_INLINE bool centre_of(const Point &p0, const Point &p1, const Point &p2, boo
   const double a2r = n2r * d2r + n2i * d2i, a2i = n2i * d2r - n2r * d2i;
   const double m1 = n1r * n1r + n1i * n1i, m2 = n2r * n2r + n2i * n2i;
   const double cross = 2 * (a1r * a2i - a1i * a2r);
-  const double norms = (a1r * a1r + a1i * a1i) * (a2r * a2r + a2i * a2i);
-  if (!(m1 > 0x1p-500 && m2 > 0x1p-500 && cross * cross > 0x1p-28 * norms)) return false;
-  if (rounded) {
+  const double norms = (a1r * a1r + a1i * a1i) * (a2r * a2r + a2i * a2i), cross2 = cross * cross;
+  if (!(m1 > 0x1p-500 && m2 > 0x1p-500 && cross2 > 0x1p-28 * norms)) return false;
+  if (rounded) {  // shortest edge^2 x sine^2 > 2^-60, sine^2 = cross^2 / (4 norms)
     const double er = p1.re - p2.re, ei = p1.im - p2.im;
-    const double shortest = std::min({m1, m2, er * er + ei * ei}), sine2 = cross * cross / (4 * norms);
-    if (!(shortest * sine2 > 0x1p-60)) return false;
+    if (!(std::min({m1, m2, er * er + ei * ei}) * cross2 > 0x1p-58 * norms)) return false;
   }
   const double inv = 1 / cross;
   const double cr = (m1 * a2i - m2 * a1i) * inv, ci = (m2 * a1r - m1 * a2r) * inv;
