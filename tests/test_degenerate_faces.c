@@ -138,17 +138,7 @@ START_TEST(a_point_near_the_circle) {
 END_TEST
 
 int main(void) {
-  Suite *s = suite_create("degenerate_faces");
-  TCase *c = tcase_create("circles");
-  tcase_add_test(c, corners_at_1e_238);
-  tcase_add_test(c, needles_an_ulp_off_a_line);
-  tcase_add_test(c, an_ulp_from_a_dummy);
-  tcase_add_test(c, near_a_corner_under_a_translation);
-  tcase_add_test(c, a_point_near_the_circle);
-  suite_add_tcase(s, c);
-  SRunner *sr = srunner_create(s);
-  srunner_run_all(sr, CK_NORMAL);
-  const int failed = srunner_ntests_failed(sr);
-  srunner_free(sr);
-  return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+  const TTest *const tests[] = {corners_at_1e_238, needles_an_ulp_off_a_line, an_ulp_from_a_dummy,
+                                near_a_corner_under_a_translation, a_point_near_the_circle};
+  return run_tests("degenerate_faces", tests, sizeof tests / sizeof tests[0]);
 }
