@@ -15,7 +15,8 @@ Surface::Surface(int genus)
     : presentation_(genus),
       field_(exact::field_of_genus(genus)),
       table_(presentation_),
-      half_trace_(group::half_trace<double>(genus)) {
+      half_trace_(group::half_trace<double>(genus)),
+      quarter_systole_cosh_rounded_(std::sqrt(1 + std::cos(M_PI / (2.0 * genus)))) {
   const int n = presentation_.letter_count();
   for (group::Letter k = 0; k < n; ++k) {
     if (table_.word(letter(k)) != group::Word{k})

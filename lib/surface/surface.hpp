@@ -85,6 +85,11 @@ class Surface {
   // ---- Constants of the genus ----
   // A = cot(pi/4g) rounded (group::half_trace).
   double half_trace() const { return half_trace_; }
+  // cosh(sys/4) = sqrt(1 + cos(pi/2g)), within a few ulps: the limit of a
+  // face's circumradius, for the decisions made in double (which face to
+  // refine, whether a removal is refused for certain: the latter with a
+  // margin of 1e-14).
+  double quarter_systole_cosh_rounded() const { return quarter_systole_cosh_rounded_; }
   // sin(pi/4g)^2, exactly: the positive factor of an exact matrix's rows
   // per letter.
   const exact::Cyclotomic &sin2() const { return sin2_; }
@@ -112,6 +117,7 @@ class Surface {
   mutable std::vector<std::unique_ptr<group::ExactLorentz>> exact_generators_;  // null until used
   std::vector<std::vector<int>> sides_by_sector_;  // sides_near, by sector of angle
   double half_trace_;
+  double quarter_systole_cosh_rounded_;
   exact::Cyclotomic sin2_;
   exact::FieldElement quarter_systole_cosh2_;
   std::vector<Site> sites_;

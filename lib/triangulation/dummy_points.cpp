@@ -31,28 +31,25 @@ namespace hdt::triangulation {
 class DummyBuilder {
  public:
   // t: a triangulation with no vertices and a fresh kernel; it receives the set.
-  explicit DummyBuilder(Triangulation &t) : t_(t), K_(*t_.kernel_), T_(t.table()) {}
+  explicit DummyBuilder(Triangulation &t) : t_(t), K_(t.kernel()), T_(t.table()) {}
 
   std::shared_ptr<const DummyTemplate> build() {
     initial_triangulation();
-    for (uint32_t f = 0; f < t_.faces_.size(); ++f)
+    for (uint32_t f = 0; f < t_.faces().size(); ++f)
       for (int i = 0; i < 3; ++i) stack_.push_back({f, i});
     lawson();
     refine();
-    if (t_.genus_ <= kThinningGenusMax) thin_dummy_points(t_);
+    if (t_.genus() <= kThinningGenusMax) thin_dummy_points(t_);
     t_.validate();  // the certificate
     auto result = std::make_shared<DummyTemplate>();
-    result->genus = t_.genus_;
-    result->vertices = t_.vertices_;
-    result->faces = t_.faces_;
+    result->genus = t_.genus();
+    result->vertices = t_.vertices();
+    result->faces = t_.faces();
     for (std::size_t id = T_.neighbour_count(); id < T_.size(); ++id) result->extra_words.push_back(T_.word(TranslationId(id)));
     return result;
   }
 
  private:
-  using Corner = Triangulation::Corner;
-  using NewFace = Triangulation::NewFace;
-  using BoundaryEdge = Triangulation::BoundaryEdge;
   struct Edge {
     uint32_t face;
     int i;
@@ -63,10 +60,8 @@ class DummyBuilder {
     const int g = p.genus(), n = p.letter_count();
     std::vector<double> sx(2 * g + 1), sy(2 * g + 1);
     register_q0_sites(t_.surface(), sx.data(), sy.data());
-    t_.vertices_.push_back({0, 0, 0, kNone});  // 0: the centre of F_g
-    for (int s = 0; s <= 2 * g; ++s) t_.vertices_.push_back({sx[s], sy[s], 0, kNone});  // 1: v_0; 2 + k: m_k
-    t_.dummy_.assign(t_.vertices_.size(), true);
-    double x, y;
+    std::vector<Vertex> vertices{{0, 0, 0, kNone}};  // 0: the centre of F_g
+    for (int s = 0; s <= 2 * g; ++s) vertices.push_back({sx[s], sy[s], 0, kNone});  // 1: v_0; 2 + k: m_k
     // vertex_copy[k] maps v_0 to v_k: g_{k-2g} maps v_k to v_{k-2g-1}, and
     // the steps -(2g+1) visit every vertex.
     // The 4g letters of the cycle multiply to 1, so after m steps the
@@ -92,7 +87,7 @@ class DummyBuilder {
       vertex_copy[vertex_of_step[m]] = id;
     }
     for (int k = 0; k < n; ++k) {  // a cheap guard against a wrong cycle
-      const auto z = T_.moebius(vertex_copy[k]).apply({x = t_.vertices_[1].x, y = t_.vertices_[1].y});
+      const auto z = T_.moebius(vertex_copy[k]).apply({vertices[1].x, vertices[1].y});
       const auto v = surface::vertex(p, k);
       if (std::abs(z.re - v.re) + std::abs(z.im - v.im) > 1e-6) throw std::logic_error("dummy points: vertex cycle");
     }
@@ -112,10 +107,7 @@ class DummyBuilder {
       built[A(k)] = Face{{o.v, a.v, m.v}, {o.t, a.t, m.t}, {B(k + 2 * g), B(k), B(k - 1)}, {across, 0, 0}};
       built[B(k)] = Face{{o.v, m.v, b.v}, {o.t, m.t, b.t}, {A(k + 2 * g), A(k + 1), A(k)}, {across, 0, 0}};
     }
-    t_.faces_ = built;
-    for (uint32_t f = 0; f < built.size(); ++f)
-      for (int i = 0; i < 3; ++i) t_.vertices_[built[f].v[i]].face = f;
-    t_.live_vertices_ = t_.dummies_ = t_.vertices_.size();
+    t_.assign_dummies(std::move(vertices), std::move(built));
   }
 
   // The in-circle test of the flips: perturbed when the four vertices are
@@ -131,36 +123,28 @@ class DummyBuilder {
     while (!stack_.empty()) {
       const Edge e = stack_.back();
       stack_.pop_back();
-      if (e.face < t_.faces_.size()) flip_if_illegal(e.face, e.i);
+      if (e.face < t_.faces().size()) flip_if_illegal(e.face, e.i);
     }
   }
 
   void flip_if_illegal(uint32_t f, int i) {
-    const Face F = t_.faces_[f];
+    const Face F = t_.faces()[f];
     const uint32_t n = F.n[i];
     if (n == f) return;
     const int k = t_.twin(f, i);
     if (k < 0) throw std::logic_error("dummy points: an edge without twin");
-    const Face N = t_.faces_[n];
+    const Face N = t_.faces()[n];
     const int b = next(i), c = prev(i);
     for (int j : {b, c})
       if (F.n[j] == f || F.n[j] == n) return;
     for (int j : {next(k), prev(k)})
       if (N.n[j] == f || N.n[j] == n) return;
-    const Corner A{F.v[i], F.t[i]}, B{F.v[b], F.t[b]}, C{F.v[c], F.t[c]};
-    const Corner D{N.v[k], T_.compose(F.nt[i], N.t[k])};
-    auto at = [&](const Corner &x) { return t_.point(x.v, x.t); };
-    if (in_circle({at(A), at(B), at(C), at(D)}, {A.v, B.v, C.v, D.v}) <= 0) return;
-    if (K_.orientation(at(A), at(B), at(D)) <= 0 || K_.orientation(at(A), at(D), at(C)) <= 0) return;
-    // N's corners: k = D, next(k) = C, prev(k) = B.
-    const std::vector<NewFace> created{{{A, B, D}}, {{A, D, C}}};
-    const std::vector<BoundaryEdge> boundary{
-        {A, B, F.n[c], t_.twin(f, c), F.nt[c]},
-        {C, A, F.n[b], t_.twin(f, b), F.nt[b]},
-        {B, D, N.n[next(k)], t_.twin(n, next(k)), T_.compose(F.nt[i], N.nt[next(k)])},
-        {D, C, N.n[prev(k)], t_.twin(n, prev(k)), T_.compose(F.nt[i], N.nt[prev(k)])},
-    };
-    t_.replace({f, n}, created, boundary, &ids_);
+    // The quadrilateral A B D C; the flip replaces B-C by A-D.
+    const TranslatedPoint A = t_.corner(F, i), B = t_.corner(F, b), C = t_.corner(F, c);
+    const TranslatedPoint D = t_.point(N.v[k], T_.compose(F.nt[i], N.t[k]));
+    if (in_circle({A, B, C, D}, {F.v[i], F.v[b], F.v[c], N.v[k]}) <= 0) return;
+    if (K_.orientation(A, B, D) <= 0 || K_.orientation(A, D, C) <= 0) return;
+    t_.flip(f, i, &ids_);
     for (uint32_t id : ids_)
       for (int j = 0; j < 3; ++j) stack_.push_back({id, j});
   }
@@ -168,32 +152,19 @@ class DummyBuilder {
   // Inserts the point (x, y), given in the canonical frame of face `from`.
   void insert(double x, double y, uint32_t from) {
     if (!std::isfinite(x) || !std::isfinite(y) || x * x + y * y >= 1)
-      throw std::logic_error("dummy points: at genus " + std::to_string(t_.genus_) +
+      throw std::logic_error("dummy points: at genus " + std::to_string(t_.genus()) +
                              " the circumcentre of a refinement face is not a point of the disk");
     Triangulation::Walk w{};
     for (int attempt = 0;; ++attempt) {
       if (attempt > 64) throw std::logic_error("dummy points: cannot place a refinement point");
-      w = t_.walk({x, y, 0, -1}, from, 0);
+      w = t_.walk_from({x, y, 0, -1}, from);
       if (w.zero_edges == 0) break;
       // On an edge line: move off it (the dummy points are ours to choose).
       x = std::nextafter(x, 0.0) * (1 - 0x1p-30);
       y = std::nextafter(y, 0.0) * (1 - 0x1p-29);
     }
     const predicates::Representative r = predicates::representative(K_, x, y);
-    const auto id = uint32_t(t_.vertices_.size());
-    const Face F = t_.faces_[w.face];
-    std::vector<NewFace> created;
-    std::vector<BoundaryEdge> boundary;
-    for (int i = 0; i < 3; ++i) {
-      const Corner a{F.v[next(i)], F.t[next(i)]}, b{F.v[prev(i)], F.t[prev(i)]};
-      if (F.n[i] == w.face) throw std::logic_error("dummy points: a face next to itself");
-      created.push_back({{a, b, Corner{id, w.query}}});
-      boundary.push_back({a, b, F.n[i], t_.twin(w.face, i), F.nt[i]});
-    }
-    t_.vertices_.push_back({x, y, r.translation, kNone});
-    t_.dummy_.push_back(true);
-    t_.replace({w.face}, created, boundary, &ids_);
-    ++t_.live_vertices_, ++t_.dummies_;
+    t_.split(w, x, y, r.translation, &ids_);
     for (uint32_t f : ids_) stack_.push_back({f, 2});
     lawson();
   }
@@ -273,9 +244,9 @@ class DummyBuilder {
     int large = 0;  // K_.large_circumdisk when asked, 0 before
   };
   CachedCircle &cached_circle(uint32_t f) {
-    if (circles_.size() <= f) circles_.resize(t_.faces_.size());
+    if (circles_.size() <= f) circles_.resize(t_.faces().size());
     CachedCircle &e = circles_[f];
-    const Face &F = t_.faces_[f];
+    const Face &F = t_.faces()[f];
     if (e.v != F.v || e.t != F.t) e = {F.v, F.t, circle(F), 0};
     return e;
   }
@@ -283,13 +254,13 @@ class DummyBuilder {
   // Largest circles first: the circumcentre of the face whose circle is
   // largest among those of hyperbolic diameter >= sys/2.
   void refine() {
-    const int g = t_.genus_;
-    const double limit = std::sqrt(1 + std::cos(M_PI / (2.0 * g)));  // cosh(sys/4)
+    const int g = t_.genus();
+    const double limit = t_.surface().quarter_systole_cosh_rounded();
     const std::size_t max_points = 64 * std::size_t(g) + 256;
     for (;;) {
       uint32_t best = kNone;
       double best_cosh = 0, cx = 0, cy = 0;
-      for (uint32_t f = 0; f < t_.faces_.size(); ++f) {
+      for (uint32_t f = 0; f < t_.faces().size(); ++f) {
         CachedCircle &e = cached_circle(f);
         const double cosh_r = e.c.cosh_r;
         // The rounded radius orders the faces and decides the clear cases;
@@ -297,7 +268,7 @@ class DummyBuilder {
         // decides them all).
         if (cosh_r <= best_cosh || cosh_r < limit * (1 - 1e-6)) continue;
         if (cosh_r < limit * (1 + 1e-6)) {
-          const Face &F = t_.faces_[f];
+          const Face &F = t_.faces()[f];
           if (e.large == 0) e.large = K_.large_circumdisk(t_.corner(F, 0), t_.corner(F, 1), t_.corner(F, 2));
           if (e.large < 0) continue;
         }
@@ -306,15 +277,15 @@ class DummyBuilder {
       }
       if (best == kNone) {
         // Rounding may have hidden a large circle: look again, exactly.
-        for (uint32_t f = 0; f < t_.faces_.size() && best == kNone; ++f) {
-          const Face &F = t_.faces_[f];
+        for (uint32_t f = 0; f < t_.faces().size() && best == kNone; ++f) {
+          const Face &F = t_.faces()[f];
           if (K_.large_circumdisk(t_.corner(F, 0), t_.corner(F, 1), t_.corner(F, 2)) > 0) best = f;
         }
         if (best == kNone) return;
-        const Circle c = circle(t_.faces_[best], true);  // its centroid serves
+        const Circle c = circle(t_.faces()[best], true);  // its centroid serves
         cx = c.cx, cy = c.cy;
       }
-      if (t_.vertices_.size() > max_points) throw std::logic_error("dummy points: the refinement does not end");
+      if (t_.vertices().size() > max_points) throw std::logic_error("dummy points: the refinement does not end");
       // Congruent faces have symmetric circumcentres, and symmetric points
       // are cocircular: a relative nudge of about 2^-20 keeps the set in
       // general position, so the filters decide every test. Near the circle

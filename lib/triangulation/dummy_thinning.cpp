@@ -79,39 +79,37 @@ class DummyThinning {
  public:
   explicit DummyThinning(Triangulation &t)
       : t_(t),
-        K_(*t.kernel_),
+        K_(t.kernel()),
         T_(t.table()),
-        fixed_(uint32_t(2 * t.genus_ + 2)),
-        limit_(std::sqrt(1 + std::cos(M_PI / (2.0 * t.genus_)))) {}
+        fixed_(uint32_t(2 * t.genus() + 2)),
+        limit_(t.surface().quarter_systole_cosh_rounded()) {}
 
   void run() {
     // Eight rounds at most: later ones gained nothing at genus 2 .. 32.
     for (int round = 0, idle = 0; round < 8 && idle < 2; ++round) {
-      const std::size_t before = t_.dummies_;
-      for (uint32_t v = fixed_; v < t_.vertices_.size(); ++v)
+      const std::size_t before = t_.dummy_count();
+      for (uint32_t v = fixed_; v < t_.vertices().size(); ++v)
         if (removable(v)) t_.remove(v);
       if (exhaustive()) merge_triples();
       merge_pairs();
       smooth();
-      idle = t_.dummies_ < before ? 0 : idle + 1;
+      idle = t_.dummy_count() < before ? 0 : idle + 1;
     }
-    renumber();
+    t_.compact_ids();
   }
 
  private:
-  using Corner = Triangulation::Corner;
-
   // Small sets try every merge; larger ones only those the fan estimate
   // finds promising (a try costs an insertion and removals).
-  bool exhaustive() const { return t_.dummies_ < 64; }
-  bool removable(uint32_t v) const { return v >= fixed_ && t_.vertices_[v].alive(); }
+  bool exhaustive() const { return t_.dummy_count() < 64; }
+  bool removable(uint32_t v) const { return v >= fixed_ && t_.vertices()[v].alive(); }
   Point at(const Corner &c) { return K_.hyperboloid(t_.point(c.v, c.t)); }
 
   // Edges between two removable dummies, shortest first (the closest pairs
   // are the most redundant).
   std::vector<std::pair<double, std::array<uint32_t, 2>>> edges() {
     std::vector<std::pair<double, std::array<uint32_t, 2>>> out;
-    for (const Face &F : t_.faces_)
+    for (const Face &F : t_.faces())
       for (int i = 0; i < 3; ++i) {
         const int a = next(i), b = prev(i);
         if (F.v[a] < F.v[b] && removable(F.v[a]) && removable(F.v[b]))
@@ -126,12 +124,12 @@ class DummyThinning {
   void link_of(uint32_t u, TranslationId base, std::vector<Corner> *out, Corner *self) {
     t_.star(u, &star_);
     out->clear();
-    for (const Triangulation::StarFace &s : star_) {
-      const Face &F = t_.faces_[s.face];
+    for (const StarFace &s : star_) {
+      const Face &F = t_.faces()[s.face];
       const int a = next(s.corner);
       out->push_back({F.v[a], T_.compose(base, T_.compose(s.frame, F.t[a]))});
     }
-    const Face &F0 = t_.faces_[star_[0].face];
+    const Face &F0 = t_.faces()[star_[0].face];
     *self = {u, T_.compose(base, F0.t[star_[0].corner])};
   }
 
@@ -144,7 +142,7 @@ class DummyThinning {
     std::rotate(lu_.begin(), iv, lu_.end());
     *cv = lu_[0];
     t_.star(v, &star_);
-    const TranslationId own = t_.faces_[star_[0].face].t[star_[0].corner];
+    const TranslationId own = t_.faces()[star_[0].face].t[star_[0].corner];
     Corner self;
     link_of(v, T_.compose(cv->t, T_.inverse(own)), &lv_, &self);
     const auto iu = std::find_if(lv_.begin(), lv_.end(), [&](const Corner &c) { return c.v == u; });
@@ -182,8 +180,8 @@ class DummyThinning {
 
   // Three dummies of a face become one, at a weighted centre of it.
   void merge_triples() {
-    for (uint32_t f = 0; f < t_.faces_.size(); ++f) {
-      const Face F = t_.faces_[f];
+    for (uint32_t f = 0; f < t_.faces().size(); ++f) {
+      const Face F = t_.faces()[f];
       if (!removable(F.v[0]) || !removable(F.v[1]) || !removable(F.v[2])) continue;
       const Point p = K_.hyperboloid(t_.corner(F, 0)), q = K_.hyperboloid(t_.corner(F, 1)),
                   r = K_.hyperboloid(t_.corner(F, 2));
@@ -201,7 +199,7 @@ class DummyThinning {
   void smooth() {
     std::vector<Corner> link;
     std::vector<Point> L;
-    const auto end = uint32_t(t_.vertices_.size());  // not the moved ones again
+    const auto end = uint32_t(t_.vertices().size());  // not the moved ones again
     for (uint32_t v = fixed_; v < end; ++v) {
       if (!removable(v)) continue;
       Corner self;
@@ -222,11 +220,11 @@ class DummyThinning {
   // Inserts dummies at `points`, then removes `old`; undoes it all unless
   // every step succeeds.
   bool try_move(const std::vector<std::array<double, 2>> &points, const std::vector<uint32_t> &old, uint32_t near) {
-    save();
+    t_.save(&saved_);
     bool ok = true;
     for (const auto &p : points) ok = ok && insert_dummy(p[0], p[1], near);
     for (uint32_t v : old) ok = ok && t_.remove(v);
-    if (!ok) restore();
+    if (!ok) t_.roll_back(&saved_);
     return ok;
   }
 
@@ -250,66 +248,16 @@ class DummyThinning {
         if (home.translation == 0) x = z.re, y = z.im, r = home;
       }
     }
-    t_.last_vertex_ = near;
-    const Triangulation::Walk w = t_.walk_from_hint({x, y, r.translation, -1});
-    if (t_.vertex_at(w) != kNone) return false;
-    t_.insert_located(x, y, r.translation, true, w);
-    return true;
+    return t_.insert_dummy(x, y, r.translation, near);
   }
-
-  void save() {
-    saved_.vertices = t_.vertices_;
-    saved_.faces = t_.faces_;
-    saved_.dummy = t_.dummy_;
-    saved_.live = t_.live_vertices_, saved_.dummies = t_.dummies_;
-    saved_.last_face = t_.last_face_, saved_.last_vertex = t_.last_vertex_;
-  }
-  void restore() {
-    t_.vertices_.swap(saved_.vertices);
-    t_.faces_.swap(saved_.faces);
-    t_.dummy_.swap(saved_.dummy);
-    t_.live_vertices_ = saved_.live, t_.dummies_ = saved_.dummies;
-    t_.last_face_ = saved_.last_face, t_.last_vertex_ = saved_.last_vertex;
-    // The cache is by id, and the ids above the restored count will name
-    // other points.
-    if (t_.representatives_.size() > t_.vertices_.size()) t_.representatives_.resize(t_.vertices_.size());
-  }
-
-  // Dense ids, in the old order: faces' canonical copies (smallest id) and
-  // the perturbation (larger id, larger epsilon) read only the order.
-  void renumber() {
-    std::vector<uint32_t> id(t_.vertices_.size(), kNone);
-    std::vector<Vertex> vertices;
-    for (uint32_t v = 0; v < t_.vertices_.size(); ++v)
-      if (t_.vertices_[v].alive()) id[v] = uint32_t(vertices.size()), vertices.push_back(t_.vertices_[v]);
-    for (Face &F : t_.faces_)
-      for (uint32_t &v : F.v) v = id[v];
-    t_.vertices_ = vertices;
-    t_.dummy_.assign(vertices.size(), true);
-    t_.representatives_.clear();
-    // Where walks start and their random choices, as in a copy of the
-    // template (triangulation.cpp): the first triangulation of a genus then
-    // behaves as every later one, down to the ids its walks intern.
-    t_.last_vertex_ = kNone;
-    t_.last_face_ = 0;
-    t_.rng_ = 0x9E3779B97F4A7C15ull;  // rng_'s initial value in triangulation.hpp
-  }
-
-  struct Saved {
-    std::vector<Vertex> vertices;
-    std::vector<Face> faces;
-    std::vector<bool> dummy;
-    std::size_t live = 0, dummies = 0;
-    uint32_t last_face = 0, last_vertex = kNone;
-  };
 
   Triangulation &t_;
   predicates::Kernel &K_;
   group::TranslationTable &T_;
   const uint32_t fixed_;  // vertex 0 and the sites stay
   const double limit_;    // cosh(sys/4)
-  Saved saved_;
-  std::vector<Triangulation::StarFace> star_;
+  Triangulation::Checkpoint saved_;
+  std::vector<StarFace> star_;
   std::vector<Corner> lu_, lv_;
   uint64_t rng_ = 0x9E3779B97F4A7C15ull;
 };

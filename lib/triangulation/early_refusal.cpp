@@ -69,10 +69,9 @@ bool in_hole(Kernel &kernel, const std::vector<HoleVertex> &polygon, const HoleV
 
 }  // namespace
 
-bool refusal_is_certain(Kernel &kernel, const std::vector<HoleVertex> &polygon, const HoleVertex &removed,
-                        int genus) {
+bool refusal_is_certain(Kernel &kernel, const std::vector<HoleVertex> &polygon, const HoleVertex &removed) {
   // cosh(sys/4), rounded up (cos, sqrt and the sum err by a few ulps).
-  const double limit = std::sqrt(1 + std::cos(M_PI / (2.0 * genus))) * (1 + 1e-14);
+  const double limit = kernel.surface().quarter_systole_cosh_rounded() * (1 + 1e-14);
   // x = the removed vertex first.
   if (far_from_all(removed.lift, removed.lift_error, polygon, limit)) return true;
   // Otherwise a short ascent of the distance to the nearest vertex, in

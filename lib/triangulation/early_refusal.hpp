@@ -24,9 +24,9 @@ namespace hdt::triangulation {
 
 // True when the lemma proves, with certified error bounds, that every
 // triangulation of the polygon (the link of `removed`, as for fill_hole)
-// has a face of circumdiameter >= sys/2 on the surface of genus `genus`.
+// has a face of circumdiameter >= sys/2 on the kernel's surface.
 // False when it cannot tell.
 bool refusal_is_certain(predicates::Kernel &kernel, const std::vector<HoleVertex> &polygon,
-                        const HoleVertex &removed, int genus);
+                        const HoleVertex &removed);
 
 }  // namespace hdt::triangulation

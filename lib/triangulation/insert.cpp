@@ -46,12 +46,12 @@ Triangulation::Inserted Triangulation::insert_in_circle(double x, double y, uint
   // and F conflicts with it, so the cavity search may start at F.
   if (kernel_->in_circle(corner(F, 0), corner(F, 1), corner(F, 2), q) > 0) {
     const uint32_t v = insert_located(x, y, r.translation, false, {face, 0, 0});
-    created->assign(new_ids_.begin(), new_ids_.end());
+    created->assign(scratch_.new_ids.begin(), scratch_.new_ids.end());
     return {v, false};
   }
   const std::size_t before = vertices_.size();
   const Inserted in = insert_walked(x, y, r.translation, walk(q, face, 0));
-  if (vertices_.size() > before) created->assign(new_ids_.begin(), new_ids_.end());
+  if (vertices_.size() > before) created->assign(scratch_.new_ids.begin(), scratch_.new_ids.end());
   return in;
 }
 
@@ -71,10 +71,10 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, b
   group::TranslationTable &T = table();
   const auto id = uint32_t(vertices_.size());
   if (id == kNone) throw std::length_error("too many vertices");
-  old_faces_.clear();
-  boundary_.clear();
-  new_faces_.clear();
-  cavity_stack_.clear();
+  scratch_.old_faces.clear();
+  scratch_.boundary.clear();
+  scratch_.new_faces.clear();
+  scratch_.cavity_stack.clear();
 
   // The conflict region: the face copies whose circle holds q (the query
   // sits in at.face's canonical frame, the common frame). In the disk it is
@@ -87,12 +87,12 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, b
   // than looking it up). A face is in conflict in at most one copy (its
   // circle is smaller than sys/2), and reached once: the check of both also
   // bounds the search on a broken triangulation.
-  old_faces_.push_back(at.face);
-  cavity_stack_.push_back({at.face, 0, 0, 3});
-  while (!cavity_stack_.empty()) {
-    CavityStep &top = cavity_stack_.back();
+  scratch_.old_faces.push_back(at.face);
+  scratch_.cavity_stack.push_back({at.face, 0, 0, 3});
+  while (!scratch_.cavity_stack.empty()) {
+    Scratch::CavityStep &top = scratch_.cavity_stack.back();
     if (top.left == 0) {
-      cavity_stack_.pop_back();
+      scratch_.cavity_stack.pop_back();
       continue;
     }
     const uint32_t f = top.face;
@@ -107,12 +107,12 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, b
     const TranslatedPoint qn{x, y, T.compose(T.inverse(sn), at.query), -1};
     if (kernel_->in_circle_perturbed({corner(N, 0), corner(N, 1), corner(N, 2), qn}, {N.v[0], N.v[1], N.v[2], id}) >
         0) {
-      for (const uint32_t o : old_faces_)
+      for (const uint32_t o : scratch_.old_faces)
         if (o == n) throw std::logic_error("a face conflicts twice (in two copies, or the cavity is no disk)");
-      old_faces_.push_back(n);
-      cavity_stack_.push_back({n, sn, int8_t(next(back)), 2});
+      scratch_.old_faces.push_back(n);
+      scratch_.cavity_stack.push_back({n, sn, int8_t(next(back)), 2});
     } else {
-      boundary_.push_back({{F.v[next(i)], T.compose(sigma, F.t[next(i)])},
+      scratch_.boundary.push_back({{F.v[next(i)], T.compose(sigma, F.t[next(i)])},
                            {F.v[prev(i)], T.compose(sigma, F.t[prev(i)])},
                            n,
                            back,
@@ -120,7 +120,7 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, b
     }
   }
   // Star the hole from q.
-  for (const BoundaryEdge &e : boundary_) new_faces_.push_back({{e.a, e.b, Corner{id, at.query}}});
+  for (const BoundaryEdge &e : scratch_.boundary) scratch_.new_faces.push_back({{e.a, e.b, Corner{id, at.query}}});
   // Room first, so that the two push_backs cannot fail halfway: an
   // allocation failure anywhere leaves the triangulation as it was.
   grow_for_one(vertices_);
@@ -128,7 +128,7 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, b
   vertices_.push_back({x, y, home, kNone});
   dummy_.push_back(dummy);
   try {
-    replace(old_faces_, new_faces_, boundary_, &new_ids_);
+    replace(scratch_.old_faces, scratch_.new_faces, scratch_.boundary, &scratch_.new_ids);
   } catch (...) {
     vertices_.pop_back();
     dummy_.pop_back();

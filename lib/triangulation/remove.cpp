@@ -36,44 +36,44 @@ bool Triangulation::remove(uint32_t v) {
   if (v >= vertices_.size() || !vertices_[v].alive())
     throw std::invalid_argument("vertex " + std::to_string(v) + " is not a live vertex");
   group::TranslationTable &T = table();
-  star(v, &star_);
-  old_faces_.clear();
-  boundary_.clear();
-  new_faces_.clear();
+  star(v, &scratch_.star);
+  scratch_.old_faces.clear();
+  scratch_.boundary.clear();
+  scratch_.new_faces.clear();
   // The link of v, counterclockwise, in the first star face's frame.
   auto hole_vertex = [&](uint32_t u, TranslationId t) { return lifted_hole_vertex(*kernel_, point(u, t), u); };
-  std::vector<HoleVertex> &polygon = hole_;
+  std::vector<HoleVertex> &polygon = scratch_.hole;
   polygon.clear();
-  polygon.reserve(star_.size());
-  for (const StarFace &s : star_) {
+  polygon.reserve(scratch_.star.size());
+  for (const StarFace &s : scratch_.star) {
     const Face &F = faces_[s.face];
     const int a = next(s.corner), b = prev(s.corner);
-    old_faces_.push_back(s.face);
+    scratch_.old_faces.push_back(s.face);
     polygon.push_back(hole_vertex(F.v[a], T.compose(s.frame, F.t[a])));
-    boundary_.push_back({{F.v[a], T.compose(s.frame, F.t[a])},
+    scratch_.boundary.push_back({{F.v[a], T.compose(s.frame, F.t[a])},
                          {F.v[b], T.compose(s.frame, F.t[b])},
                          F.n[s.corner],
                          twin(s.face, s.corner),
                          T.compose(s.frame, F.nt[s.corner])});
   }
   // The link never repeats a vertex in a simplicial complex.
-  if (repeats_a_vertex(polygon, &link_ids_)) throw std::logic_error("the link of a vertex repeats a vertex");
+  if (repeats_a_vertex(polygon, &scratch_.link_ids)) throw std::logic_error("the link of a vertex repeats a vertex");
 
-  const Face &first = faces_[star_[0].face];
-  const HoleVertex removed = hole_vertex(v, T.compose(star_[0].frame, first.t[star_[0].corner]));
-  if (refusal_is_certain(*kernel_, polygon, removed, genus_)) {
+  const Face &first = faces_[scratch_.star[0].face];
+  const HoleVertex removed = hole_vertex(v, T.compose(scratch_.star[0].frame, first.t[scratch_.star[0].corner]));
+  if (refusal_is_certain(*kernel_, polygon, removed)) {
 #ifdef HDT_CHECK_PREDICATES
     // The debugging build checks the proof against the filled hole.
-    fill_hole_by_wrapping(*kernel_, polygon, &hole_faces_);
+    fill_hole_by_wrapping(*kernel_, polygon, &scratch_.hole_faces);
     bool large = false;
-    for (const HoleFace &f : hole_faces_)
+    for (const HoleFace &f : scratch_.hole_faces)
       large = large || kernel_->large_circumdisk(polygon[std::size_t(f[0])].point, polygon[std::size_t(f[1])].point,
                                                  polygon[std::size_t(f[2])].point) > 0;
     if (!large) throw std::logic_error("check_predicates: a removal refused early has no large face");
 #endif
     return false;
   }
-  if (!fill_hole(*kernel_, polygon, removed, &hole_faces_)) fill_hole_by_wrapping(*kernel_, polygon, &hole_faces_);
+  if (!fill_hole(*kernel_, polygon, removed, &scratch_.hole_faces)) fill_hole_by_wrapping(*kernel_, polygon, &scratch_.hole_faces);
 #ifdef HDT_CHECK_PREDICATES
   // The debugging build checks the fast method against the simple one.
   std::vector<HoleFace> wrapped;
@@ -83,21 +83,21 @@ bool Triangulation::remove(uint32_t v) {
     std::sort(faces.begin(), faces.end());
     return faces;
   };
-  if (canonical(wrapped) != canonical(hole_faces_))
+  if (canonical(wrapped) != canonical(scratch_.hole_faces))
     throw std::logic_error("check_predicates: the two hole-filling methods disagree");
 #endif
-  for (const HoleFace &f : hole_faces_) {
+  for (const HoleFace &f : scratch_.hole_faces) {
     const TranslatedPoint &a = polygon[std::size_t(f[0])].point, &b = polygon[std::size_t(f[1])].point,
                           &c = polygon[std::size_t(f[2])].point;
     // The lifts, certified, skip the point cache (one test per new face).
     if (kernel_->large_circumdisk(a, b, c, polygon[std::size_t(f[0])].certified(),
                                   polygon[std::size_t(f[1])].certified(), polygon[std::size_t(f[2])].certified()) > 0)
       return false;
-    new_faces_.push_back({{Corner{polygon[std::size_t(f[0])].vertex, a.translation},
+    scratch_.new_faces.push_back({{Corner{polygon[std::size_t(f[0])].vertex, a.translation},
                            Corner{polygon[std::size_t(f[1])].vertex, b.translation},
                            Corner{polygon[std::size_t(f[2])].vertex, c.translation}}});
   }
-  replace(old_faces_, new_faces_, boundary_, &new_ids_);
+  replace(scratch_.old_faces, scratch_.new_faces, scratch_.boundary, &scratch_.new_ids);
   if (dummy_[v]) --dummies_;
   vertices_[v].face = kNone;
   --live_vertices_;
@@ -116,7 +116,7 @@ std::size_t Triangulation::remove_dummies() {
       changed[v] = false;
       if (!remove(v)) continue;
       progress = true;
-      for (const HoleVertex &h : hole_) changed[h.vertex] = true;
+      for (const HoleVertex &h : scratch_.hole) changed[h.vertex] = true;
     }
   }
   return dummies_;

@@ -29,6 +29,11 @@ int Triangulation::twin_by_translations(uint32_t f, int i) const {
 
 // One call of replace(): its steps, in order.
 class Triangulation::Replacement {
+  using Built = Scratch::Built;
+  using HalfEdge = Scratch::HalfEdge;
+  using OuterLink = Scratch::OuterLink;
+  static uint64_t key(const Corner &c) { return Scratch::key(c); }
+
  public:
   Replacement(Triangulation &t, const std::vector<uint32_t> &old, const std::vector<NewFace> &created,
               const std::vector<BoundaryEdge> &boundary)
@@ -43,13 +48,13 @@ class Triangulation::Replacement {
 
   void run(std::vector<uint32_t> *ids) {
     build_canonical_copies();
-    t_.outer_links_.clear();
+    t_.scratch_.outer_links.clear();
     if (is_fan()) {
       link_fan();
     } else {
       link_by_edge_table();
     }
-    if (t_.outer_links_.size() != boundary_count_) throw std::logic_error("replace: a boundary edge has no new face");
+    if (t_.scratch_.outer_links.size() != boundary_count_) throw std::logic_error("replace: a boundary edge has no new face");
     write(ids);
     fill_freed_slots(ids);
   }
@@ -61,8 +66,8 @@ class Triangulation::Replacement {
 
   // Each new face in its canonical copy: kappa maps the common frame to it.
   void build_canonical_copies() {
-    t_.built_.resize(k_);
-    built_ = t_.built_.data();
+    t_.scratch_.built.resize(k_);
+    built_ = t_.scratch_.built.data();
     for (std::size_t j = 0; j < k_; ++j) {
       const NewFace &nf = created_[j];
       int m = 0;
@@ -87,7 +92,7 @@ class Triangulation::Replacement {
     const TranslationId nt = T_.compose(b.kappa, edge.outer_frame);
     b.face.n[i] = edge.outer;
     b.face.nt[i] = nt;
-    t_.outer_links_.push_back({edge.outer, edge.outer_edge, slot(j), T_.inverse(nt)});
+    t_.scratch_.outer_links.push_back({edge.outer, edge.outer_edge, slot(j), T_.inverse(nt)});
   }
   void link_new(std::size_t j, int i, std::size_t j2) {
     Built &b = built_[j];
@@ -125,7 +130,7 @@ class Triangulation::Replacement {
     const std::size_t n = 3 * k_ + boundary_count_;
     bits_ = 4;
     while ((std::size_t(1) << bits_) < 2 * n) ++bits_;
-    t_.half_edges_.assign(std::size_t(1) << bits_, HalfEdge{0, 0, kNone, 0});
+    t_.scratch_.half_edges.assign(std::size_t(1) << bits_, HalfEdge{0, 0, kNone, 0});
     for (std::size_t e = 0; e < boundary_count_; ++e) enter(key(boundary_[e].b), key(boundary_[e].a), uint32_t(e), -1);
     for (std::size_t j = 0; j < k_; ++j)
       for (int i = 0; i < 3; ++i) enter(key(created_[j].c[next(i)]), key(created_[j].c[prev(i)]), uint32_t(j), i);
@@ -143,7 +148,7 @@ class Triangulation::Replacement {
   // The slot of a -> b in the table (linear probing): its entry, or the
   // empty slot where it would go.
   HalfEdge &slot_of(uint64_t a, uint64_t b) {
-    std::vector<HalfEdge> &table = t_.half_edges_;
+    std::vector<HalfEdge> &table = t_.scratch_.half_edges;
     const std::size_t mask = table.size() - 1;
     std::size_t s = ((a ^ (b * 0x9E3779B97F4A7C15ull)) * 0xBF58476D1CE4E5B9ull) >> (64 - bits_);
     while (table[s].face != kNone && (table[s].a != a || table[s].b != b)) s = (s + 1) & mask;
@@ -162,7 +167,7 @@ class Triangulation::Replacement {
     const std::size_t new_size = faces.size() + (k_ > old_.size() ? k_ - old_.size() : 0);
     if (faces.capacity() < new_size) faces.reserve(std::max(new_size, 2 * faces.capacity()));
     if (ids) ids->reserve(k_);
-    t_.holes_.assign(old_.begin() + long(std::min(old_.size(), k_)), old_.end());
+    t_.scratch_.holes.assign(old_.begin() + long(std::min(old_.size(), k_)), old_.end());
     if (ids) ids->clear();
     for (std::size_t j = 0; j < k_; ++j) {
       const uint32_t s = slot(j);
@@ -175,7 +180,7 @@ class Triangulation::Replacement {
       if (ids) ids->push_back(s);
       for (int i = 0; i < 3; ++i) t_.vertices_[f.v[i]].face = s;
     }
-    for (const OuterLink &l : t_.outer_links_) {
+    for (const OuterLink &l : t_.scratch_.outer_links) {
       faces[l.outer].n[l.edge] = l.face;
       faces[l.outer].nt[l.edge] = l.nt;
     }
@@ -186,7 +191,7 @@ class Triangulation::Replacement {
   // the last faces, so that ids stay dense.
   void fill_freed_slots(std::vector<uint32_t> *ids) {
     std::vector<Face> &faces = t_.faces_;
-    std::vector<uint32_t> &holes = t_.holes_;
+    std::vector<uint32_t> &holes = t_.scratch_.holes;
     std::sort(holes.begin(), holes.end());
     while (!holes.empty()) {
       const uint32_t last = uint32_t(faces.size() - 1);
@@ -224,7 +229,7 @@ class Triangulation::Replacement {
   const BoundaryEdge *boundary_;
   const std::size_t k_, boundary_count_;  // the numbers of new faces and boundary edges
   const std::size_t base_;                // the number of faces before
-  Built *built_ = nullptr;                // t_.built_'s k_ faces
+  Built *built_ = nullptr;                // t_.scratch_.built's k_ faces
   int bits_ = 0;            // the edge table has 2^bits_ slots
 };
 

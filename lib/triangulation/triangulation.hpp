@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "predicates/kernel.hpp"
-#include "triangulation/hole.hpp"
 #include "triangulation/mesh.hpp"
 #include "triangulation/progress.hpp"
+#include "triangulation/scratch.hpp"
 #include "triangulation/snapshot.hpp"
 
 namespace hdt::triangulation {
@@ -103,39 +103,9 @@ class Triangulation {
   // a multiprecision image once; later calls read it from a cache.
   void vertex_point(uint32_t v, double *x, double *y) const;
 
- private:
-  friend class DummyBuilder;
-  friend class DummyThinning;
-  friend std::shared_ptr<const struct DummyTemplate> build_dummy_points(Triangulation &t);
-  struct Empty {};
-  Triangulation(int genus, Empty);  // no vertices: the dummy construction's start
-  // restore() without validate(), after the ranges are checked.
-  static Triangulation rebuild(const Snapshot &s);
-
-  // A corner of a face under construction: a vertex and its translation in
-  // the common frame of the operation.
-  struct Corner {
-    uint32_t v;
-    TranslationId t;
-  };
-  struct NewFace {
-    std::array<Corner, 3> c;
-  };
-  // An edge a -> b of the region being replaced (the region on its left), and
-  // the face outside it: outer_frame(canonical copy of outer) is the copy
-  // across the edge in the common frame.
-  struct BoundaryEdge {
-    Corner a, b;
-    uint32_t outer;
-    int outer_edge;
-    TranslationId outer_frame;
-  };
-
-  // Replaces the faces `old` by `created` (given in one common frame),
-  // linking them to each other and to the outer faces of `boundary`. The ids
-  // of the new faces go to *ids in order. Throws before changing anything.
-  void replace(const std::vector<uint32_t> &old, const std::vector<NewFace> &created,
-               const std::vector<BoundaryEdge> &boundary, std::vector<uint32_t> *ids);
+  // The faces around v, counterclockwise, the first the canonical copy of
+  // vertices()[v].face, each with its frame relative to that one.
+  void star(uint32_t v, std::vector<StarFace> *out) const;
   // The edge of f.n[i] that is edge i of f seen from the other side.
   // Inline: insertion asks it for every edge of the hole's boundary.
   int twin(uint32_t f, int i) const {
@@ -147,17 +117,62 @@ class Triangulation {
       if (N.n[k] == f && N.v[next(k)] == b && N.v[prev(k)] == a) found = k, ++matches;
     return matches <= 1 ? found : twin_by_translations(f, i);
   }
-  int twin_by_translations(uint32_t f, int i) const;
-  int corner_of(const Face &f, uint32_t v) const;
 
-  // Walks from `start` (its canonical copy) to a face whose copy contains q.
-  // q_in_face is q's translation in that face's canonical frame; zero_edges
-  // has bit i set when q lies on the line of edge i.
+  // Walks from face `start` (its canonical copy) to a face whose copy
+  // contains q. query is q's translation in that face's canonical frame;
+  // zero_edges has bit i set when q lies on the line of edge i.
   struct Walk {
     uint32_t face;
     TranslationId query;
     int zero_edges;
   };
+  Walk walk_from(const TranslatedPoint &q, uint32_t start) const { return walk(q, start, 0); }
+
+  // The dummy construction's steps (dummy_steps.cpp), for dummy_points.cpp
+  // and dummy_thinning.cpp only. Between them the invariant need not hold:
+  // the construction ends with validate().
+  //
+  // Replaces everything by these vertices, all dummies, and faces.
+  void assign_dummies(std::vector<Vertex> vertices, std::vector<Face> faces);
+  // Flips edge i of face f, shared with edge twin(f, i) of f.n[i], to the
+  // other diagonal of the quadrilateral; the two faces' new ids to *ids.
+  void flip(uint32_t f, int i, std::vector<uint32_t> *ids);
+  // Splits face w.face at a new dummy (x, y) with home `home` (walked to by
+  // walk_from, on no edge's line): three faces, their ids to *ids. Returns
+  // the new vertex.
+  uint32_t split(const Walk &w, double x, double y, TranslationId home, std::vector<uint32_t> *ids);
+  // Bowyer-Watson insertion of a new dummy at (x, y) with home `home`, the
+  // walk starting around vertex `near`. False, with nothing changed, when a
+  // vertex is there already.
+  bool insert_dummy(double x, double y, TranslationId home, uint32_t near);
+  // What a thinning move changes, to undo a move that a removal refused.
+  struct Checkpoint {
+    std::vector<Vertex> vertices;
+    std::vector<Face> faces;
+    std::vector<bool> dummy;
+    std::size_t live = 0, dummies = 0;
+    uint32_t last_face = 0, last_vertex = kNone;
+  };
+  void save(Checkpoint *c) const;
+  void roll_back(Checkpoint *c);  // *c is left unspecified
+  // Dense vertex ids in the old order, and the walk's starting point and
+  // random state as a new triangulation has them.
+  void compact_ids();
+
+ private:
+  struct Empty {};
+  Triangulation(int genus, Empty);  // no vertices: the dummy construction's start
+  // restore() without validate(), after the ranges are checked.
+  static Triangulation rebuild(const Snapshot &s);
+
+  // Replaces the faces `old` by `created` (given in one common frame),
+  // linking them to each other and to the outer faces of `boundary`. The ids
+  // of the new faces go to *ids in order. Throws before changing anything.
+  void replace(const std::vector<uint32_t> &old, const std::vector<NewFace> &created,
+               const std::vector<BoundaryEdge> &boundary, std::vector<uint32_t> *ids);
+  int twin_by_translations(uint32_t f, int i) const;
+  int corner_of(const Face &f, uint32_t v) const;
+
   // The walk starts in the copy start_frame(canonical copy of start); the
   // argument is the inverse of that frame.
   Walk walk(const TranslatedPoint &q, uint32_t start, TranslationId start_frame_inverse) const;
@@ -187,15 +202,6 @@ class Triangulation {
   // corners (kNone otherwise).
   uint32_t vertex_at(const Walk &at) const;
 
-  // The faces around v, counterclockwise, with their frames relative to the
-  // first (the canonical copy of vertices_[v].face).
-  struct StarFace {
-    uint32_t face;
-    int corner;             // v's corner in the face
-    TranslationId frame;    // frame(canonical copy) is the copy around v
-  };
-  void star(uint32_t v, std::vector<StarFace> *out) const;
-
   int genus_;
   std::unique_ptr<surface::Surface> surface_;
   std::unique_ptr<Kernel> kernel_;  // on *surface_
@@ -212,44 +218,13 @@ class Triangulation {
   // move them too (mutable), which changes no answer.
   uint32_t last_face_ = 0;                // where the last operation ended
   mutable uint32_t last_vertex_ = kNone;  // the vertex last inserted or found
-  mutable uint64_t rng_ = 0x9E3779B97F4A7C15ull;
+  static constexpr uint64_t kWalkSeed = 0x9E3779B97F4A7C15ull;
+  mutable uint64_t rng_ = kWalkSeed;
 
-  // Scratch space reused by every operation (no allocation on the common path).
-  struct CavityStep {  // a face of the conflict region and the edges still to cross
-    uint32_t face;
-    TranslationId frame;
-    int8_t edge, left;
-  };
-  std::vector<CavityStep> cavity_stack_;
-  std::vector<uint32_t> old_faces_, new_ids_;
-  std::vector<NewFace> new_faces_;
-  std::vector<BoundaryEdge> boundary_;
-  mutable std::vector<StarFace> star_;  // also validate()'s
-  std::vector<HoleVertex> hole_;  // remove(): the link of the vertex
-  std::vector<HoleFace> hole_faces_;
-  std::vector<uint32_t> link_ids_;
-  struct Built {  // a new face in its canonical copy; kappa maps the common frame to it
-    Face face;
-    TranslationId kappa;
-  };
-  struct OuterLink {
-    uint32_t outer;
-    int edge;
-    uint32_t face;
-    TranslationId nt;
-  };
-  std::vector<Built> built_;
-  // replace()'s edge table: directed edges a -> b by their corners.
-  static uint64_t key(const Corner &c) { return uint64_t(c.v) << 32 | uint32_t(c.t); }
-  struct HalfEdge {
-    uint64_t a, b;
-    uint32_t face;  // index among the new faces (or the boundary's edges); kNone: an empty slot
-    int edge;       // -1: a boundary edge
-  };
-  std::vector<HalfEdge> half_edges_;
+  // Scratch space reused by every operation (scratch.hpp); star is also
+  // validate()'s, hence mutable.
+  mutable Scratch scratch_;
   class Replacement;  // replace()'s steps (topology.cpp)
-  std::vector<OuterLink> outer_links_;
-  std::vector<uint32_t> holes_;
 };
 
 }  // namespace hdt::triangulation

@@ -72,17 +72,17 @@ void Triangulation::validate() const {
     // definition; they lie on side lines, where the test is exact and slow.)
     if (site_of(v) < 0 && predicates::representative(*kernel_, point(v, u.home)).translation != u.home)
       broken("vertex " + std::to_string(v) + " is not stored at its representative");
-    star(v, &star_);
-    corners += star_.size();
+    star(v, &scratch_.star);
+    corners += scratch_.star.size();
     // The link: distinct vertices (no double edges), turning once around v.
     link.clear();
-    for (std::size_t i = 0; i < star_.size(); ++i) {
-      const Face &A = faces_[star_[i].face];
-      const int a = next(star_[i].corner);
+    for (std::size_t i = 0; i < scratch_.star.size(); ++i) {
+      const Face &A = faces_[scratch_.star[i].face];
+      const int a = next(scratch_.star[i].corner);
       for (std::size_t j = 0; j < i; ++j)
-        if (faces_[star_[j].face].v[next(star_[j].corner)] == A.v[a])
+        if (faces_[scratch_.star[j].face].v[next(scratch_.star[j].corner)] == A.v[a])
           broken("vertex " + std::to_string(v) + " has a double edge");
-      link.push_back(point(A.v[a], T.compose(star_[i].frame, A.t[a])));
+      link.push_back(point(A.v[a], T.compose(scratch_.star[i].frame, A.t[a])));
     }
     // The number of turns of the faces around v, counted exactly: each face's
     // angle at v is in (0, pi) (counterclockwise faces, checked above), so a
@@ -96,7 +96,7 @@ void Triangulation::validate() const {
     // one exact orientation per face around v, none on the degenerate
     // triple (which no filter decides: it cost an exact evaluation per
     // vertex).
-    const TranslatedPoint centre = corner(faces_[star_[0].face], star_[0].corner);
+    const TranslatedPoint centre = corner(faces_[scratch_.star[0].face], scratch_.star[0].corner);
     long winding = 0;
     int o = link.size() > 1 ? kernel_->orientation(centre, link[1], link[0]) : 0;
     for (std::size_t j = 1; j < link.size(); ++j) {
