@@ -38,13 +38,23 @@ static inline int rng_below(uint64_t *s, int n) { return (int)(rng_next(s) % (ui
 /* Uniform in [0, 1), 53 random bits. */
 static inline double uniform01(uint64_t *s) { return (double)(rng_next(s) >> 11) * 0x1p-53; }
 
-/* A triangulation of n random points of the disk of radius 0.4: inside
-   F_g for every genus (the sides' midpoints are at radius > 0.64), so no
-   point is on F_g's boundary and each is its own representative
-   (hdt_vertex_point gives it back bit for bit); dummies removed or kept. */
-static inline hdt_triangulation *small_disk_triangulation(int genus, size_t n, uint64_t seed, int remove_dummies) {
+/* A call that must succeed. */
+#define OK(call) expect((call) == HDT_OK, "%s: %s", #call, hdt_last_error_message())
+
+/* A new triangulation of genus g, or the test fails. */
+static inline hdt_triangulation *new_triangulation(int g) {
   hdt_triangulation *t = NULL;
-  expect(hdt_create(&t, genus) == HDT_OK, "hdt_create: %s", hdt_last_error_message());
+  const hdt_status s = hdt_create(&t, g);
+  expect(s == HDT_OK && t != NULL, "hdt_create(%d): %s (%s)", g, hdt_status_string(s), hdt_last_error_message());
+  expect(hdt_genus(t) == g, "hdt_genus gives %d for a genus-%d handle", hdt_genus(t), g);
+  return t;
+}
+
+/* n random points (x, y pairs, malloc'ed) of the disk of radius 0.4:
+   inside F_g for every genus (the sides' midpoints are at radius > 0.64),
+   so no point is on F_g's boundary and each is its own representative
+   (hdt_vertex_point gives it back bit for bit). */
+static inline double *small_disk_points(size_t n, uint64_t seed) {
   double *xy = (double *)malloc((2 * n + 1) * sizeof *xy);
   ck_assert_ptr_nonnull(xy);
   for (size_t i = 0; i < n;) {
@@ -53,6 +63,13 @@ static inline hdt_triangulation *small_disk_triangulation(int genus, size_t n, u
     xy[2 * i] = x, xy[2 * i + 1] = y;
     ++i;
   }
+  return xy;
+}
+
+/* A triangulation of small_disk_points(n, seed), dummies removed or kept. */
+static inline hdt_triangulation *small_disk_triangulation(int genus, size_t n, uint64_t seed, int remove_dummies) {
+  hdt_triangulation *t = new_triangulation(genus);
+  double *xy = small_disk_points(n, seed);
   expect(hdt_insert_many(t, xy, n, NULL) == HDT_OK, "hdt_insert_many: %s", hdt_last_error_message());
   if (remove_dummies) expect(hdt_remove_dummies(t, NULL) == HDT_OK, "hdt_remove_dummies: %s", hdt_last_error_message());
   free(xy);
@@ -194,6 +211,60 @@ static inline void apply_word(int g, const word_t *w, double x, double y, double
 #ifndef UNDER_SANITIZER
 #define UNDER_SANITIZER 0
 #endif
+
+/* ---- The observable state of a triangulation ---- */
+
+/* hdt_faces whole: n faces, 3 vertex ids and 3 translation ids each
+   (malloc'ed; faces_free). */
+typedef struct faces_t {
+  size_t n;
+  uint32_t *v;
+  int32_t *tr;
+} faces_t;
+
+static inline faces_t read_faces(const hdt_triangulation *t) {
+  faces_t f = {0, NULL, NULL};
+  expect(hdt_faces(t, NULL, NULL, 0, &f.n) == HDT_OK, "hdt_faces: %s", hdt_last_error_message());
+  f.v = malloc(3 * f.n * sizeof *f.v + 1);
+  f.tr = malloc(3 * f.n * sizeof *f.tr + 1);
+  ck_assert(f.v && f.tr);
+  size_t got = 0;
+  const hdt_status s = hdt_faces(t, f.v, f.tr, f.n, &got);
+  expect(s == HDT_OK && got == f.n, "hdt_faces: %s, %zu of %zu (%s)", hdt_status_string(s), got, f.n,
+         hdt_last_error_message());
+  return f;
+}
+
+static inline void faces_free(faces_t *f) {
+  free(f->v);
+  free(f->tr);
+}
+
+/* Everything hdt_faces and hdt_vertices say (ids, translations, points,
+   dummy flags) as one byte string of *size bytes (malloc'ed): equal strings
+   mean equal triangulations, down to the ids. */
+static inline unsigned char *observable_bytes(const hdt_triangulation *t, size_t *size) {
+  faces_t f = read_faces(t);
+  size_t V = 0;
+  expect(hdt_vertices(t, NULL, NULL, NULL, 0, &V) == HDT_OK, "hdt_vertices: %s", hdt_last_error_message());
+  const size_t face_bytes = 3 * f.n * (sizeof *f.v + sizeof *f.tr);
+  *size = face_bytes + V * (sizeof(uint32_t) + 2 * sizeof(double) + 1);
+  unsigned char *out = malloc(*size + 1);
+  uint32_t *ids = malloc(V * sizeof *ids + 1);
+  double *xy = malloc(2 * V * sizeof *xy + 1);
+  uint8_t *dummy = malloc(V + 1);
+  ck_assert(out && ids && xy && dummy);
+  expect(hdt_vertices(t, ids, xy, dummy, V, &V) == HDT_OK, "hdt_vertices: %s", hdt_last_error_message());
+  unsigned char *at = out;
+  memcpy(at, f.v, 3 * f.n * sizeof *f.v), at += 3 * f.n * sizeof *f.v;
+  memcpy(at, f.tr, 3 * f.n * sizeof *f.tr), at += 3 * f.n * sizeof *f.tr;
+  memcpy(at, ids, V * sizeof *ids), at += V * sizeof *ids;
+  memcpy(at, xy, 2 * V * sizeof *xy), at += 2 * V * sizeof *xy;
+  memcpy(at, dummy, V);
+  faces_free(&f);
+  free(ids), free(xy), free(dummy);
+  return out;
+}
 
 /* Asserts that a call failed with `expected` and that the thread's error
    message names `function`. */

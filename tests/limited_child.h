@@ -14,6 +14,18 @@
 
 #include <check.h>
 
+/* In the child: reports a broken expectation on stderr and exits with 1
+   (Check's assertions would not reach the parent). */
+#define require(cond, ...)                                \
+  do {                                                    \
+    if (!(cond)) {                                        \
+      fputs("limited child: ", stderr);                   \
+      fprintf(stderr, __VA_ARGS__);                       \
+      fputc('\n', stderr);                                \
+      _exit(1);                                           \
+    }                                                     \
+  } while (0)
+
 /* The process's address space now, in bytes (first field of statm). */
 static inline size_t address_space_bytes(void) {
   FILE *f = fopen("/proc/self/statm", "r");

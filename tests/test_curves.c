@@ -68,17 +68,12 @@ END_TEST
 
 /* The faces, vertices and translations, in *out (malloc'ed). */
 static size_t snapshot_faces(const hdt_triangulation *t, int32_t **out) {
-  size_t count = 0;
-  ck_assert_int_eq(hdt_faces(t, NULL, NULL, 0, &count), HDT_OK);
-  uint32_t *vertices = malloc(3 * count * sizeof *vertices);
-  int32_t *translations = malloc(3 * count * sizeof *translations);
-  *out = malloc(6 * count * sizeof **out);
-  ck_assert(vertices && translations && *out);
-  ck_assert_int_eq(hdt_faces(t, vertices, translations, count, &count), HDT_OK);
-  for (size_t i = 0; i < 3 * count; ++i) (*out)[i] = (int32_t)vertices[i], (*out)[3 * count + i] = translations[i];
-  free(vertices);
-  free(translations);
-  return count;
+  faces_t f = read_faces(t);
+  *out = malloc(6 * f.n * sizeof **out + 1);
+  ck_assert(*out);
+  for (size_t i = 0; i < 3 * f.n; ++i) (*out)[i] = (int32_t)f.v[i], (*out)[3 * f.n + i] = f.tr[i];
+  faces_free(&f);
+  return f.n;
 }
 
 /* A refused removal, also one refused before its hole is filled (the

@@ -37,7 +37,6 @@ static void *need(void *p) {
   return p;
 }
 
-#define OK(call) expect((call) == HDT_OK, "%s: %s", #call, hdt_last_error_message())
 
 static void read_dual(hdt_triangulation *t, dual *d) {
   memset(d, 0, sizeof *d);

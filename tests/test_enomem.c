@@ -24,17 +24,6 @@ static int under_valgrind(void) {
   return preload && strstr(preload, "vgpreload");
 }
 
-/* The child reports a broken expectation on stderr and exits with 1. */
-#define require(cond, ...)                          \
-  do {                                              \
-    if (!(cond)) {                                  \
-      fprintf(stderr, "enomem child: " __VA_ARGS__); \
-      fputc('\n', stderr);                          \
-      _exit(1);                                     \
-    }                                               \
-  } while (0)
-
-
 /* n random points of the disk of radius 0.95. */
 static double *random_points(uint64_t *rng, size_t n) {
   double *xy = malloc(2 * n * sizeof *xy);

@@ -8,7 +8,6 @@
 
 #include "hdt_test.h"
 
-#define OK(call) expect((call) == HDT_OK, "%s: %s", #call, hdt_last_error_message())
 #define STRIDE 256 /* hdt.h: the clock is read once per 256 points */
 
 typedef struct record {
@@ -28,24 +27,6 @@ static int note(void *user, size_t done, size_t total) {
 
 static record fresh(size_t stop_at) { return (record){0, stop_at, 0, 0, 1, 1}; }
 
-static double *disk_points(size_t n, uint64_t seed) {
-  double *xy = malloc(2 * n * sizeof *xy);
-  ck_assert_ptr_nonnull(xy);
-  for (size_t i = 0; i < n;) {
-    const double x = 0.8 * uniform01(&seed) - 0.4, y = 0.8 * uniform01(&seed) - 0.4;
-    if (x * x + y * y >= 0.16) continue;
-    xy[2 * i] = x, xy[2 * i + 1] = y;
-    ++i;
-  }
-  return xy;
-}
-
-static hdt_triangulation *create(int genus) {
-  hdt_triangulation *t = NULL;
-  OK(hdt_create(&t, genus));
-  return t;
-}
-
 /* hdt_save's bytes (malloc'd), for comparing two triangulations. */
 static unsigned char *saved(const hdt_triangulation *t, size_t *size) {
   OK(hdt_save(t, NULL, 0, size));
@@ -57,8 +38,8 @@ static unsigned char *saved(const hdt_triangulation *t, size_t *size) {
 
 START_TEST(insert_many_reports_every_stride) {
   const size_t n = 10000;
-  double *xy = disk_points(n, 11);
-  hdt_triangulation *t = create(2);
+  double *xy = small_disk_points(n, 11);
+  hdt_triangulation *t = new_triangulation(2);
   record r = fresh(0);
   OK(hdt_set_progress(t, note, &r, 0));
   OK(hdt_insert_many(t, xy, n, NULL));
@@ -75,8 +56,8 @@ END_TEST
 
 START_TEST(insert_many_interval_limits_calls) {
   const size_t n = 20000;
-  double *xy = disk_points(n, 12);
-  hdt_triangulation *t = create(2);
+  double *xy = small_disk_points(n, 12);
+  hdt_triangulation *t = new_triangulation(2);
   record r = fresh(0);
   /* An hour between reports: only the final one comes. */
   OK(hdt_set_progress(t, note, &r, 3600));
@@ -90,10 +71,10 @@ END_TEST
 
 START_TEST(insert_many_stops) {
   const size_t n = 10000, k = 3;
-  double *xy = disk_points(n, 13);
+  double *xy = small_disk_points(n, 13);
   uint32_t *ids = malloc(n * sizeof *ids);
   ck_assert_ptr_nonnull(ids);
-  hdt_triangulation *t = create(2);
+  hdt_triangulation *t = new_triangulation(2);
   const size_t V0 = hdt_vertex_count(t), bound0 = hdt_vertex_id_bound(t);
   record r = fresh(k);
   OK(hdt_set_progress(t, note, &r, 0));
@@ -125,8 +106,8 @@ END_TEST
 
 START_TEST(callback_changes_nothing) {
   const size_t n = 5000;
-  double *xy = disk_points(n, 14);
-  hdt_triangulation *a = create(3), *b = create(3);
+  double *xy = small_disk_points(n, 14);
+  hdt_triangulation *a = new_triangulation(3), *b = new_triangulation(3);
   record r = fresh(0);
   OK(hdt_insert_many(a, xy, n, NULL));
   OK(hdt_set_progress(b, note, &r, 0));
@@ -145,7 +126,7 @@ END_TEST
 
 START_TEST(refine_reports_and_stops) {
   /* Complete: the total is unknown (0) until the final report. */
-  hdt_triangulation *t = create(2);
+  hdt_triangulation *t = new_triangulation(2);
   record r = fresh(0);
   size_t added, unmet;
   OK(hdt_set_progress(t, note, &r, 0));
@@ -161,7 +142,7 @@ START_TEST(refine_reports_and_stops) {
 
   /* Stopped after 2 reports: 2 strides of points, valid, bounds unmet;
      going on afterwards completes the same bounds. */
-  t = create(2);
+  t = new_triangulation(2);
   const size_t V0 = hdt_vertex_count(t);
   r = fresh(2);
   OK(hdt_set_progress(t, note, &r, 0));
@@ -186,7 +167,7 @@ END_TEST
 START_TEST(bad_arguments) {
   record r = fresh(0);
   ck_assert_int_eq(hdt_set_progress(NULL, note, &r, 0), HDT_EINVAL);
-  hdt_triangulation *t = create(2);
+  hdt_triangulation *t = new_triangulation(2);
   ck_assert_int_eq(hdt_set_progress(t, note, &r, -1), HDT_EINVAL);
   ck_assert_int_eq(hdt_set_progress(t, note, &r, NAN), HDT_EINVAL);
   ck_assert_int_eq(hdt_set_progress(t, note, &r, INFINITY), HDT_OK); /* only the final report */
@@ -201,19 +182,9 @@ START_TEST(bad_arguments) {
 END_TEST
 
 int main(void) {
-  Suite *s = suite_create("progress");
-  TCase *c = tcase_create("progress");
-  tcase_set_timeout(c, 120);
-  tcase_add_test(c, insert_many_reports_every_stride);
-  tcase_add_test(c, insert_many_interval_limits_calls);
-  tcase_add_test(c, insert_many_stops);
-  tcase_add_test(c, callback_changes_nothing);
-  tcase_add_test(c, refine_reports_and_stops);
-  tcase_add_test(c, bad_arguments);
-  suite_add_tcase(s, c);
-  SRunner *sr = srunner_create(s);
-  srunner_run_all(sr, CK_NORMAL);
-  const int failed = srunner_ntests_failed(sr);
-  srunner_free(sr);
-  return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  const TTest *const tests[] = {
+      insert_many_reports_every_stride, insert_many_interval_limits_calls, insert_many_stops,
+      callback_changes_nothing, refine_reports_and_stops, bad_arguments,
+  };
+  return run_tests("progress", tests, sizeof tests / sizeof *tests);
 }

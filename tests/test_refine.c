@@ -20,7 +20,6 @@
 
 #define PREC 200
 #define TOL 1e-10
-#define OK(call) expect((call) == HDT_OK, "%s: %s", #call, hdt_last_error_message())
 
 static void *need(void *p) {
   ck_assert_ptr_nonnull(p);
@@ -269,30 +268,12 @@ START_TEST(cap_is_honoured) {
 }
 END_TEST
 
-/* Everything observable of the faces and vertices, as bytes. */
-static unsigned char *observe(const hdt_triangulation *t, size_t *size) {
-  size_t F = 0, V = 0;
-  OK(hdt_faces(t, NULL, NULL, 0, &F));
-  OK(hdt_vertices(t, NULL, NULL, NULL, 0, &V));
-  *size = F * 3 * (sizeof(uint32_t) + sizeof(int32_t)) + V * (sizeof(uint32_t) + 2 * sizeof(double));
-  unsigned char *b = need(malloc(*size));
-  uint32_t *fv = (uint32_t *)b;
-  int32_t *ft = (int32_t *)(fv + 3 * F);
-  uint32_t *ids = (uint32_t *)(ft + 3 * F);
-  double *vxy = need(malloc(2 * V * sizeof *vxy));
-  OK(hdt_faces(t, fv, ft, F, &F));
-  OK(hdt_vertices(t, ids, vxy, NULL, V, &V));
-  memcpy(ids + V, vxy, 2 * V * sizeof *vxy);
-  free(vxy);
-  return b;
-}
-
 START_TEST(bad_arguments_change_nothing) {
   hdt_triangulation *t;
   OK(hdt_create(&t, 3));
   insert_random(t, 30, 11);
   size_t n0, n1;
-  unsigned char *before = observe(t, &n0);
+  unsigned char *before = observable_bytes(t, &n0);
   const double bad_radius[] = {NAN, 0, -0.0, -1, -INFINITY};
   const double bad_ratio[] = {NAN, 0.999999, 0, -1, -INFINITY};
   size_t added = 12345, unmet = 12345;
@@ -311,7 +292,7 @@ START_TEST(bad_arguments_change_nothing) {
   expect(added == 0 && unmet == 0, "added %zu, unmet %zu", added, unmet);
   OK(hdt_refine(t, 0.1, 1, 0, &added, &unmet));
   expect(added == 0 && unmet > 0, "added %zu, unmet %zu", added, unmet);
-  unsigned char *after = observe(t, &n1);
+  unsigned char *after = observable_bytes(t, &n1);
   expect(n0 == n1 && memcmp(before, after, n0) == 0, "the triangulation changed");
   free(before), free(after);
   hdt_destroy(t);
@@ -348,36 +329,27 @@ END_TEST
    means nothing): hdt_refine returns HDT_ENOMEM, the points inserted so far
    stay in a valid triangulation, and with memory back the refinement
    completes. */
-#define child_require(cond, ...)                      \
-  do {                                                \
-    if (!(cond)) {                                    \
-      fprintf(stderr, "refine enomem child: " __VA_ARGS__); \
-      fputc('\n', stderr);                            \
-      _exit(1);                                       \
-    }                                                 \
-  } while (0)
-
 
 static void enomem_child(void) {
   hdt_triangulation *t = NULL;
-  child_require(hdt_create(&t, 2) == HDT_OK, "hdt_create: %s", hdt_last_error_message());
+  require(hdt_create(&t, 2) == HDT_OK, "hdt_create: %s", hdt_last_error_message());
   const size_t V0 = hdt_vertex_count(t);
   struct rlimit old;
-  child_require(getrlimit(RLIMIT_AS, &old) == 0, "getrlimit: %s", strerror(errno));
+  require(getrlimit(RLIMIT_AS, &old) == 0, "getrlimit: %s", strerror(errno));
   /* 83,000 points need about 15 MB; 4 MiB runs out part way. */
   struct rlimit tight = {(rlim_t)(address_space_bytes() + ((size_t)4 << 20)), old.rlim_max};
-  child_require(setrlimit(RLIMIT_AS, &tight) == 0, "setrlimit: %s", strerror(errno));
+  require(setrlimit(RLIMIT_AS, &tight) == 0, "setrlimit: %s", strerror(errno));
   size_t added = 12345, unmet = 12345;
   const hdt_status s = hdt_refine(t, 0.01, INFINITY, SIZE_MAX, &added, &unmet);
-  child_require(setrlimit(RLIMIT_AS, &old) == 0, "setrlimit back: %s", strerror(errno));
-  child_require(s == HDT_ENOMEM, "hdt_refine returned %s under the limit", hdt_status_string(s));
-  child_require(strstr(hdt_last_error_message(), "memory") != NULL, "message \"%s\"", hdt_last_error_message());
+  require(setrlimit(RLIMIT_AS, &old) == 0, "setrlimit back: %s", strerror(errno));
+  require(s == HDT_ENOMEM, "hdt_refine returned %s under the limit", hdt_status_string(s));
+  require(strstr(hdt_last_error_message(), "memory") != NULL, "message \"%s\"", hdt_last_error_message());
   const size_t V1 = hdt_vertex_count(t);
-  child_require(V1 > V0, "no point stayed (%zu vertices)", V1);
-  child_require(hdt_validate(t) == HDT_OK, "after ENOMEM: %s", hdt_last_error_message());
-  child_require(hdt_refine(t, 0.01, INFINITY, SIZE_MAX, &added, &unmet) == HDT_OK && unmet == 0,
+  require(V1 > V0, "no point stayed (%zu vertices)", V1);
+  require(hdt_validate(t) == HDT_OK, "after ENOMEM: %s", hdt_last_error_message());
+  require(hdt_refine(t, 0.01, INFINITY, SIZE_MAX, &added, &unmet) == HDT_OK && unmet == 0,
                 "with memory back: %s", hdt_last_error_message());
-  child_require(hdt_validate(t) == HDT_OK, "after completing: %s", hdt_last_error_message());
+  require(hdt_validate(t) == HDT_OK, "after completing: %s", hdt_last_error_message());
   printf("refine enomem: %zu vertices when memory ran out, %zu at the end\n", V1, hdt_vertex_count(t));
   fflush(stdout);
   hdt_destroy(t);

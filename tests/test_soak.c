@@ -107,30 +107,6 @@ static void note_removed(state_t *s, uint32_t v) {
 
 /* ---- Face snapshots (for refused removals) ---- */
 
-typedef struct faces_t {
-  size_t n;
-  uint32_t *v;
-  int32_t *tr;
-} faces_t;
-
-static faces_t read_faces(const hdt_triangulation *t) {
-  faces_t f = {0, NULL, NULL};
-  ck_assert_int_eq(hdt_faces(t, NULL, NULL, 0, &f.n), HDT_OK);
-  f.v = malloc(3 * f.n * sizeof *f.v + 1);
-  f.tr = malloc(3 * f.n * sizeof *f.tr + 1);
-  ck_assert(f.v && f.tr);
-  size_t got = 0;
-  const hdt_status s = hdt_faces(t, f.v, f.tr, f.n, &got);
-  expect(s == HDT_OK && got == f.n, "hdt_faces: %s, %zu of %zu (%s)", hdt_status_string(s), got, f.n,
-         hdt_last_error_message());
-  return f;
-}
-
-static void faces_free(faces_t *f) {
-  free(f->v);
-  free(f->tr);
-}
-
 /* ---- Id-free face keys (see the comment at the top) ---- */
 
 /* Interned canonical words, shared by both triangulations. */

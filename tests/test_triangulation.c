@@ -15,14 +15,6 @@ static const double PI = 3.14159265358979323846;
 
 /* ---- Handles and snapshots ---- */
 
-static hdt_triangulation *create(int g) {
-  hdt_triangulation *t = NULL;
-  const hdt_status s = hdt_create(&t, g);
-  expect(s == HDT_OK && t != NULL, "hdt_create(%d): %s (%s)", g, hdt_status_string(s), hdt_last_error_message());
-  expect(hdt_genus(t) == g, "hdt_genus gives %d for a genus-%d handle", hdt_genus(t), g);
-  return t;
-}
-
 static void expect_valid(const hdt_triangulation *t, const char *what) {
   const hdt_status s = hdt_validate(t);
   expect(s == HDT_OK, "%s: hdt_validate: %s (%s)", what, hdt_status_string(s), hdt_last_error_message());
@@ -37,16 +29,8 @@ typedef struct snapshot_t {
 } snapshot_t;
 
 static snapshot_t snapshot(const hdt_triangulation *t) {
-  snapshot_t s = {0, hdt_vertex_count(t), hdt_dummy_count(t), hdt_vertex_id_bound(t), NULL, NULL};
-  ck_assert_int_eq(hdt_faces(t, NULL, NULL, 0, &s.faces), HDT_OK);
-  s.v = malloc(3 * s.faces * sizeof *s.v + 1);
-  s.tr = malloc(3 * s.faces * sizeof *s.tr + 1);
-  ck_assert(s.v && s.tr);
-  size_t got = 0;
-  const hdt_status st = hdt_faces(t, s.v, s.tr, s.faces, &got);
-  expect(st == HDT_OK && got == s.faces, "hdt_faces: %s, %zu of %zu faces (%s)", hdt_status_string(st), got, s.faces,
-         hdt_last_error_message());
-  return s;
+  const faces_t f = read_faces(t);
+  return (snapshot_t){f.n, hdt_vertex_count(t), hdt_dummy_count(t), hdt_vertex_id_bound(t), f.v, f.tr};
 }
 
 static void snapshot_free(snapshot_t *s) {
@@ -227,7 +211,7 @@ START_TEST(random_points) {
     double *xy = malloc(2 * n * sizeof *xy);
     ck_assert_ptr_nonnull(xy);
     mixed_points(&rng, g, n, xy);
-    hdt_triangulation *t = create(g);
+    hdt_triangulation *t = new_triangulation(g);
     expect_valid(t, "new triangulation");
     expect_structure(t, "new triangulation");
     /* Five batches: four through insert_many (growing), one point by point. */
@@ -259,7 +243,7 @@ END_TEST
 START_TEST(vertex_point_is_the_rounded_representative) {
   uint64_t rng = 0xACC;
   for (int g = 2; g <= 6; ++g) {
-    hdt_triangulation *t = create(g);
+    hdt_triangulation *t = new_triangulation(g);
     double worst = 0;
     for (int i = 0; i < 150; ++i) {
       /* 1 - |z| from 0.5 down to 1e-12: representatives need longer words. */
@@ -292,11 +276,11 @@ START_TEST(symmetric_orbits) {
                                    {0.75, 0.125}, {0.1, 0.2},      {0.4, 0.3},       {0, 0}};
   const size_t nb = sizeof base / sizeof base[0];
   for (int g = 2; g <= 4; ++g) {
-    hdt_triangulation *all = create(g);
+    hdt_triangulation *all = new_triangulation(g);
     for (size_t b = 0; b < nb; ++b) {
       const double x = base[b][0], y = base[b][1];
       const double orbit[8][2] = {{x, y}, {-x, y}, {x, -y}, {-x, -y}, {y, x}, {-y, x}, {y, -x}, {-y, -x}};
-      hdt_triangulation *one = create(g);
+      hdt_triangulation *one = new_triangulation(g);
       for (int i = 0; i < 8; ++i) {
         insert_ok(one, orbit[i][0], orbit[i][1], NULL);
         insert_ok(all, orbit[i][0], orbit[i][1], NULL);
@@ -331,11 +315,11 @@ START_TEST(dyadic_grids) {
     char what[64];
     snprintf(what, sizeof what, "g=%d, %zu grid points k/%d", g, n, denom);
     /* All at once, and point by point in row order in another handle. */
-    hdt_triangulation *t = create(g);
+    hdt_triangulation *t = new_triangulation(g);
     insert_many_ok(t, xy, n, what);
     expect_valid(t, what);
     expect_structure(t, what);
-    hdt_triangulation *u = create(g);
+    hdt_triangulation *u = new_triangulation(g);
     for (size_t i = 0; i < n; ++i) insert_ok(u, xy[2 * i], xy[2 * i + 1], NULL);
     expect_valid(u, what);
     expect_structure(u, what);
@@ -409,12 +393,12 @@ START_TEST(polygon_points) {
     ck_assert_uint_le(n, cap);
     char what[64];
     snprintf(what, sizeof what, "g=%d, %zu polygon points", g, n);
-    hdt_triangulation *u = create(g);
+    hdt_triangulation *u = new_triangulation(g);
     insert_many_ok(u, xy, n, what);
     expect_valid(u, what);
     expect_structure(u, what);
     if (full) { /* point by point too (EEXISTS is fine for repeats) */
-      hdt_triangulation *t = create(g);
+      hdt_triangulation *t = new_triangulation(g);
       for (size_t i = 0; i < n; ++i) insert_ok(t, xy[2 * i], xy[2 * i + 1], NULL);
       expect_valid(t, what);
       expect_structure(t, what);
@@ -455,7 +439,7 @@ static double gap_on_surface(int g, double x, double y, double px, double py) {
    Only those may grow the vertex count. */
 START_TEST(dummy_coordinates_reinserted) {
   for (int g = 2; g <= 8; ++g) {
-    hdt_triangulation *t = create(g);
+    hdt_triangulation *t = new_triangulation(g);
     const size_t d = hdt_dummy_count(t), V0 = hdt_vertex_count(t);
     expect(d == V0 && d > 0, "g=%d: new triangulation has %zu vertices, %zu dummies", g, V0, d);
     size_t converted = 0, exists = 0, added = 0;
@@ -507,7 +491,7 @@ END_TEST
 START_TEST(duplicates_and_close_points) {
   uint64_t rng = 99;
   for (int g = 2; g <= 3; ++g) {
-    hdt_triangulation *t = create(g);
+    hdt_triangulation *t = new_triangulation(g);
     const double rin = inradius(g);
     for (int rep = 0; rep < 30; ++rep) {
       const double r = rin * sqrt(uniform01(&rng)), a = 2 * PI * uniform01(&rng);
@@ -569,7 +553,7 @@ END_TEST
 START_TEST(points_near_the_circle) {
   const double gaps[] = {1e-12, 1e-15};
   for (int g = 2; g <= 4; ++g) {
-    hdt_triangulation *t = create(g);
+    hdt_triangulation *t = new_triangulation(g);
     size_t inserted = 0, outside = 0;
     for (size_t gi = 0; gi < 2; ++gi)
       for (int k = 0; k < 24; ++k) {
@@ -609,14 +593,14 @@ END_TEST
  * angles in double around vertices 4 ulps apart. */
 START_TEST(extreme_coordinates) {
   {
-    hdt_triangulation *t = create(5);
+    hdt_triangulation *t = new_triangulation(5);
     ck_assert_int_eq(hdt_insert(t, 0, 0, NULL), HDT_OK);
     ck_assert_int_eq(hdt_insert(t, 0x0.0000000000003p-1022, -0x0.0000000000004p-1022, NULL), HDT_OK);
     expect_valid(t, "g=5: the origin and a subnormal point");
     hdt_destroy(t);
   }
   {
-    hdt_triangulation *t = create(2);
+    hdt_triangulation *t = new_triangulation(2);
     const double xy[][2] = {{0x1.fffffff768fa1p-2, 0},
                             {0x1.ff7ced916872bp-1, 0},
                             {0x1.d8f84e5e8a648p-2, 0x1.8823d20068ea9p-3},
@@ -629,7 +613,7 @@ START_TEST(extreme_coordinates) {
     /* Within 1e-16 of the circle: the double image that orders
      * hdt_insert_many's points was 0/0 (NaN) here, converted to an integer
      * (undefined; the sanitizer build catches it). Fuzzer finding. */
-    hdt_triangulation *t = create(2);
+    hdt_triangulation *t = new_triangulation(2);
     const double xy[2] = {0x1.69d491f1dfa19p-1, 0x1.6a3f33041e288p-1};
     ck_assert_int_eq(hdt_insert_many(t, xy, 1, NULL), HDT_OK);
     expect_valid(t, "g=2: insert_many of a point 1e-16 from the circle");
@@ -637,7 +621,7 @@ START_TEST(extreme_coordinates) {
   }
   const double tiny[] = {0x1p-1074, 0x3p-1074, 0x1p-1030, 0x1p-1022, 0x1p-700, 0x1p-511, 0x1p-300};
   for (int g = 2; g <= 4; ++g) {
-    hdt_triangulation *t = create(g);
+    hdt_triangulation *t = new_triangulation(g);
     char what[96];
     ck_assert_int_eq(hdt_insert(t, 0, 0, NULL), HDT_OK);
     for (size_t i = 0; i < sizeof tiny / sizeof tiny[0]; ++i)
@@ -695,7 +679,7 @@ static void expect_error(hdt_status got, hdt_status expected, const char *functi
 }
 
 START_TEST(bad_input_is_rejected) {
-  hdt_triangulation *t = create(2);
+  hdt_triangulation *t = new_triangulation(2);
   uint64_t rng = 5;
   double good[2 * 40];
   mixed_points(&rng, 2, 40, good);
@@ -872,7 +856,7 @@ START_TEST(dummies_go_after_many_points) {
     double *xy = malloc(2 * 1000 * sizeof *xy);
     ck_assert_ptr_nonnull(xy);
     points_in_f(&rng, g, 1000, xy);
-    hdt_triangulation *t = create(g);
+    hdt_triangulation *t = new_triangulation(g);
     insert_many_ok(t, xy, 1000, "1000 random points");
     const size_t V = hdt_vertex_count(t), d = hdt_dummy_count(t);
     size_t remaining = 4242;
@@ -915,7 +899,7 @@ START_TEST(dummy_removal_statistics) {
       found[seed] = 0;
       /* Progressive search on one handle to find the neighbourhood, then the
          exact answer on fresh handles from a little before it. */
-      hdt_triangulation *t = create(g);
+      hdt_triangulation *t = new_triangulation(g);
       dummies = hdt_dummy_count(t);
       size_t n = 0, first = 0;
       while (n < MAXN) {
@@ -932,7 +916,7 @@ START_TEST(dummy_removal_statistics) {
       if (first == 0) continue;
       const size_t from = first > 8 * STEP ? first - 8 * STEP : STEP;
       for (size_t m = from; m <= first; m += STEP) {
-        hdt_triangulation *u = create(g);
+        hdt_triangulation *u = new_triangulation(g);
         insert_many_ok(u, xy, m, "statistics");
         size_t remaining = 1;
         ck_assert_int_eq(hdt_remove_dummies(u, &remaining), HDT_OK);
@@ -990,7 +974,7 @@ static int remove_or_refuse(hdt_triangulation *t, uint32_t v, const char *what, 
    hdt_point_representative, which needs no handle). */
 START_TEST(vertex_points_stay_true_through_changes) {
   uint64_t rng = 0xCAC4E;
-  hdt_triangulation *t = create(2);
+  hdt_triangulation *t = new_triangulation(2);
   enum { N = 400, BATCH = 200 };
   double input[2 * N][2];
   size_t known = 0;
@@ -1036,7 +1020,7 @@ END_TEST
 
 START_TEST(vertices_in_one_call) {
   uint64_t rng = 31;
-  hdt_triangulation *t = create(3);
+  hdt_triangulation *t = new_triangulation(3);
   enum { N = 300 };
   double xy[2 * N];
   const double rin = inradius(3);
@@ -1093,7 +1077,7 @@ START_TEST(vertex_removal) {
     const size_t n = 200;
     double xy[2 * 200];
     points_in_f(&rng, g, n, xy);
-    hdt_triangulation *t = create(g);
+    hdt_triangulation *t = new_triangulation(g);
     const size_t d = hdt_dummy_count(t);
     insert_many_ok(t, xy, n, "removal setup");
     /* With every dummy present the guarantee holds for any superset of the
@@ -1274,7 +1258,7 @@ static void check_nearest(hdt_triangulation *t, uint64_t *rng, int queries, cons
 START_TEST(locate_and_nearest_vertex) {
   for (int g = 2; g <= 4; ++g) {
     uint64_t rng = 0x10CA7E + (uint64_t)g;
-    hdt_triangulation *t = create(g);
+    hdt_triangulation *t = new_triangulation(g);
     char what[64];
     snprintf(what, sizeof what, "g=%d, dummies only", g);
     check_locate(t, &rng, 300, what);
