@@ -18,6 +18,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "triangulation/disk_isometry.hpp"
 #include "triangulation/precise_circumcircle.hpp"
 
 namespace hdt::triangulation {
@@ -31,22 +32,6 @@ namespace {
 #else
 #define HDT_INLINE inline
 #endif
-
-// (z - w) / (1 - conj(w) z): the isometry taking w to 0, applied to z.
-HDT_INLINE Point to_origin(const Point &w, const Point &z) {
-  const double nr = z.re - w.re, ni = z.im - w.im;
-  const double dr = 1 - (w.re * z.re + w.im * z.im), di = -(w.re * z.im - w.im * z.re);
-  const double r = 1 / (dr * dr + di * di);
-  return {(nr * dr + ni * di) * r, (ni * dr - nr * di) * r};
-}
-
-// (z + w) / (1 + conj(w) z): its inverse.
-HDT_INLINE Point from_origin(const Point &w, const Point &z) {
-  const double nr = z.re + w.re, ni = z.im + w.im;
-  const double dr = 1 + (w.re * z.re + w.im * z.im), di = w.re * z.im - w.im * z.re;
-  const double r = 1 / (dr * dr + di * di);
-  return {(nr * dr + ni * di) * r, (ni * dr - nr * di) * r};
-}
 
 // Whether a corner of vertex u is its stored point under the corner's
 // translation. A point stored near the unit circle is far from F_g, and
@@ -75,33 +60,37 @@ HDT_INLINE bool rounded_corners(const Triangulation &tri, const Face &f) {
   return tri.site_of(f.v[0]) >= 0 || tri.site_of(f.v[1]) >= 0 || tri.site_of(f.v[2]) >= 0;
 }
 
-// The dual outputs' circumcentre (see circumcentre() in the header). With
-// N_k = p_k - p0 and D_k = 1 - conj(p0) p_k, the corners moved to the origin
-// are w_k = A_k / |D_k|^2, A_k = N_k conj(D_k), and |w_k|^2 = |N_k|^2 / |D_k|^2:
-// the Euclidean centre c of 0, w1, w2 (2 c.w_k = |w_k|^2) is then free of
-// the |D_k|^2, c = i (|N_1|^2 A_2 - |N_2|^2 A_1) / (2 A_1 x A_2) with the
-// cross product A_1 x A_2 = Im(conj(A_1) A_2).
+// The circumcentre of p0, p1, p2, and its radius when asked (radius may be
+// null). With N_k = p_k - p0 and D_k = 1 - conj(p0) p_k, the corners moved
+// to the origin are w_k = A_k / |D_k|^2, A_k = N_k conj(D_k)
+// (to_origin_scaled), and |w_k|^2 = |N_k|^2 / |D_k|^2: the Euclidean centre
+// c of 0, w1, w2 (2 c.w_k = |w_k|^2) is then free of the |D_k|^2,
+// c = i (|N_1|^2 A_2 - |N_2|^2 A_1) / (2 A_1 x A_2) with the cross product
+// A_1 x A_2 = Im(conj(A_1) A_2).
 //
-// False, nothing written, when double cannot resolve the face: the
-// conditions of try_circumcircle, in these terms (|A_k|^2 = m_k |D_k|^2, and
-// the Euclidean |p1 - p2| stands for the third edge).
+// False, nothing written, when double cannot resolve the face: something
+// underflows (|N_k|^2 <= 2^-500), or the angle at p0 has sine <= 2^-15
+// (the differences are formed first, so the centre's relative error is
+// within about 2^-52 / sine otherwise), or, for rounded corners
+// (translated, or a dummy's algebraic point: errors of a few ulps, which
+// move the circle by about ulp / (edge x sine)), the shortest edge times
+// the sine is at most 2^-30 (the Euclidean |p1 - p2| standing for the
+// third edge; sine^2 = cross^2 / (4 |A_1|^2 |A_2|^2)), or the circle is no
+// circle of the disk.
 HDT_INLINE bool centre_of(const Point &p0, const Point &p1, const Point &p2, bool rounded, Point *centre,
                           double *radius) {
+  const Point a1 = to_origin_scaled(p0, p1), a2 = to_origin_scaled(p0, p2);
   const double n1r = p1.re - p0.re, n1i = p1.im - p0.im, n2r = p2.re - p0.re, n2i = p2.im - p0.im;
-  const double d1r = 1 - (p0.re * p1.re + p0.im * p1.im), d1i = -(p0.re * p1.im - p0.im * p1.re);
-  const double d2r = 1 - (p0.re * p2.re + p0.im * p2.im), d2i = -(p0.re * p2.im - p0.im * p2.re);
-  const double a1r = n1r * d1r + n1i * d1i, a1i = n1i * d1r - n1r * d1i;
-  const double a2r = n2r * d2r + n2i * d2i, a2i = n2i * d2r - n2r * d2i;
   const double m1 = n1r * n1r + n1i * n1i, m2 = n2r * n2r + n2i * n2i;
-  const double cross = 2 * (a1r * a2i - a1i * a2r);
-  const double norms = (a1r * a1r + a1i * a1i) * (a2r * a2r + a2i * a2i), cross2 = cross * cross;
+  const double cross = 2 * (a1.re * a2.im - a1.im * a2.re);
+  const double norms = (a1.re * a1.re + a1.im * a1.im) * (a2.re * a2.re + a2.im * a2.im), cross2 = cross * cross;
   if (!(m1 > 0x1p-500 && m2 > 0x1p-500 && cross2 > 0x1p-28 * norms)) return false;
-  if (rounded) {  // shortest edge^2 x sine^2 > 2^-60, sine^2 = cross^2 / (4 norms)
+  if (rounded) {
     const double er = p1.re - p2.re, ei = p1.im - p2.im;
     if (!(std::min({m1, m2, er * er + ei * ei}) * cross2 > 0x1p-58 * norms)) return false;
   }
   const double inv = 1 / cross;
-  const double cr = (m1 * a2i - m2 * a1i) * inv, ci = (m2 * a1r - m1 * a2r) * inv;
+  const double cr = (m1 * a2.im - m2 * a1.im) * inv, ci = (m2 * a1.re - m1 * a2.re) * inv;
   // The circle's diameter from 0 ends at 2c, Euclidean length s < 1,
   // hyperbolic length 2 atanh(s); the hyperbolic centre is its midpoint, at
   // Euclidean distance tanh(atanh(s) / 2) = s / (1 + sqrt(1 - s^2)). (s is
@@ -149,38 +138,17 @@ Point face_corner(const Triangulation &tri, const Face &f, int i) {
 }
 
 bool try_circumcircle(const Point &p0, const Point &p1, const Point &p2, bool rounded, Circle *circle) {
-  const Point w1 = to_origin(p0, p1), w2 = to_origin(p0, p2);
-  // The Euclidean circle through 0, w1, w2: its centre c has 2 c.w = |w|^2.
-  const double n1 = w1.re * w1.re + w1.im * w1.im, n2 = w2.re * w2.re + w2.im * w2.im;
-  const double cross = 2 * (w1.re * w2.im - w1.im * w2.re);
-  // Resolved in double when nothing underflows (|w| > 2^-250) and the
-  // angle at p0 has sine > 2^-15: the differences are formed first, so the
-  // centre's relative error is then within about 2^-52 / sin. Corners that
-  // are rounded (translated, or a dummy's algebraic point) carry errors of
-  // a few ulps, which move the circle by about ulp / (edge x sin): that
-  // product must exceed 2^-30 too (a relative error below 2^-20 at worst,
-  // and far below on any face not built from nearly coincident points).
-  if (!(n1 > 0x1p-500 && n2 > 0x1p-500 && cross * cross > 0x1p-28 * (n1 * n2))) return false;
-  if (rounded) {
-    const double dr = w1.re - w2.re, di = w1.im - w2.im;
-    const double shortest = std::min({n1, n2, dr * dr + di * di}), sine2 = cross * cross / (4 * n1 * n2);
-    if (!(shortest * sine2 > 0x1p-60)) return false;
-  }
-  const Point c{(n1 * w2.im - n2 * w1.im) / cross, (n2 * w1.re - n1 * w2.re) / cross};
-  // Its diameter from 0 ends at 2c, Euclidean length s < 1, hyperbolic
-  // length 2 atanh(s); the hyperbolic centre is that diameter's midpoint,
-  // at Euclidean distance tanh(atanh(s) / 2) = s / (1 + sqrt(1 - s^2)).
-  const double s = 2 * std::sqrt(c.re * c.re + c.im * c.im);
-  if (!(s < 1)) return false;
-  const double k = 2 / (1 + std::sqrt((1 - s) * (1 + s)));
-  *circle = {from_origin(p0, Point{k * c.re, k * c.im}), std::atanh(s)};
+  Point c;
+  double r;
+  if (!centre_of(p0, p1, p2, rounded, &c, &r)) return false;
+  *circle = {c, r};
   return true;
 }
 
 Circle circumcircle(const Triangulation &tri, const Face &f, const Point p[3]) {
   Circle c;
-  if (try_circumcircle(p[0], p[1], p[2], rounded_corners(tri, f), &c)) return c;
-  return precise_circumcircle(tri, f);
+  c.centre = face_centre(tri, f, p, &c.radius);
+  return c;
 }
 
 Point circumcentre(const Triangulation &tri, const Face &f, const Point p[3], double *radius) {

@@ -29,20 +29,15 @@ struct Circle {
 // The hyperbolic circle through three points of the disk, in double, or
 // false when double cannot resolve it (the conditions are in the .cpp);
 // rounded: some point is not exact (a translated or algebraic corner).
-// Refinement's and the quality measures' form: refinement inserts these
-// centres.
 bool try_circumcircle(const Point &p0, const Point &p1, const Point &p2, bool rounded, Circle *circle);
 
-// Face f's circumcircle, p its corners (face_corner): in double, or in
-// multiprecision from the exact data for the rare faces double cannot
-// resolve (precise_circumcircle.hpp). Every face has one.
+// Face f's circumcircle, p its corners (face_corner): try_circumcircle, or
+// in multiprecision from the exact data for the rare faces double cannot
+// resolve (precise_circumcircle.hpp). Every face has one. Refinement, the
+// quality measures and the dual outputs all use it (circumcentre() without
+// the radius's logarithm when none is asked), so their centres agree to
+// the bit.
 Circle circumcircle(const Triangulation &tri, const Face &f, const Point p[3]);
-
-// The dual outputs' form of the same construction (Voronoi vertices, edges
-// and cells all use it, so they agree to the bit): the Moebius maps'
-// denominators cancelled, one logarithm for the radius only when asked
-// (radius may be null), the same fallback. Within a few units in the last
-// place of circumcircle().
 Point circumcentre(const Triangulation &tri, const Face &f, const Point p[3], double *radius);
 
 // Hyperbolic distance in the Poincare disk (curvature -1).

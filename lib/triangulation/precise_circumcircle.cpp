@@ -12,6 +12,7 @@
 
 #include "exact/multiprecision.hpp"
 #include "group/generators.hpp"
+#include "triangulation/disk_isometry.hpp"
 
 namespace hdt::triangulation {
 
@@ -34,14 +35,6 @@ PrecisePoint corner(const Triangulation &tri, uint32_t v, group::TranslationId h
   return generators.moebius(tri.table().word(h)).apply(z);
 }
 
-// (z - w) / (1 - conj(w) z) and (z + w) / (1 + conj(w) z), as in constructions.cpp.
-PrecisePoint moebius_shift(const PrecisePoint &w, const PrecisePoint &z, int sign) {
-  const Real nr = z.re + sign * w.re, ni = z.im + sign * w.im;
-  const Real dr = 1 + sign * (w.re * z.re + w.im * z.im), di = sign * (w.re * z.im - w.im * z.re);
-  const Real r = 1 / (dr * dr + di * di);
-  return {(nr * dr + ni * di) * r, (ni * dr - nr * di) * r};
-}
-
 }  // namespace
 
 Circle precise_circumcircle(const Triangulation &tri, const Face &f) {
@@ -58,7 +51,7 @@ Circle precise_circumcircle(const Triangulation &tri, const Face &f) {
     if (d > longest) longest = d, o = i;
   }
   const PrecisePoint &p0 = p[o];
-  const PrecisePoint w1 = moebius_shift(p0, p[next(o)], -1), w2 = moebius_shift(p0, p[prev(o)], -1);
+  const PrecisePoint w1 = to_origin(p0, p[next(o)]), w2 = to_origin(p0, p[prev(o)]);
   // The Euclidean circle through 0, w1, w2 (centre c, 2 c.w = |w|^2); its
   // diameter from 0 has Euclidean length s and hyperbolic length 2 atanh(s),
   // and the hyperbolic centre is that diameter's midpoint.
@@ -69,7 +62,7 @@ Circle precise_circumcircle(const Triangulation &tri, const Face &f) {
   const Real s = 2 * sqrt(c.re * c.re + c.im * c.im);
   if (!(s < 1)) throw std::logic_error("circumcircle: no proper circle at 200 bits");
   const Real k = 2 / (1 + sqrt((1 - s) * (1 + s)));
-  const PrecisePoint centre = moebius_shift(p0, PrecisePoint{k * c.re, k * c.im}, +1);
+  const PrecisePoint centre = from_origin(p0, PrecisePoint{k * c.re, k * c.im});
   return {Point{static_cast<double>(centre.re), static_cast<double>(centre.im)}, static_cast<double>(atanh(s))};
 }
 

@@ -5,24 +5,27 @@
 // small faces.
 #include "triangulation/quality.hpp"
 
+// No fused multiply-add, as in constructions.cpp: both compile the inline
+// isometries of disk_isometry.hpp, and the copy the linker keeps must not
+// depend on which file it came from.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "triangulation/disk_isometry.hpp"
 
 namespace hdt::triangulation {
 
 namespace {
 
-// (z - w) / (1 - conj(w) z): the isometry taking w to 0, applied to z (as
-// in constructions.cpp; only the direction of the result is used here).
-Point to_origin(const Point &w, const Point &z) {
-  const double nr = z.re - w.re, ni = z.im - w.im;
-  const double dr = 1 - (w.re * z.re + w.im * z.im), di = -(w.re * z.im - w.im * z.re);
-  return {nr * dr + ni * di, ni * dr - nr * di};  // times a positive factor
-}
-
 double angle_at(const Point &p, const Point &q, const Point &r) {
-  Point a = to_origin(p, q), b = to_origin(p, r);
+  // The images of q and r with p moved to the origin, times positive
+  // factors: only their directions matter.
+  Point a = to_origin_scaled(p, q), b = to_origin_scaled(p, r);
   double cross = a.re * b.im - a.im * b.re, dot = a.re * b.re + a.im * b.im;
   if (cross == 0 && dot == 0) {
     // Underflow on a face at the scale of 1e-200 (or corners that round to
