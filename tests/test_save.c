@@ -291,6 +291,97 @@ START_TEST(crafted_bytes) {
 }
 END_TEST
 
+/* Every interior edge flipped, one at a time, in a saved Delaunay
+   triangulation (the two faces' records rewritten as the other diagonal's,
+   the four faces around them and the vertices' faces kept consistent, the
+   checksum resealed): the result is a triangulation of the same points but
+   not the Delaunay one (ties are broken by the symbolic perturbation, so
+   exactly one diagonal is), and hdt_load must refuse it, whichever of the
+   two faces has the smaller index. An edge whose quadrilateral is not convex
+   gives clockwise faces, refused as well. */
+static uint32_t face_u32(const unsigned char *faces, uint32_t f, int field, int i) {
+  return get32(faces + (size_t)FACE_BYTES * f + 12 * field + 4 * i);
+}
+static void set_face(unsigned char *faces, uint32_t f, const uint32_t v[3], const uint32_t n[3]) {
+  for (int i = 0; i < 3; ++i) {
+    put32(faces + (size_t)FACE_BYTES * f + 4 * i, v[i]);
+    put32(faces + (size_t)FACE_BYTES * f + 12 + 4 * i, 0);
+    put32(faces + (size_t)FACE_BYTES * f + 24 + 4 * i, n[i]);
+    put32(faces + (size_t)FACE_BYTES * f + 36 + 4 * i, 0);
+  }
+}
+/* Face h's neighbour across its edge from a to b (either way) becomes to. */
+static void repoint(unsigned char *faces, uint32_t h, uint32_t a, uint32_t b, uint32_t to) {
+  for (int k = 0; k < 3; ++k) {
+    const uint32_t x = face_u32(faces, h, 0, (k + 1) % 3), y = face_u32(faces, h, 0, (k + 2) % 3);
+    if ((x == a && y == b) || (x == b && y == a)) {
+      put32(faces + (size_t)FACE_BYTES * h + 24 + 4 * k, to);
+      return;
+    }
+  }
+  ck_abort_msg("face %u has no edge %u-%u", h, a, b);
+}
+static int untranslated(const unsigned char *faces, uint32_t f) {
+  for (int i = 0; i < 3; ++i)
+    if (face_u32(faces, f, 1, i) != 0 || face_u32(faces, f, 3, i) != 0) return 0;
+  return 1;
+}
+
+START_TEST(flipped_edges_are_refused) {
+  hdt_triangulation *t = small_disk_triangulation(2, 40, 7, 1);
+  bytes_t b = save(t);
+  hdt_destroy(t);
+  const uint32_t W = get32(b.b + 16), V = get32(b.b + 20), F = get32(b.b + 24);
+  size_t at = HEADER;
+  for (uint32_t w = 0; w < W; ++w) at += 2 + 2 * (size_t)(b.b[at] | b.b[at + 1] << 8);
+  const size_t vertices_at = at, faces_at = at + (size_t)VERTEX_BYTES * V;
+  ck_assert_uint_eq(faces_at + (size_t)FACE_BYTES * F + 4, b.n);
+  bytes_t c = {malloc(b.n), b.n};
+  ck_assert_ptr_nonnull(c.b);
+  size_t flipped = 0, not_delaunay = 0;
+  for (uint32_t f = 0; f < F; ++f)
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t g = face_u32(b.b + faces_at, f, 2, i);
+      if (g < f || !untranslated(b.b + faces_at, f) || !untranslated(b.b + faces_at, g)) continue;
+      memcpy(c.b, b.b, b.n);
+      unsigned char *faces = c.b + faces_at;
+      /* f = (c, p, q) from corner i, g = (d, q, p) from its corner k. */
+      const uint32_t vc = face_u32(faces, f, 0, i), vp = face_u32(faces, f, 0, (i + 1) % 3),
+                     vq = face_u32(faces, f, 0, (i + 2) % 3);
+      int k = -1;
+      for (int j = 0; j < 3; ++j)
+        if (face_u32(faces, g, 2, j) == f && face_u32(faces, g, 0, (j + 1) % 3) == vq) k = j;
+      ck_assert_int_ge(k, 0);
+      const uint32_t vd = face_u32(faces, g, 0, k);
+      const uint32_t fa_p = face_u32(faces, f, 2, (i + 1) % 3), fa_q = face_u32(faces, f, 2, (i + 2) % 3);
+      const uint32_t gb_q = face_u32(faces, g, 2, (k + 1) % 3), gb_p = face_u32(faces, g, 2, (k + 2) % 3);
+      if (vc == vd || fa_p == g || fa_q == g || gb_q == f || gb_p == f) continue; /* a degenerate neighbourhood */
+      /* The outer faces first (they may be f or g's other neighbours only). */
+      repoint(faces, gb_q, vp, vd, f);
+      repoint(faces, fa_p, vq, vc, g);
+      /* f' = (c, p, d), g' = (d, q, c). */
+      const uint32_t fv[3] = {vc, vp, vd}, fn[3] = {gb_q, g, fa_q};
+      const uint32_t gv[3] = {vd, vq, vc}, gn[3] = {fa_p, f, gb_p};
+      set_face(faces, f, fv, fn);
+      set_face(faces, g, gv, gn);
+      put32(c.b + vertices_at + (size_t)VERTEX_BYTES * vq + 20, g);
+      put32(c.b + vertices_at + (size_t)VERTEX_BYTES * vp + 20, f);
+      put32(c.b + vertices_at + (size_t)VERTEX_BYTES * vc + 20, f);
+      put32(c.b + vertices_at + (size_t)VERTEX_BYTES * vd + 20, f);
+      reseal(c);
+      hdt_triangulation *u = SENTINEL;
+      expect(hdt_load(&u, c.b, c.n) == HDT_EINVAL, "edge %u-%u of faces %u, %u flipped: loaded", vp, vq, f, g);
+      expect(u == SENTINEL, "*out written on failure");
+      ++flipped;
+      not_delaunay += strstr(hdt_last_error_message(), "not locally Delaunay") != NULL;
+    }
+  printf("save: %zu interior edges flipped, each refused, %zu as not locally Delaunay\n", flipped, not_delaunay);
+  expect(flipped > 50 && not_delaunay > flipped / 2, "%zu flips, %zu refused for the Delaunay test", flipped, not_delaunay);
+  free(c.b);
+  free(b.b);
+}
+END_TEST
+
 /* Corners 1 and 2 of a face record swapped, with their translations and
    neighbours: the same face, clockwise. */
 static void swap_corners(unsigned char *f) {
@@ -428,6 +519,7 @@ END_TEST
 
 int main(void) {
   const TTest *const tests[] = {round_trips,   two_call_pattern,       truncated_and_flipped, crafted_bytes,
-                                messages_name_the_byte, huge_counts_allocate_nothing, load_cost};
+                                messages_name_the_byte, flipped_edges_are_refused, huge_counts_allocate_nothing,
+                                load_cost};
   return run_tests("save", tests, sizeof tests / sizeof tests[0]);
 }
