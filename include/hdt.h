@@ -491,10 +491,11 @@ HDT_API hdt_status hdt_voronoi_edges(const hdt_triangulation *t, double *xy, siz
    representative: a polygon, counterclockwise about hdt_vertex_point(v),
    whose geodesic sides are v's Voronoi edges. xy must not be NULL when
    capacity > 0. Capacity in points. HDT_EINVAL when v is not a live vertex.
-   The handle keeps the circumcentres it computes for the cells (40 bytes a
+   The handle keeps the circumcentres it computes for the cells (48 bytes a
    face, until hdt_destroy; a change of the triangulation makes the entries
    of the faces it changed stale, never wrong), so that the cells of every
-   vertex compute each circumcentre once. */
+   vertex compute each circumcentre once; hdt_voronoi_vertices and
+   hdt_voronoi_edges then read them too (the same bits). */
 HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, double *xy, size_t capacity,
                                     size_t *count) HDT_NOEXCEPT;
 

@@ -663,12 +663,25 @@ END_TEST
 
 /* The contract: NULL handle and count, a too small buffer (count set,
    nothing written), a dead vertex, the size query. */
-/* hdt_voronoi_cell keeps the circumcentres it computed on the handle, and
-   the faces change under it: after insertions and removals, every cell
-   must still be its star's circumcentres as hdt_voronoi_vertices (which
-   keeps nothing) gives them, mapped by the star's translations. Each round
-   reads every cell first, so that the next round's changes leave stale
-   entries behind. */
+/* The handle keeps the circumcentres (and radii) it computed, for
+   hdt_voronoi_cell, hdt_voronoi_vertices and hdt_voronoi_edges, and the
+   faces change under it: after insertions and removals, the Voronoi
+   vertices and edges must be, to the bit, those of a fresh handle with the
+   same faces (hdt_save, hdt_load: an empty cache), and every cell its
+   star's circumcentres, mapped by the star's translations. Each round reads
+   everything first, so that the next round's changes leave stale entries
+   behind. */
+static hdt_triangulation *fresh_copy(const hdt_triangulation *t) {
+  size_t size = 0;
+  OK(hdt_save(t, NULL, 0, &size));
+  void *bytes = need(malloc(size));
+  OK(hdt_save(t, bytes, size, &size));
+  hdt_triangulation *u = NULL;
+  OK(hdt_load(&u, bytes, size));
+  free(bytes);
+  return u;
+}
+
 static void check_cells_against_vertices(hdt_triangulation *t, int round) {
   const size_t V = hdt_vertex_count(t), F = hdt_face_count(t);
   uint32_t *ids = need(malloc(V * sizeof *ids)), *faces = need(malloc(F * sizeof *faces));
@@ -676,7 +689,20 @@ static void check_cells_against_vertices(hdt_triangulation *t, int round) {
   double *centre = need(malloc(2 * F * sizeof *centre)), *cell = need(malloc(2 * F * sizeof *cell));
   size_t n = 0, m = 0;
   OK(hdt_vertices(t, ids, NULL, NULL, V, &n));
-  OK(hdt_voronoi_vertices(t, centre, NULL, F, &n));
+  hdt_triangulation *u = fresh_copy(t);
+  const size_t E = hdt_edge_count(t);
+  double *radius = need(malloc(F * sizeof *radius)), *mine = need(malloc(4 * E * sizeof *mine)),
+         *fresh = need(malloc(4 * E * sizeof *fresh));
+  OK(hdt_voronoi_vertices(u, centre, radius, F, &n));
+  OK(hdt_voronoi_vertices(t, mine, mine + 2 * F, F, &n));
+  expect(memcmp(mine, centre, 2 * F * sizeof *mine) == 0 && memcmp(mine + 2 * F, radius, F * sizeof *mine) == 0,
+         "round %d: hdt_voronoi_vertices differs from a fresh handle's", round);
+  OK(hdt_voronoi_edges(u, fresh, E, &n));
+  OK(hdt_voronoi_edges(t, mine, E, &n));
+  expect(memcmp(mine, fresh, 4 * E * sizeof *mine) == 0, "round %d: hdt_voronoi_edges differs from a fresh handle's",
+         round);
+  hdt_destroy(u);
+  free(radius), free(mine), free(fresh);
   for (size_t i = 0; i < V; ++i) {
     OK(hdt_vertex_star(t, ids[i], faces, NULL, tr, F, &n));
     OK(hdt_voronoi_cell(t, ids[i], cell, F, &m));

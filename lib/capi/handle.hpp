@@ -17,11 +17,13 @@ struct hdt_triangulation {
   explicit hdt_triangulation(hdt::triangulation::Triangulation &&t) : tri(std::move(t)) {}
   hdt::triangulation::Triangulation tri;
   hdt::triangulation::Progress progress;  // hdt_set_progress; none by default
-  // hdt_voronoi_cell's circumcentres, kept from call to call; entries check
-  // themselves against the faces, so changes need not clear it. And the
-  // per-vertex functions' scratch, reused from call to call (a caller
-  // walking every vertex would otherwise pay an allocation per call). Const
-  // queries may use them: one thread uses a handle at a time (hdt.h).
+  // hdt_voronoi_cell's circumcentres, kept from call to call (the other
+  // Voronoi outputs read them when present); entries check themselves
+  // against the faces, so changes need not clear it. And scratch reused from
+  // call to call: the per-vertex functions' (a caller walking every vertex
+  // would otherwise pay an allocation per call), and cell also holds
+  // hdt_voronoi_edges' centres (16 bytes a face). Const queries may use
+  // them: one thread uses a handle at a time (hdt.h).
   mutable hdt::triangulation::CentreCache centres;
   mutable std::vector<hdt::triangulation::StarEntry> star;
   mutable std::vector<hdt::triangulation::Point> cell;

@@ -46,52 +46,82 @@ double distance(const Point &p, const Point &q);
 // h(p) for a translation id h.
 Point translate(const Triangulation &tri, group::TranslationId h, const Point &p);
 
+// The circumcentres (and radii) of the faces' canonical copies, each
+// computed on first request and kept: a Voronoi cell needs the centres of
+// its vertex's star, and every face is in three stars. hdt_voronoi_cell
+// makes it; the Voronoi vertices and edges read it (and add to it) when it
+// exists. An entry
+// holds the face's vertices and corner translations beside the centre and
+// is used only while the face at that index still has them: vertex ids are
+// never reused and a vertex's point never changes, so they determine the
+// centre, and every change of the triangulation leaves stale entries that
+// no longer match (no hook in the core). 48 bytes per face once used. Not
+// thread-safe: it belongs to a handle, which one thread uses at a time
+// (hdt.h).
+class CentreCache {
+ public:
+  // Room for every face (may throw std::bad_alloc); nothing else allocates.
+  void reserve(const Triangulation &tri);
+  // Whether reserve() has made room for every face (a caller that does
+  // without the cache rather than allocate it).
+  bool ready(const Triangulation &tri) const { return entries_.size() >= tri.faces().size(); }
+  // The circumcentre of face f's canonical copy (the same bits as
+  // circumcentre() of its corners), and its radius when radius is not null.
+  // reserve() first; the face's corner matrices may be computed (as
+  // face_corner does).
+  Point centre(const Triangulation &tri, uint32_t f, double *radius = nullptr) {
+    const Face &F = tri.faces()[f];
+    const Entry &e = entries_[f];
+    // Compared one by one: std::array's == calls memcmp. A radius not yet
+    // computed is NaN.
+    if (e.v[0] == F.v[0] && e.v[1] == F.v[1] && e.v[2] == F.v[2] && e.t[0] == F.t[0] && e.t[1] == F.t[1] &&
+        e.t[2] == F.t[2] && (!radius || e.radius == e.radius)) {
+      if (radius) *radius = e.radius;
+      return e.centre;
+    }
+    return compute(tri, f, radius);
+  }
+  // Whether face f's entry holds its centre, and its radius when asked
+  // (reserve() first).
+  bool holds(const Triangulation &tri, uint32_t f, bool radius) const {
+    const Face &F = tri.faces()[f];
+    const Entry &e = entries_[f];
+    return e.v[0] == F.v[0] && e.v[1] == F.v[1] && e.v[2] == F.v[2] && e.t[0] == F.t[0] && e.t[1] == F.t[1] &&
+           e.t[2] == F.t[2] && (!radius || e.radius == e.radius);
+  }
+  Point centre_held(uint32_t f, double *radius) const {
+    if (radius) *radius = entries_[f].radius;
+    return entries_[f].centre;
+  }
+  // Face f's centre and radius (NaN: not computed), computed by the caller
+  // (the same bits).
+  void store(const Triangulation &tri, uint32_t f, const Point &centre, double radius) {
+    const Face &F = tri.faces()[f];
+    entries_[f] = Entry{F.v, F.t, centre, radius};
+  }
+
+ private:
+  Point compute(const Triangulation &tri, uint32_t f, double *radius);
+  struct Entry {
+    std::array<uint32_t, 3> v;
+    std::array<TranslationId, 3> t;
+    Point centre;
+    double radius;
+  };
+  std::vector<Entry> entries_;
+};
+
 // Whole outputs, in hdt_faces' face order and hdt_edges' edge order. They
 // need the matrices of the corner translations (and of the neighbour
 // translations for hdt_voronoi_edges): warm_corner_matrices() computes
 // those first, which may fail (memory); after it these allocate nothing,
 // so a caller can write into its user's buffers.
 void warm_corner_matrices(const Triangulation &tri, bool across);
-void face_points(const Triangulation &tri, double *xy);                  // 6 per face
-void voronoi_vertices(const Triangulation &tri, double *xy, double *radii);  // 2 and 1 per face, either null
+void face_points(const Triangulation &tri, double *xy);  // 6 per face
+// 2 and 1 per face, either null; through the cache when one is given (ready()).
+void voronoi_vertices(const Triangulation &tri, double *xy, double *radii, CentreCache *cache);
+void face_centres(const Triangulation &tri, Point *out, CentreCache *cache);  // 1 per face, the same
 // hdt_edges' vertices, faces and lengths (each may be null), count = 3F/2.
 void write_edges(const Triangulation &tri, std::size_t count, uint32_t *vertices, uint32_t *faces, double *lengths);
-void face_centres(const Triangulation &tri, Point *out);                // 1 per face
-
-// The circumcentres of the faces' canonical copies, each computed on first
-// request and kept: a Voronoi cell needs the centres of its vertex's star,
-// and every face is in three stars. An entry holds the face's vertices and
-// corner translations beside the centre and is used only while the face at
-// that index still has them: vertex ids are never reused and a vertex's
-// point never changes, so they determine the centre, and every change of the
-// triangulation leaves stale entries that no longer match (no hook in the
-// core). 40 bytes per face once used. Not thread-safe: it belongs to a
-// handle, which one thread uses at a time (hdt.h).
-class CentreCache {
- public:
-  // Room for every face (may throw std::bad_alloc); nothing else allocates.
-  void reserve(const Triangulation &tri);
-  // The circumcentre of face f's canonical copy (the same bits as
-  // circumcentre() of face_corners()). reserve() first; the face's corner
-  // matrices may be computed (as face_corner does).
-  Point centre(const Triangulation &tri, uint32_t f) {
-    const Face &F = tri.faces()[f];
-    const Entry &e = entries_[f];
-    // Compared one by one: std::array's == calls memcmp.
-    if (e.v[0] == F.v[0] && e.v[1] == F.v[1] && e.v[2] == F.v[2] && e.t[0] == F.t[0] && e.t[1] == F.t[1] &&
-        e.t[2] == F.t[2])
-      return e.centre;
-    return compute(tri, f);
-  }
-
- private:
-  Point compute(const Triangulation &tri, uint32_t f);
-  struct Entry {
-    std::array<uint32_t, 3> v;
-    std::array<TranslationId, 3> t;
-    Point centre;
-  };
-  std::vector<Entry> entries_;
-};
 
 }  // namespace hdt::triangulation
