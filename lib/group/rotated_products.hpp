@@ -7,12 +7,11 @@
 // turned about the n_0 axis. The elements of N are relator runs, and a
 // rotation of a run is a run: all of N's (4g-1)^2 matrices come from about
 // 4g products of words starting with letter 0. Those are cached, so that a
-// new matrix costs one rotation instead of a product of up to 2g letters at
-// up to thousands of bits (28% of an insertion at genus 32 went there).
+// new matrix costs one rotation instead of a product of up to 2g letters
+// (28% of an insertion at genus 32 went there).
 //
-// Rounding: the rotation's cos and sin are B_k / |B|, each within a few
-// units of the rung (GeneratorSet), so turning b adds a few units of |b| to
-// the product's error; the callers' precision bounds have that slack.
+// The turn (word_matrix.cpp's with_bounded_product) multiplies b by
+// B_k / B_0 from the generator set of the rung and counts its error.
 #pragma once
 
 #include <cstddef>
@@ -20,7 +19,7 @@
 #include <mutex>
 #include <utility>
 
-#include "group/generators.hpp"
+#include "group/presentation.hpp"
 
 namespace hdt::group {
 
@@ -55,41 +54,5 @@ M cached(int genus, const Word &u, F &&product) {
 }
 
 }  // namespace rotation_detail
-
-// g_w0 g_w1 ... as GeneratorSet::moebius, through the rotation of a cached product.
-template <class T>
-Moebius<T> rotated_moebius(const GeneratorSet<T> &gens, const Letter *w, std::size_t length) {
-  const Presentation &p = gens.presentation();
-  int k;
-  const Word u = rotation_detail::normalised(p, w, length, &k);
-  Moebius<T> m = rotation_detail::cached<Moebius<T>>(p.genus(), u, [&] { return gens.moebius(u); });
-  if (k != 0) m.b = m.b * gens.rotation(k);
-  return m;
-}
-
-// The same for GeneratorSet::lorentz: R L R^-1 with R the rotation of the
-// (n_1, n_2) plane by k pi/2g.
-template <class T>
-Lorentz<T> rotated_lorentz(const GeneratorSet<T> &gens, const Letter *w, std::size_t length) {
-  const Presentation &p = gens.presentation();
-  int k;
-  const Word u = rotation_detail::normalised(p, w, length, &k);
-  Lorentz<T> L = rotation_detail::cached<Lorentz<T>>(p.genus(), u, [&] { return gens.lorentz(u); });
-  if (k == 0) return L;
-  const Complex<T> &r = gens.rotation(k);
-  const T &c = r.re, &s = r.im;
-  Lorentz<T> M;
-  for (int j = 0; j < 3; ++j) {  // rows: R L
-    M.m[0][j] = L.m[0][j];
-    M.m[1][j] = c * L.m[1][j] - s * L.m[2][j];
-    M.m[2][j] = s * L.m[1][j] + c * L.m[2][j];
-  }
-  for (int i = 0; i < 3; ++i) {  // columns: (R L) R^-1
-    const T a = M.m[i][1], b = M.m[i][2];
-    M.m[i][1] = c * a - s * b;
-    M.m[i][2] = s * a + c * b;
-  }
-  return M;
-}
 
 }  // namespace hdt::group

@@ -89,18 +89,6 @@ double moebius_precision_bits(const Presentation &p, std::size_t m, double targe
   return target + 8 + std::log2(double(m) + 1) + double(m) * std::log2(2 * A * (1 + 1e-9));
 }
 
-void accurate_matrices(const Presentation &p, const Word &w, Moebius<double> *moebius, Lorentz<double> *lorentz) {
-  exact::with_precision(moebius_precision_bits(p, w.size(), 66), [&](auto zero) {
-    using T = decltype(zero);
-    const Moebius<T> m = rotated_moebius(shared_generators<T>(p), w.data(), w.size());
-    *moebius = Moebius<double>{{to_double(m.a.re), to_double(m.a.im)}, {to_double(m.b.re), to_double(m.b.im)}};
-    const Lorentz<T> L = Lorentz<T>::from_moebius(m);
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) lorentz->m[i][j] = to_double(L.m[i][j]);
-    return 0;
-  });
-}
-
 // ---------------------------------------------------------------------------
 // Elements, for the C API
 
@@ -484,15 +472,114 @@ Complex<double> element_image(const Presentation &p, const Letter *w, std::size_
   return image;
 }
 
+
+// ---- Matrices of translations, for the translation table and the refined stages ----
+
+namespace {
+
+// The rungs of these products: the ladder's and one between its first two
+// (a word of N needs a few dozen bits above its target, see below, and the
+// ladder's second rung has 531).
+constexpr unsigned kWordDigits10[] = {40, 80, 160, 640, 2560};
+
+template <class F>
+auto with_word_rung(std::size_t rung, F &&f) {
+  switch (rung) {
+    case 0: return f(exact::mp_real<kWordDigits10[0]>());
+    case 1: return f(exact::mp_real<kWordDigits10[1]>());
+    case 2: return f(exact::mp_real<kWordDigits10[2]>());
+    case 3: return f(exact::mp_real<kWordDigits10[3]>());
+    default: return f(exact::mp_real<kWordDigits10[4]>());
+  }
+}
+
+// A product of a word starting with letter 0 and ProductBound's bound on its
+// relative error (infinite when unknown).
+template <class T>
+struct BoundedProduct {
+  Moebius<T> m;
+  long double relative_error;
+};
+
+template <class T>
+BoundedProduct<T> bounded_product(const GeneratorSet<T> &gens, const Word &u, double bits) {
+  ProductBound bound(gens.presentation(), bits);
+  Moebius<T> P = Moebius<T>::identity();
+  for (const Letter k : u) {
+    P = P * gens.moebius(k);
+    bound.step(norm_of(P));
+  }
+  return {P, bound.relative_error()};
+}
+
+// The word's Moebius product with a and b within 2^-target (|a| + |b|),
+// handed to f in the number type of the lowest rung whose bound certifies
+// it. The bound is ProductBound's, computed along the product: for the words
+// met here (canonical words, whose partial products stay below the final
+// norm or, for the relator runs of N, below cosh R = A^2) it costs about
+// 2 log2 max |P_j| bits, a few dozen, where the a priori bound of
+// moebius_precision_bits costs m log2(2A) (2,138 bits for a run of 2g
+// letters at genus 128, which put those words on the 8,503-bit rung).
+// The product is that of the word shifted to start with letter 0, cached
+// per genus and rung (rotated_products.hpp), turned by the rotation
+// e^{i k pi/2g}: its real and imaginary parts are B_k / B_0, the error of |B|
+// cancels and each part is within 23 eps of the exact one (cos within 20
+// eps, three roundings), so |r~ - r| < 33 eps, and b r~ adds its rounding
+// (3 eps): the turn adds at most 64 eps (|a| + |b|) to the error, counted
+// below with room.
+template <class F>
+auto with_bounded_product(const Presentation &p, const Word &w, double target, F &&f) {
+  using Result = decltype(f(Moebius<exact::mp_real<kWordDigits10[0]>>{}));
+  const long double wanted = std::ldexp(1.0L, -int(std::ceil(target)));
+  for (std::size_t rung = 0; rung < std::size(kWordDigits10); ++rung) {
+    const double bits = exact::bits_of_digits10(kWordDigits10[rung]);
+    // Fewer than 16 bits above the target cannot pay for the bookkeeping.
+    if (bits < target + 16) continue;
+    std::optional<Result> result = with_word_rung(rung, [&](auto zero) -> std::optional<Result> {
+      using T = decltype(zero);
+      const GeneratorSet<T> &gens = shared_generators<T>(p);
+      int k;
+      const Word u = rotation_detail::normalised(p, w.data(), w.size(), &k);
+      const BoundedProduct<T> c = rotation_detail::cached<BoundedProduct<T>>(
+          p.genus(), u, [&] { return bounded_product(gens, u, bits); });
+      const long double eps = std::ldexp(1.0L, -int(bits));
+      const long double error = c.relative_error + 128 * eps * (1 + c.relative_error);
+      if (!(error <= wanted)) return std::nullopt;
+      Moebius<T> m = c.m;
+      if (k != 0) m.b = m.b * gens.rotation(k);
+      return f(m);
+    });
+    if (result) return *result;
+  }
+  throw std::length_error(too_long(w.size()));
+}
+
+}  // namespace
+
+// a, b within 2^-72 (|a| + |b|): each Lorentz entry, quadratic in them,
+// within 2^-66 L_00 (as kElementTarget), its own rounding included.
+void accurate_matrices(const Presentation &p, const Word &w, Moebius<double> *moebius, Lorentz<double> *lorentz) {
+  with_bounded_product(p, w, 72, [&](const auto &m) {
+    using T = std::decay_t<decltype(m.a.re)>;
+    *moebius = Moebius<double>{{to_double(m.a.re), to_double(m.a.im)}, {to_double(m.b.re), to_double(m.b.im)}};
+    const Lorentz<T> L = Lorentz<T>::from_moebius(m);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) lorentz->m[i][j] = to_double(L.m[i][j]);
+    return 0;
+  });
+}
+
 template <class T>
 Lorentz<T> accurate_lorentz_as(const Presentation &p, const Word &w) {
-  const double bits = bits_for(p, w.size()) + double(std::numeric_limits<T>::digits);
-  return exact::with_precision(bits, [&](auto zero) {
-    using U = decltype(zero);
-    const Lorentz<U> m = rotated_lorentz(shared_generators<U>(p), w.data(), w.size());
+  // Entries within 2^-(d + 4) L_00 before the rounding to T's d bits: a, b
+  // within 2^-(d + 10) (|a| + |b|), as in accurate_matrices.
+  const double target = double(std::numeric_limits<T>::digits) + 10;
+  return with_bounded_product(p, w, target, [&](const auto &m) {
+    using U = std::decay_t<decltype(m.a.re)>;
+    const Lorentz<U> L = Lorentz<U>::from_moebius(m);
     Lorentz<T> r;
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) r.m[i][j] = static_cast<T>(m.m[i][j]);
+      for (int j = 0; j < 3; ++j) r.m[i][j] = static_cast<T>(L.m[i][j]);
     return r;
   });
 }

@@ -38,14 +38,18 @@ inline Lorentz<double> accurate_lorentz(const Presentation &p, const Word &w) {
 // within 2^-target (|a| >= 1); the analysis is in word_matrix.cpp.
 double moebius_precision_bits(const Presentation &p, std::size_t m, double target);
 
-// Both matrices of a word from one Moebius product at
-// moebius_precision_bits(66) (half the bits of a Lorentz product, with
-// cheaper steps): a, b within 2^-66 and each Lorentz entry within
-// 2^-66 L_00 before the rounding to double.
+// Both matrices of a word from one Moebius product, on the lowest rung whose
+// error bound computed along the product (not the a priori one above)
+// certifies a, b within 2^-72 (|a| + |b|): each Lorentz entry within
+// 2^-66 L_00 before the rounding to double. Products are cached through the
+// rotation symmetry (rotated_products.hpp). Throws std::length_error when
+// even the top rung cannot certify the word (not met: a word of N needs a
+// few dozen bits above the target).
 void accurate_matrices(const Presentation &p, const Word &w, Moebius<double> *moebius, Lorentz<double> *lorentz);
 
-// The word's Lorentz matrix rounded once to the type T = mp_real<D>: the
-// product runs at a rung with enough bits for the word and for T.
+// The word's Lorentz matrix as accurate_matrices computes it, with every entry
+// within 2^-(d + 4) L_00 before its rounding to T = mp_real<D> (d bits):
+// within 2^-d |L_ij| + 2^-(d + 4) L_00 after it.
 template <class T>
 Lorentz<T> accurate_lorentz_as(const Presentation &p, const Word &w);
 

@@ -2,8 +2,6 @@
 
 #include <mpfr.h>
 
-#include "exact/precision_ladder.hpp"
-#include "group/rotated_products.hpp"
 #include "group/word_matrix.hpp"
 
 namespace hdt::predicates {
@@ -39,32 +37,16 @@ const group::Lorentz<FastReal> &DoubleDoubleStage::matrix(TranslationId id) {
   // sum_j |L_ij| |hat_j| >= L_00 hat_0 for row 0, entries within
   // 2^-106 |L_ij| + 2^-121 L_00 suffice (2^-106 + 3 * 2^-121 < U).
   //
-  // The word's Moebius matrix at group::moebius_precision_bits(127) (every
-  // entry of L = from_moebius(a, b) within 2^-127 L_00, well within
-  // 2^-121 L_00), then rounded to double-double (2^-106 relative). (The
-  // Lorentz product of accurate_lorentz_as loses about twice as many bits
-  // per letter: this puts most words of N on a lower rung.)
-  const group::Word &word = table.word(id);
-  const double bits = group::moebius_precision_bits(surface_.presentation(), word.size(), 127);
-  if (bits > exact::ladder_top_bits()) {
-    // The MPFR stage's matrix (within 2^-133 |L_ij| + 2^-197 of the exact
-    // one) rounded to double-double (2^-106 relative).
-    const group::Lorentz<MidReal> &M = mpfr_.matrix(id);
-    auto L = std::make_unique<group::Lorentz<FastReal>>();
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) L->m[i][j] = round_mp(M.m[i][j]);
-    slot = std::move(L);
-    return *slot;
-  }
-  slot = exact::with_precision(bits, [&](auto zero) {
-    using U = decltype(zero);
-    const group::Lorentz<U> M =
-        group::Lorentz<U>::from_moebius(group::rotated_moebius(group::shared_generators<U>(surface_.presentation()), word.data(), word.size()));
-    auto L = std::make_unique<group::Lorentz<FastReal>>();
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) L->m[i][j] = round_mp(M.m[i][j]);
-    return L;
-  });
+  // The word's matrix as the MPFR stage has it (group::accurate_lorentz_as:
+  // within 2^-133 |L_ij| + 2^-137 L_00 of the exact one), rounded to double-double
+  // (2^-106 of it, so 2^-106 |L_ij| + 2^-135 L_00 more): within 2^-106 |L_ij|
+  // + 2^-132 L_00. It is computed again rather than taken from the MPFR stage,
+  // which keeps only the matrices it needs itself.
+  const group::Lorentz<MidReal> M = group::accurate_lorentz_as<MidReal>(surface_.presentation(), table.word(id));
+  auto L = std::make_unique<group::Lorentz<FastReal>>();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) L->m[i][j] = round_mp(M.m[i][j]);
+  slot = std::move(L);
   return *slot;
 }
 

@@ -29,8 +29,11 @@ class MpfrStage : public RefinedPredicates<MpfrStage, MidReal> {
   // p's hyperboloid vector; false when the stage does not apply (a site
   // without an approximation, or a point too near the circle).
   bool point(const TranslatedPoint &p, MidPoint *out);
-  // The translation's matrix: the exact one rounded once to 133 bits
-  // (within 2^-133 |L_ij| + 2^-197 <= U L_00, see word_matrix.hpp), lazily.
+  // The translation's matrix within 2^-133 |L_ij| + 2^-137 L_00 of the exact
+  // one (group::accurate_lorentz_as), lazily. The analysis needs
+  // sum_j |L~_ij - L_ij| |hat_j| <= U sum_j |L_ij| |hat_j|, and
+  // |hat_1|, |hat_2| <= hat_0 <= sum_j |L_0j| |hat_j| / L_00 (row 0):
+  // 2^-133 + 3 * 2^-137 < U.
   const group::Lorentz<MidReal> &matrix(TranslationId id);
   // 1 + cos(pi/2g) within 4U relative.
   const MidReal &circumdisk_constant();
