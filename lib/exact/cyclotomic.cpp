@@ -112,6 +112,15 @@ Cyclotomic CyclotomicField::from_double(double v) const {
 Cyclotomic CyclotomicField::zeta_power(long k) const {
   k %= n_;
   if (k < 0) k += n_;
+  if (negacyclic_) {
+    // x^d = -1 and k < n = 2d: one coefficient, without building x^k (the
+    // reduction of a vector of k + 1 coefficients was most of the cost of
+    // the polygon's exact sites at genus 128).
+    const std::size_t d = std::size_t(degree_);
+    std::vector<Integer> c(std::size_t(k) < d ? std::size_t(k) + 1 : std::size_t(k) - d + 1);
+    c.back() = std::size_t(k) < d ? 1 : -1;
+    return normalised(std::move(c), 0);
+  }
   std::vector<Integer> c(std::size_t(k) + 1, Integer(0));
   c[k] = 1;
   reduce(c);
@@ -123,9 +132,11 @@ Cyclotomic CyclotomicField::cos_2pi(long k) const {
 }
 
 Cyclotomic CyclotomicField::sin_2pi(long k) const {
-  // (zeta^k - zeta^-k) / 2i, and 1/i = -i = zeta^{3n/4}; needs 4 | n.
+  // (zeta^k - zeta^-k) / 2i, and 1/i = -i = zeta^{3n/4}; needs 4 | n. The
+  // factor goes into the exponents: no product.
   if (n_ % 4 != 0) throw std::invalid_argument("sin_2pi needs 4 | n");
-  return mul_2exp(mul(sub(zeta_power(k), zeta_power(-k)), zeta_power(3L * n_ / 4)), -1);
+  const long quarter = 3L * (n_ / 4);
+  return mul_2exp(sub(zeta_power(k % n_ + quarter), zeta_power(quarter - k % n_)), -1);
 }
 
 Cyclotomic CyclotomicField::add(const Cyclotomic &a, const Cyclotomic &b) const { return combine(a, b, false); }
@@ -166,9 +177,14 @@ Cyclotomic CyclotomicField::mul(const Cyclotomic &a, const Cyclotomic &b) const 
   if (a.is_zero() || b.is_zero()) return zero();
   const auto &x = a.coefficients_, &y = b.coefficients_;
   std::vector<Integer> c(x.size() + y.size() - 1);  // default-constructed: zero, no allocation
+  // Only the nonzero coefficients of y (the constants of the polygon have a
+  // few out of phi(n)).
+  std::vector<std::size_t> nonzero;
+  for (std::size_t j = 0; j < y.size(); ++j)
+    if (y[j] != 0) nonzero.push_back(j);
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (x[i] == 0) continue;
-    for (std::size_t j = 0; j < y.size(); ++j) c[i + j] += x[i] * y[j];
+    for (const std::size_t j : nonzero) c[i + j] += x[i] * y[j];
   }
   reduce(c);
   return normalised(std::move(c), a.exponent_ + b.exponent_);

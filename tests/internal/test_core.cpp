@@ -129,6 +129,28 @@ START_TEST(relation_is_identity_in_mpfr) {
 }
 END_TEST
 
+// zeta^k (its one-coefficient form when n is a power of two) equals k
+// products by zeta, and sin(2 pi k/n) (without the product by 1/i) satisfies
+// sin^2 + cos^2 = 1 and sin(2 pi k/n) = cos(2 pi (k - n/4)/n), exactly, for
+// n = 8g at a power-of-two genus and at others.
+START_TEST(cyclotomic_powers_and_sines_are_exact) {
+  for (int n : {16, 24, 40, 64, 96}) {
+    const exact::CyclotomicField K(n);
+    const exact::Cyclotomic zeta = K.zeta_power(1), one = K.integer(1);
+    exact::Cyclotomic power = one;
+    for (long k = 0; k < 2L * n; ++k) {
+      const auto same = [&](const exact::Cyclotomic &a, const exact::Cyclotomic &b) { return K.sub(a, b).is_zero(); };
+      ck_assert_msg(same(K.zeta_power(k), power), "n=%d zeta^%ld", n, k);
+      ck_assert_msg(same(K.zeta_power(k - 3L * n), power), "n=%d zeta^(%ld - 3n)", n, k);
+      const exact::Cyclotomic c = K.cos_2pi(k), s = K.sin_2pi(k);
+      ck_assert_msg(same(K.add(K.mul(c, c), K.mul(s, s)), one), "n=%d k=%ld: sin^2 + cos^2", n, k);
+      ck_assert_msg(same(s, K.cos_2pi(k - n / 4)), "n=%d k=%ld: sin", n, k);
+      power = K.mul(power, zeta);
+    }
+  }
+}
+END_TEST
+
 START_TEST(relation_is_exact_in_the_field) {
   // The exact Lorentz matrices M_k of the generators (each sin(pi/4g)^2 times
   // the Lorentz matrix) multiply along the relator to sin(pi/4g)^(8g) I, with
@@ -453,6 +475,7 @@ int main(void) {
   return run_suite("core", 300, [](TCase *tc) {
     tcase_add_test(tc, folded_generator_sets_match_the_formula);
     tcase_add_test(tc, relation_is_identity_in_mpfr);
+    tcase_add_test(tc, cyclotomic_powers_and_sines_are_exact);
     tcase_add_test(tc, relation_is_exact_in_the_field);
     tcase_add_test(tc, relation_in_plain_double_within_its_error_bound);
     tcase_add_test(tc, lorentz_matches_moebius);
