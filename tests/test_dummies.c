@@ -104,7 +104,41 @@ START_TEST(near_the_area_bound) {
 }
 END_TEST
 
+/* The first triangulation of a genus in a process builds the dummy points
+   and its surface's exact sites; later ones copy both from the template.
+   A copy must be the first triangulation again: the same bytes, certified
+   with exact predicates on the copied sites, and the same faces after the
+   same insertions (among them points on the sites' side lines). Each Check
+   case runs in its own process, so the first hdt_create here builds. */
+START_TEST(later_triangulations_are_the_first) {
+  const int genera[] = {2, 5, 12};
+  for (size_t k = 0; k < sizeof genera / sizeof *genera; ++k) {
+    const int g = genera[k];
+    hdt_triangulation *first = new_triangulation(g), *later = new_triangulation(g);
+    size_t n1, n2;
+    unsigned char *b1 = observable_bytes(first, &n1), *b2 = observable_bytes(later, &n2);
+    expect(n1 == n2 && memcmp(b1, b2, n1) == 0, "g=%d: a later triangulation differs from the first", g);
+    free(b1), free(b2);
+    OK(hdt_validate(later));
+    double xy[2 * 41];
+    uint64_t seed = 7;
+    for (int i = 0; i < 40; ++i) {
+      const double r = 0.9 * uniform01(&seed), a = 2 * acos(-1.0) * uniform01(&seed);
+      xy[2 * i] = r * cos(a), xy[2 * i + 1] = r * sin(a);
+    }
+    OK(hdt_polygon_side_midpoint(g, 1, &xy[80], &xy[81])); /* a site itself */
+    OK(hdt_insert_many(first, xy, 41, NULL));
+    OK(hdt_insert_many(later, xy, 41, NULL));
+    OK(hdt_validate(later));
+    b1 = observable_bytes(first, &n1), b2 = observable_bytes(later, &n2);
+    expect(n1 == n2 && memcmp(b1, b2, n1) == 0, "g=%d: the same insertions gave other faces", g);
+    free(b1), free(b2);
+    hdt_destroy(first), hdt_destroy(later);
+  }
+}
+END_TEST
+
 int main(void) {
-  const TTest *const tests[] = {at_most_14_at_genus_2, near_the_area_bound};
+  const TTest *const tests[] = {at_most_14_at_genus_2, near_the_area_bound, later_triangulations_are_the_first};
   return run_tests("dummies", tests, sizeof tests / sizeof tests[0]);
 }

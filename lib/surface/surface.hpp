@@ -106,6 +106,13 @@ class Surface {
   // off); checked against that quotient.
   int32_t add_site(const ExactSite &site, const group::Complex<SiteReal> *approximation = nullptr,
                    const group::Complex<double> *rounded = nullptr);
+  // Registers a site that a surface of the same genus registered (its checks
+  // passed there): a copy of the template's sites for a new triangulation
+  // costs a copy, not the exact arithmetic of add_site.
+  int32_t adopt_site(const Site &site) {
+    sites_.push_back(site);
+    return int32_t(sites_.size() - 1);
+  }
   const Site &site(int32_t id) const { return sites_.at(std::size_t(id)); }
   std::size_t site_count() const { return sites_.size(); }
 

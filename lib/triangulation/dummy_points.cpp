@@ -46,6 +46,8 @@ class DummyBuilder {
     result->vertices = t_.vertices();
     result->faces = t_.faces();
     for (std::size_t id = T_.neighbour_count(); id < T_.size(); ++id) result->extra_words.push_back(T_.word(TranslationId(id)));
+    const surface::Surface &S = t_.surface();
+    for (std::size_t id = 0; id < S.site_count(); ++id) result->sites.push_back(S.site(int32_t(id)));
     return result;
   }
 

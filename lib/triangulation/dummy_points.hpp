@@ -9,6 +9,7 @@
 
 #include "group/presentation.hpp"
 #include "predicates/kernel.hpp"
+#include "surface/surface.hpp"
 #include "triangulation/mesh.hpp"
 
 namespace hdt::triangulation {
@@ -20,6 +21,9 @@ struct DummyTemplate {
   // The canonical words of the translation ids from |N| on, in id order: a
   // fresh table interns them to the same ids.
   std::vector<group::Word> extra_words;
+  // The template surface's sites (the Q0 sites, registered and checked by
+  // register_q0_sites): later triangulations adopt them.
+  std::vector<surface::Site> sites;
 };
 
 // Registers the sites of Q0 with a fresh surface: site 0 is v_0, site 1 + k

@@ -18,8 +18,7 @@ Triangulation::Triangulation(int genus) : Triangulation(genus, Empty{}) {
     return;
   }
   // The same sites and translation ids as the template's surface had.
-  std::vector<double> sx(2 * genus + 1), sy(2 * genus + 1);
-  register_q0_sites(*surface_, sx.data(), sy.data());
+  for (const surface::Site &site : q->sites) surface_->adopt_site(site);
   group::TranslationTable &T = surface_->table();
   for (const group::Word &w : q->extra_words)
     if (std::size_t(T.intern_canonical(w)) + 1 != T.size()) throw std::logic_error("dummy template: translation ids");
