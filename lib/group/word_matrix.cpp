@@ -30,6 +30,19 @@ double word_precision_bits(const Presentation &p, std::size_t m) {
 
 namespace {
 
+// Runs f(zero) with zero a mp_real of Digits[rung] decimal digits (the last
+// entry for larger rungs): a ladder of five precisions, chosen at run time.
+template <const unsigned (&Digits)[5], class F>
+auto with_rung(std::size_t rung, F &&f) {
+  switch (rung) {
+    case 0: return f(exact::mp_real<Digits[0]>());
+    case 1: return f(exact::mp_real<Digits[1]>());
+    case 2: return f(exact::mp_real<Digits[2]>());
+    case 3: return f(exact::mp_real<Digits[3]>());
+    default: return f(exact::mp_real<Digits[4]>());
+  }
+}
+
 // 53 bits of the result plus a guard.
 double bits_for(const Presentation &p, std::size_t m) { return 64.0 + word_precision_bits(p, m); }
 
@@ -122,16 +135,6 @@ constexpr double kElementTarget = 72;
 // for the a posteriori bound of any product that fits in double (below).
 constexpr unsigned kElementDigits10[] = {40, 160, 640, 800, 2560};
 
-template <class F>
-auto with_element_rung(std::size_t rung, F &&f) {
-  switch (rung) {
-    case 0: return f(exact::mp_real<kElementDigits10[0]>());
-    case 1: return f(exact::mp_real<kElementDigits10[1]>());
-    case 2: return f(exact::mp_real<kElementDigits10[2]>());
-    case 3: return f(exact::mp_real<kElementDigits10[3]>());
-    default: return f(exact::mp_real<kElementDigits10[4]>());
-  }
-}
 
 // |a| + |b| rounded up, in long double: its exponent range (2^16384) holds
 // every product these bounds can certify.
@@ -215,7 +218,7 @@ auto with_certified_product(const Presentation &p, const Word &r, double target,
   for (std::size_t rung = 0; rung < std::size(kElementDigits10); ++rung) {
     const double bits = exact::bits_of_digits10(kElementDigits10[rung]);
     if (bits < guess && rung + 1 < std::size(kElementDigits10)) continue;
-    std::optional<Result> result = with_element_rung(rung, [&](auto zero) -> std::optional<Result> {
+    std::optional<Result> result = with_rung<kElementDigits10>(rung, [&](auto zero) -> std::optional<Result> {
       Moebius<decltype(zero)> P;
       if (!certified_product(p, r, bits, target, &P)) return std::nullopt;
       return f(P);
@@ -482,16 +485,6 @@ namespace {
 // ladder's second rung has 531).
 constexpr unsigned kWordDigits10[] = {40, 80, 160, 640, 2560};
 
-template <class F>
-auto with_word_rung(std::size_t rung, F &&f) {
-  switch (rung) {
-    case 0: return f(exact::mp_real<kWordDigits10[0]>());
-    case 1: return f(exact::mp_real<kWordDigits10[1]>());
-    case 2: return f(exact::mp_real<kWordDigits10[2]>());
-    case 3: return f(exact::mp_real<kWordDigits10[3]>());
-    default: return f(exact::mp_real<kWordDigits10[4]>());
-  }
-}
 
 // A product of a word starting with letter 0 and ProductBound's bound on its
 // relative error (infinite when unknown).
@@ -582,7 +575,7 @@ auto with_bounded_product(const Presentation &p, const Word &w, double target, F
     const double bits = exact::bits_of_digits10(kWordDigits10[rung]);
     // Fewer than 16 bits above the target cannot pay for the bookkeeping.
     if (bits < target + 16) continue;
-    std::optional<Result> result = with_word_rung(rung, [&](auto zero) -> std::optional<Result> {
+    std::optional<Result> result = with_rung<kWordDigits10>(rung, [&](auto zero) -> std::optional<Result> {
       using T = decltype(zero);
       const GeneratorSet<T> &gens = shared_generators<T>(p);
       int k;
