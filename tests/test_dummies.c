@@ -104,6 +104,18 @@ START_TEST(near_the_area_bound) {
 }
 END_TEST
 
+/* The largest thinned set (the pass runs to genus 128): certified, and within
+   1.75 times the area bound as below. */
+START_TEST(thinned_at_genus_128) {
+  const size_t V = checked_dummies(128);
+  const long bound = area_bound(128);
+  printf("genus 128: %zu dummy points, area bound %ld, ratio %.3f\n", V, bound, (double)V / (double)bound);
+  ck_assert_msg((long)V >= bound, "%zu dummies, fewer than the area bound %ld", V, bound);
+  ck_assert_msg((double)V <= 1.75 * (double)bound, "%zu dummies, %.3f times the area bound %ld", V,
+                (double)V / (double)bound, bound);
+}
+END_TEST
+
 /* The first triangulation of a genus in a process builds the dummy points
    and its surface's exact sites; later ones copy both from the template.
    A copy must be the first triangulation again: the same bytes, certified
@@ -139,6 +151,7 @@ START_TEST(later_triangulations_are_the_first) {
 END_TEST
 
 int main(void) {
-  const TTest *const tests[] = {at_most_14_at_genus_2, near_the_area_bound, later_triangulations_are_the_first};
+  const TTest *const tests[] = {at_most_14_at_genus_2, near_the_area_bound, thinned_at_genus_128,
+                                later_triangulations_are_the_first};
   return run_tests("dummies", tests, sizeof tests / sizeof tests[0]);
 }

@@ -21,10 +21,11 @@ class Triangulation;
 // densely in their order (the order the symbolic perturbation reads).
 void thin_dummy_points(Triangulation &t);
 
-// The largest genus thinned. Beyond, the pass costs more than the rest of
-// the construction (6.1 s of CPU against 3.7 s at genus 128), and at genus
-// 256 its compass-placed points far from O met an exact sign that 8500 bits
-// could not decide: the refined set is kept there (about 2x the bound).
-constexpr int kThinningGenusMax = 64;
+// The largest genus thinned (a test certifies the set at this genus). At
+// genus 256 the pass's compass-placed points far from O met an exact sign
+// that 8500 bits could not decide (Field::sign): beyond 128 the refined set
+// is kept (about 2x the bound). At 128 the pass makes the first
+// hdt_create about 0.5 s slower (0.25 -> 0.77 s of CPU).
+constexpr int kThinningGenusMax = 128;
 
 }  // namespace hdt::triangulation
