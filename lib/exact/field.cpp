@@ -59,7 +59,7 @@ T scale2(const T &x, int e) {
 
 Field::Field(int genus) : genus_(genus), base_(8 * genus), sigma_squared_(base_.cos_2pi(2)) {
   if (genus < 2) throw std::invalid_argument("Field: genus must be at least 2");
-  evaluators_.resize(5);
+  evaluators_.resize(7);
 }
 
 FieldElement Field::add(const FieldElement &a, const FieldElement &b) const {
@@ -97,7 +97,9 @@ const Field::Evaluator<T> &Field::evaluator() const {
   constexpr int slot = std::is_same_v<T, double> ? 0 : std::numeric_limits<T>::digits10 <= 40 ? 1
                                                      : std::numeric_limits<T>::digits10 <= 160 ? 2
                                                      : std::numeric_limits<T>::digits10 <= 640 ? 3
-                                                                                               : 4;
+                                                     : std::numeric_limits<T>::digits10 <= 2560 ? 4
+                                                     : std::numeric_limits<T>::digits10 <= 10240 ? 5
+                                                                                                 : 6;
   std::lock_guard<std::mutex> lock(mutex_);
   if (!evaluators_[slot]) evaluators_[slot] = std::make_shared<Evaluator<T>>(base_, genus_);
   return *static_cast<const Evaluator<T> *>(evaluators_[slot].get());
@@ -156,7 +158,11 @@ int Field::sign(const FieldElement &a) const {
   if (s != 2) return s;
   s = sign_at<mp_real<2560>>(a);
   if (s != 2) return s;
-  throw std::logic_error("Field::sign: 8500 bits could not decide a non-zero value");
+  s = sign_at<mp_real<10240>>(a);
+  if (s != 2) return s;
+  s = sign_at<mp_real<40960>>(a);
+  if (s != 2) return s;
+  throw std::logic_error("Field::sign: 136000 bits could not decide a non-zero value");
 }
 
 double Field::approximate(const FieldElement &a) const {

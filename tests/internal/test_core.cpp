@@ -471,6 +471,38 @@ START_TEST(half_relators_spelled_the_other_way_are_found) {
 }
 END_TEST
 
+// A non-zero element of tiny absolute value needs more precision than the
+// old top rung (8500 bits) to get its sign: cos(2 pi / n) minus its dyadic
+// approximation to about 9,500 bits, both as exact field elements. The sign
+// is that of the residual computed independently with MPFR at 20,000 bits.
+// Before the 34k- and 136k-bit rungs, Field::sign threw here.
+START_TEST(sign_of_a_tiny_nonzero_element) {
+  const exact::Field &F = exact::field_of_genus(2);
+  const exact::CyclotomicField &K = F.cyclotomic();
+  mpfr_t c, d;
+  mpfr_inits2(20000, c, d, (mpfr_ptr)0);
+  mpfr_const_pi(c, MPFR_RNDN);
+  mpfr_mul_ui(c, c, 2, MPFR_RNDN);
+  mpfr_div_ui(c, c, (unsigned long)K.order(), MPFR_RNDN);
+  mpfr_cos(c, c, MPFR_RNDN);  // within 2^-19999 of cos(2 pi / n); the residual stays far above that
+  exact::Cyclotomic approximation = K.zero();
+  for (int chunk = 0; chunk < 180; ++chunk) {  // 180 * 53 bits
+    long e = 0;  // c = part 2^e: scaled, so that no chunk underflows a double
+    const double part = mpfr_get_d_2exp(&e, c, MPFR_RNDN);
+    approximation = K.add(approximation, K.mul_2exp(K.from_double(part), int(e)));
+    mpfr_set_d(d, part, MPFR_RNDN);
+    mpfr_mul_2si(d, d, e, MPFR_RNDN);
+    mpfr_sub(c, c, d, MPFR_RNDN);  // exact: the leading bits cancel
+  }
+  const int expected = mpfr_sgn(c);
+  ck_assert_msg(expected != 0 && mpfr_get_exp(c) < -9000, "residual exponent %ld", (long)mpfr_get_exp(c));
+  const exact::FieldElement residual = F.from_cyclotomic(K.sub(K.cos_2pi(1), approximation));
+  ck_assert_int_eq(F.sign(residual), expected);
+  ck_assert_int_eq(F.sign(F.neg(residual)), -expected);
+  mpfr_clears(c, d, (mpfr_ptr)0);
+}
+END_TEST
+
 int main(void) {
   return run_suite("core", 300, [](TCase *tc) {
     tcase_add_test(tc, folded_generator_sets_match_the_formula);
@@ -490,5 +522,6 @@ int main(void) {
     tcase_add_test(tc, unit_disk_test_is_exact);
     tcase_add_test(tc, translation_matrices_match_direct_products);
     tcase_add_test(tc, half_relators_spelled_the_other_way_are_found);
+    tcase_add_test(tc, sign_of_a_tiny_nonzero_element);
   });
 }
