@@ -6,7 +6,7 @@
 #include <cfloat>
 #include <cmath>
 
-#include "group/lorentz.hpp"
+#include "group/moebius.hpp"
 
 namespace hdt::predicates {
 
@@ -25,33 +25,46 @@ inline double square_error(double x, double xx) {
   return ((hi * hi - xx) + 2 * hi * lo) + lo * lo;
 }
 
-// N = L p^ / w for the disk point (x, y), L the translation's Lorentz
-// matrix with each entry within u |L_ij| + 2^-64 L_00 (TranslationTable). w = 1 - x^2 - y^2 is computed with error-free
-// products and sums, so it keeps full relative precision near the circle.
-inline FilteredPoint filtered_point(double x, double y, const group::Lorentz<double> &L) {
+// N for the disk point z = (x, y) under a translation given by its Moebius
+// matrix [[a, b], [conj b, conj a]], each component of a and b within
+// u |.| + 2^-72 (|a| + |b|) (TranslationTable). With Num = a z + b and
+// D = conj(b) z + conj(a), 1 - |h z|^2 = w / |D|^2, w = 1 - |z|^2, so
+//   N = (2 |D|^2 / w - 1, 2 Num conj(D) / w).
+// The rounding errors of a and b meet the exact z only in Num and D: a
+// relative error of about |a| / |D| u, where the Lorentz product L p^ / w
+// loses its square (L's entries are about 2 |a|^2): near the sides and
+// corners of F_g at large genus translations with entries of 10^7 and more
+// map points with N of 10^2 .. 10^4, and the Lorentz form left a third of
+// the double stage's in-circle tests at genus 128 undecided.
+// w = 1 - x^2 - y^2 is computed with error-free products and sums, so it
+// keeps full relative precision near the circle.
+inline FilteredPoint filtered_point(double x, double y, const group::Moebius<double> &M) {
   const double xx = x * x, exx = square_error(x, xx);
   const double yy = y * y, eyy = square_error(y, yy);
   const double s = xx + yy, b = s - xx, es = (xx - (s - b)) + (yy - b);  // s + es = xx + yy exactly
-  const double tail = es + exx + eyy;
-  // Relative errors: w <= 4u (1 - s is exact for s in [1/2, 2]), p0 <= 2u;
-  // and w absolutely up to 2^-103 more, the rounding of tail (|tail| <=
-  // 2^-51), which matters only within about 2^-50 of the circle.
-  const double w = (1.0 - s) - tail;
-  const double p[3] = {(1.0 + s) + tail, 2 * x, 2 * y};
+  // w within 4u relative (1 - s is exact for s in [1/2, 2]) and 2^-103
+  // absolute (the rounding of es + exx + eyy, which is at most 2^-51).
+  const double w = (1.0 - s) - (es + exx + eyy);
+  const double ar = M.a.re, ai = M.a.im, br = M.b.re, bi = M.b.im;
+  const double n1 = ar * x - ai * y + br, n2 = ar * y + ai * x + bi;
+  const double d1 = br * x + bi * y + ar, d2 = br * y - bi * x - ai;
+  const double p1 = n1 * d1 + n2 * d2, p2 = n2 * d1 - n1 * d2, q = d1 * d1 + d2 * d2;
   FilteredPoint r;
-  double worst = 0;
-  for (int i = 0; i < 3; ++i) {
-    const double P = L.m[i][0] * p[0] + L.m[i][1] * p[1] + L.m[i][2] * p[2];
-    const double S = std::abs(L.m[i][0]) * p[0] + std::abs(L.m[i][1] * p[1]) + std::abs(L.m[i][2] * p[2]);
-    r.n[i] = P / w;
-    worst = std::max(worst, S);
-  }
-  // Each product sum: u (L rounded) + 2u (p0) + 3u (arithmetic) per unit of
-  // S; the division and w add 5u of |P| <= S; 16u of the worst S covers all
-  // with room, also the absolute part of L's error: 2^-64 L_00 (p0 + |p1| +
-  // |p2|) <= 2^-62.4 L_00 p0 <= 2^-62.4 S_0 (|p1|, |p2| <= p0). w's absolute
-  // error adds 2^-103 / w relative (2^-102 / w with the roundings here).
-  r.error = (16 * kUnit + 0x1p-102 / w) * worst / w;
+  r.n[0] = 2 * q / w - 1;
+  r.n[1] = 2 * p1 / w;
+  r.n[2] = 2 * p2 / w;
+  // With S = |a_re| + |a_im| + |b_re| + |b_im| (>= |a| + |b|): the matrix
+  // components are within 1.01 u S, which (1 + |x| + |y| <= 2.42) and three
+  // roundings of terms summing to at most S put each of n1, n2, d1, d2
+  // within e1 = 5.5 u S. With m their largest size plus e1, p1, p2 and q are
+  // within 4 m e1 (inputs) + 4.02 u m^2 (two roundings each), and at most
+  // 2 m^2. Dividing by w adds 5u and 2^-102 / w relative to 2 m^2 / w, the
+  // last subtraction u of |N0| + 1 <= 4 m^2 / w: 1.02 covers the products
+  // of the (1 + u) factors.
+  const double S = std::abs(ar) + std::abs(ai) + std::abs(br) + std::abs(bi);
+  const double e1 = 5.5 * kUnit * S;
+  const double m = std::max(std::max(std::abs(n1), std::abs(n2)), std::max(std::abs(d1), std::abs(d2))) + e1;
+  r.error = 1.02 * (8 * m * e1 + (36 * kUnit + 0x1p-100 / w) * m * m) / w;
   return r;
 }
 

@@ -1,5 +1,6 @@
 #include "predicates/stage_double.hpp"
 
+#include "group/lorentz.hpp"
 #include "predicates/stage_refined.hpp"
 #include "surface/systole.hpp"
 
@@ -23,8 +24,8 @@ const std::array<double, 3> &DoubleStage::site_vector(int32_t site) {
 
 FilteredPoint DoubleStage::compute_point(const TranslatedPoint &p) {
   if (p.site < 0 && p.translation == 0) return filtered_point(p.x, p.y);
+  if (p.site < 0) return filtered_point(p.x, p.y, surface_.table().moebius(p.translation));
   const group::Lorentz<double> &L = surface_.table().lorentz(p.translation);
-  if (p.site < 0) return filtered_point(p.x, p.y, L);
   // A site's hyperboloid vector is stored rounded (4u per entry): apply L
   // (u per entry) with three more roundings.
   const std::array<double, 3> &n = site_vector(p.site);

@@ -187,7 +187,7 @@ HoleVertex lifted_hole_vertex(Kernel &kernel, const TranslatedPoint &p, uint32_t
   if (p.site < 0) {
     const predicates::FilteredPoint f =
         p.translation == 0 ? predicates::filtered_point(p.x, p.y)
-                           : predicates::filtered_point(p.x, p.y, kernel.surface().table().lorentz(p.translation));
+                           : predicates::filtered_point(p.x, p.y, kernel.surface().table().moebius(p.translation));
     if (f.error < 1e-9 * f.n[0]) {
       h.lift = {f.n[0], f.n[1], f.n[2]};
       h.lift_error = f.error;
