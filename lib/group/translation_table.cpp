@@ -48,7 +48,7 @@ TranslationId TranslationTable::add_canonical(const Word &canonical) {
 const TranslationTable::Matrices &TranslationTable::compute_matrices(TranslationId id) {
   const Word &w = word(id);  // checks the id
   Matrices &m = matrices_.at(std::size_t(id));
-  accurate_matrices(presentation_, w, &m.moebius, &m.lorentz);
+  accurate_matrices(presentation_, w, &m.moebius, &m.lorentz, &m.moebius_low, &m.moebius_error);
   m.known = true;
   // Column 0 is the centre h(O), each entry within 2^-66 L_00 before its
   // rounding (u relative).

@@ -66,11 +66,18 @@ class TranslationTable {
   // all of N up front would cost seconds at large genus).
   const Moebius<double> &moebius(TranslationId id) { return matrices(id).moebius; }
   const Lorentz<double> &lorentz(TranslationId id) { return matrices(id).lorentz; }
+  // The Moebius matrix to about twice double precision, for the
+  // double-double stage: each part of a, b is moebius + moebius_low within
+  // 2^-106 of itself plus moebius_error (|a| + |b|).
+  const Moebius<double> &moebius_low(TranslationId id) { return matrices(id).moebius_low; }
+  double moebius_error(TranslationId id) { return matrices(id).moebius_error; }
 
  private:
   struct Matrices {
     Moebius<double> moebius;
     Lorentz<double> lorentz;
+    Moebius<double> moebius_low;
+    double moebius_error = 0;
     bool known = false;
   };
   const Matrices &matrices(TranslationId id) {

@@ -569,7 +569,7 @@ std::size_t run_prefix_max(const Presentation &p) { return std::size_t(p.half_re
 // below with room.
 template <class F>
 auto with_bounded_product(const Presentation &p, const Word &w, double target, F &&f) {
-  using Result = decltype(f(Moebius<exact::mp_real<kWordDigits10[0]>>{}));
+  using Result = decltype(f(Moebius<exact::mp_real<kWordDigits10[0]>>{}, 0.0));
   const long double wanted = std::ldexp(1.0L, -int(std::ceil(target)));
   for (std::size_t rung = 0; rung < std::size(kWordDigits10); ++rung) {
     const double bits = exact::bits_of_digits10(kWordDigits10[rung]);
@@ -590,7 +590,7 @@ auto with_bounded_product(const Presentation &p, const Word &w, double target, F
       if (!(error <= wanted)) return std::nullopt;
       Moebius<T> m = c.m;
       if (k != 0) m.b = m.b * gens.rotation(k);
-      return f(m);
+      return f(m, double(error) * (1 + 0x1p-50));
     });
     if (result) return *result;
   }
@@ -601,10 +601,20 @@ auto with_bounded_product(const Presentation &p, const Word &w, double target, F
 
 // a, b within 2^-72 (|a| + |b|): each Lorentz entry, quadratic in them,
 // within 2^-66 L_00 (as kElementTarget), its own rounding included.
-void accurate_matrices(const Presentation &p, const Word &w, Moebius<double> *moebius, Lorentz<double> *lorentz) {
-  with_bounded_product(p, w, 72, [&](const auto &m) {
+void accurate_matrices(const Presentation &p, const Word &w, Moebius<double> *moebius, Lorentz<double> *lorentz,
+                       Moebius<double> *moebius_low, double *moebius_error) {
+  with_bounded_product(p, w, 72, [&](const auto &m, double error) {
     using T = std::decay_t<decltype(m.a.re)>;
-    *moebius = Moebius<double>{{to_double(m.a.re), to_double(m.a.im)}, {to_double(m.b.re), to_double(m.b.im)}};
+    // hi = RN(x) is a multiple of the last place of hi's binade, hence of
+    // x's: x - hi is exact in T, and lo = RN(x - hi) within u^2 |x|.
+    auto split = [](const T &x, double *lo) {
+      const double hi = to_double(x);
+      *lo = to_double(T(x - hi));
+      return hi;
+    };
+    *moebius = Moebius<double>{{split(m.a.re, &moebius_low->a.re), split(m.a.im, &moebius_low->a.im)},
+                               {split(m.b.re, &moebius_low->b.re), split(m.b.im, &moebius_low->b.im)}};
+    *moebius_error = error;
     const Lorentz<T> L = Lorentz<T>::from_moebius(m);
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) lorentz->m[i][j] = to_double(L.m[i][j]);
@@ -617,7 +627,7 @@ Lorentz<T> accurate_lorentz_as(const Presentation &p, const Word &w) {
   // Entries within 2^-(d + 4) L_00 before the rounding to T's d bits: a, b
   // within 2^-(d + 10) (|a| + |b|), as in accurate_matrices.
   const double target = double(std::numeric_limits<T>::digits) + 10;
-  return with_bounded_product(p, w, target, [&](const auto &m) {
+  return with_bounded_product(p, w, target, [&](const auto &m, double) {
     using U = std::decay_t<decltype(m.a.re)>;
     const Lorentz<U> L = Lorentz<U>::from_moebius(m);
     Lorentz<T> r;

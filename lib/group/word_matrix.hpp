@@ -44,8 +44,13 @@ double moebius_precision_bits(const Presentation &p, std::size_t m, double targe
 // 2^-66 L_00 before the rounding to double. Products are cached through the
 // rotation symmetry (rotated_products.hpp). Throws std::length_error when
 // even the top rung cannot certify the word (not met: a word of N needs a
-// few dozen bits above the target).
-void accurate_matrices(const Presentation &p, const Word &w, Moebius<double> *moebius, Lorentz<double> *lorentz);
+// few dozen bits above the target). The Moebius matrix also to about twice
+// double precision: each part of a and b split into moebius + moebius_low
+// (within 2^-106 of the product's value), which is within moebius_error
+// (|a| + |b|) of the exact one (the bound computed along the product, at most
+// 2^-72, usually far less: about 2^-100 for the words of N at genus 128).
+void accurate_matrices(const Presentation &p, const Word &w, Moebius<double> *moebius, Lorentz<double> *lorentz,
+                       Moebius<double> *moebius_low, double *moebius_error);
 
 // The word's Lorentz matrix as accurate_matrices computes it, with every entry
 // within 2^-(d + 4) L_00 before its rounding to T = mp_real<D> (d bits):

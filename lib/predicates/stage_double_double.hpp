@@ -37,7 +37,9 @@ class DoubleDoubleStage : public RefinedPredicates<DoubleDoubleStage, FastReal> 
   // p's hyperboloid vector (cached); false when the stage does not apply.
   bool point(const TranslatedPoint &p, FastPoint *out);
 
-  // Each entry within 2^-106 |L_ij| + 2^-121 L_00 <= U L_00, by translation id, lazily.
+  // Each entry within 2^-106 |L_ij| + 2^-121 L_00 <= U L_00, by translation id, lazily:
+  // for sites and the sides' generators (stored points use the table's split
+  // Moebius matrix, compute_point).
   const group::Lorentz<FastReal> &matrix(TranslationId id);
   // 1 + cos(pi/2g): the MPFR stage's (within 4 * 2^-133) rounded (2^-106), within U.
   const FastReal &circumdisk_constant();

@@ -34,6 +34,7 @@
 #include <cmath>
 
 #include "group/lorentz.hpp"
+#include "group/moebius.hpp"
 #include "predicates/sign.hpp"
 
 namespace hdt::predicates {
@@ -131,6 +132,41 @@ bool refined_point(const T &x, const T &y, double coordinate_error, const group:
   // most (2/w + 4/w^2) <= 6/w^2 per unit in each, and L multiplies by at most
   // its row sum. (The error is at least 8U >= 2^-129: never below 2^-200.)
   out->error = (worst / wd * (8 * unit + 4 * unit / wd) + row * 12 * coordinate_error / (wd * wd)) * 1.01;
+  return true;
+}
+
+// The same N for the disk point (x, y) (exact) under a translation given by
+// its Moebius matrix [[a, b], [conj b, conj a]], each part of a and b within
+// matrix_error (|a_re| + |a_im| + |b_re| + |b_im|): with Num = a z + b and
+// D = conj(b) z + conj(a), N = (2 |D|^2 / w - 1, 2 Num conj(D) / w), whose
+// error is about |a| / |D| relative to the matrix's where the Lorentz
+// product's is |a|^2 / |D|^2 (filtered_point.hpp has the same in double).
+template <class T>
+bool refined_point_moebius(const T &x, const T &y, const group::Moebius<T> &M, double matrix_error, double unit,
+                           RefinedPoint<T> *out) {
+  const T w = T(1) - (x * x + y * y);
+  const double wd = static_cast<double>(w);
+  if (!(wd > 0x1p-100)) return false;
+  const T n1 = M.a.re * x - M.a.im * y + M.b.re, n2 = M.a.re * y + M.a.im * x + M.b.im;
+  const T d1 = M.b.re * x + M.b.im * y + M.a.re, d2 = M.b.re * y - M.b.im * x - M.a.im;
+  const T p1 = n1 * d1 + n2 * d2, p2 = n2 * d1 - n1 * d2, q = d1 * d1 + d2 * d2;
+  out->n[0] = (q + q) / w - T(1);
+  out->n[1] = (p1 + p1) / w;
+  out->n[2] = (p2 + p2) / w;
+  // With S >= |a_re| + |a_im| + |b_re| + |b_im| (magnitude() rounds up; the
+  // parts' own errors are inside the 1.01): each of n1, n2, d1, d2 within
+  // e1 = 2.42 matrix_error S (1 + |x| + |y| <= 2.42) + 3.01 U S (three
+  // roundings of terms summing to at most S). With m their largest size
+  // plus e1, p1, p2 and q are within 4 m e1 + 4.02 U m^2 and at most 2 m^2.
+  // w = 1 - s within 2U s + U w <= 3U; the doubling, the division and the
+  // final subtraction (|N0| + 1 <= 4 m^2 / w) add U each of 4 m^2 / w:
+  // error <= (8 m e1 + (8.04 + 12 + 12 / w) U m^2) / w, 1.02 for the rest.
+  const double S = (magnitude(M.a.re) + magnitude(M.a.im) + magnitude(M.b.re) + magnitude(M.b.im)) * 1.01;
+  const double e1 = (2.42 * matrix_error + 3.01 * unit) * S;
+  const double m =
+      std::max(std::max(magnitude(n1), magnitude(n2)), std::max(magnitude(d1), magnitude(d2))) + e1;
+  if (!in_range(m)) return false;
+  out->error = 1.02 * (8 * m * e1 + (20.04 + 12 / wd) * unit * m * m) / wd;
   return true;
 }
 

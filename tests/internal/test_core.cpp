@@ -1,7 +1,9 @@
 // Internal tests of the C++ core (Check, compiled as C++).
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <random>
 
@@ -405,15 +407,18 @@ END_TEST
 // Every element of N at small genus, random words (not runs) too, and at
 // genus 128 the relator runs of 2g letters, which used to take the top rung
 // (the direct product of 256 letters loses at most 2138 bits of 8503).
+double worst_split_error = 0;  // the largest moebius_error met, printed
+
 template <class R>
 void check_translation_matrices(const Presentation &p, const Word &w) {
   using Mid = exact::mp_real<40>;
   const group::GeneratorSet<R> &set = group::shared_generators<R>(p);
   const group::Lorentz<R> L = group::Lorentz<R>::from_moebius(set.moebius(w));
   const group::Lorentz<Mid> M = group::accurate_lorentz_as<Mid>(p, w);
-  group::Moebius<double> md;
+  group::Moebius<double> md, low;
   group::Lorentz<double> ld;
-  group::accurate_matrices(p, w, &md, &ld);
+  double split_error = 1;
+  group::accurate_matrices(p, w, &md, &ld, &low, &split_error);
   const int d = std::numeric_limits<Mid>::digits;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
@@ -428,6 +433,17 @@ void check_translation_matrices(const Presentation &p, const Word &w) {
   const R gap = abs(R(md.a.re) - m.a.re) + abs(R(md.a.im) - m.a.im) + abs(R(md.b.re) - m.b.re) +
                 abs(R(md.b.im) - m.b.im);
   ck_assert_msg(gap <= ldexp(scale, -51), "g=%d Moebius, length %zu", p.genus(), w.size());
+  // The split form: each part within split_error (|a| + |b|) + 2^-106 |.|.
+  ck_assert_double_le(split_error, 0x1p-72);
+  const std::array<std::array<double, 2>, 4> parts = {
+      {{md.a.re, low.a.re}, {md.a.im, low.a.im}, {md.b.re, low.b.re}, {md.b.im, low.b.im}}};
+  const std::array<R, 4> exact_parts = {m.a.re, m.a.im, m.b.re, m.b.im};
+  for (int i = 0; i < 4; ++i) {
+    const R off = abs(R(parts[i][0]) + R(parts[i][1]) - exact_parts[i]);
+    ck_assert_msg(off <= R(split_error) * scale + ldexp(abs(exact_parts[i]), -106) * R(1.0001),
+                  "g=%d split Moebius, length %zu", p.genus(), w.size());
+  }
+  worst_split_error = std::max(worst_split_error, split_error);
 }
 
 START_TEST(translation_matrices_match_direct_products) {
@@ -447,6 +463,8 @@ START_TEST(translation_matrices_match_direct_products) {
       for (std::size_t i = 0; i < run.size(); ++i) run[i] = Letter((first + int(i) * step) % n);
       check_translation_matrices<exact::mp_real<2560>>(p, run);
     }
+  std::printf("translation matrices: largest split Moebius error bound 2^%.1f (|a| + |b|)\n",
+              std::log2(worst_split_error));
 }
 END_TEST
 

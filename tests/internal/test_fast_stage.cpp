@@ -327,7 +327,8 @@ START_TEST(refined_stages_agree_with_exact_near_ties) {
 END_TEST
 
 // The double stage's points (filtered_point with a translation's Moebius
-// matrix) are within their stated error of the 2126-bit reference, for
+// matrix), and the double-double stage's from the table's split matrix,
+// are within their stated error of the 2126-bit reference, for
 // translations of N and products of two, on points anywhere in the disk
 // (down to 1e-14 from the circle) and near the corners and side midpoints
 // of F_g, where the cancellation is worst. The bound there is also sharp
@@ -342,7 +343,7 @@ START_TEST(double_points_within_their_error_bounds) {
   Rng rng(9300 + g);
   std::uniform_real_distribution<double> unit(0, 1);
   const int n = 4 * g;
-  double worst = 0, worst_corner_bound = 0;
+  double worst = 0, worst_corner_bound = 0, worst_dd = 0;
   int points = 0;
   for (int k = 0; k < 400; ++k) {
     const auto N = group::TranslationId(T.neighbour_count());
@@ -366,11 +367,25 @@ START_TEST(double_points_within_their_error_bounds) {
         worst = std::max(worst, off / f.error);
       }
       if (c == 1) worst_corner_bound = std::max(worst_corner_bound, f.error / f.n[0]);
+      // The double-double stage's point from the table's split matrix.
+      const group::Moebius<double> &hi = T.moebius(h), &lo = T.moebius_low(h);
+      auto part = [](double a, double b) { return DoubleDouble::fast_two_sum(a, b); };
+      const group::Moebius<DoubleDouble> dd{{part(hi.a.re, lo.a.re), part(hi.a.im, lo.a.im)},
+                                            {part(hi.b.re, lo.b.re), part(hi.b.im, lo.b.im)}};
+      predicates::RefinedPoint<DoubleDouble> e;
+      ck_assert(predicates::refined::refined_point_moebius(DoubleDouble(p.x), DoubleDouble(p.y), dd,
+                                                           T.moebius_error(h) + 0x1p-105,
+                                                           predicates::DoubleDoubleStage::kUnit, &e));
+      for (int i = 0; i < 3; ++i) {
+        const double off = static_cast<double>(abs(Ref(e.n[i].hi) + Ref(e.n[i].lo) - r.n[i]));
+        ck_assert_msg(off <= e.error, "g=%d id %d: double-double N%d off by %g, bound %g", g, h, i, off, e.error);
+        worst_dd = std::max(worst_dd, off / e.error);
+      }
       ++points;
     }
   }
-  std::printf("double points g=%d: %d points, largest error / bound %.3g, largest relative bound near corners %.3g\n",
-              g, points, worst, worst_corner_bound);
+  std::printf("double points g=%d: %d points, largest error / bound %.3g (double-double %.3g), largest relative "
+              "bound near corners %.3g\n", g, points, worst, worst_dd, worst_corner_bound);
   if (g == 64) ck_assert_double_le(worst_corner_bound, 1e-10);
 }
 END_TEST
