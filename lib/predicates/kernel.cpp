@@ -50,6 +50,7 @@ Kernel::Decision Kernel::orientation_stages(const TranslatedPoint &p, const Tran
   }
   const FilteredPoint a = double_.point(p), b = double_.point(q), c = double_.point(r);
   if (const Sign s = DoubleStage::orientation(a, b, c); decided(s)) return {s, Stage::double_filter};
+  if (const Sign s = DoubleStage::disk_orientation(a, b, c); decided(s)) return {s, Stage::double_filter};
   // The same description is the same point: a duplicate insertion walks
   // onto its vertex, and these orientations are zero without the exact stage.
   if (identical(p, q) || identical(q, r) || identical(r, p)) return {Sign::zero, Stage::structural};
@@ -88,6 +89,7 @@ Kernel::Decision Kernel::in_circle_stages(const TranslatedPoint &p, const Transl
   }
   const FilteredPoint a = double_.point(p), b = double_.point(q), c = double_.point(r), e = double_.point(s);
   if (const Sign sg = DoubleStage::in_circle(a, b, c, e); decided(sg)) return {sg, Stage::double_filter};
+  if (const Sign sg = DoubleStage::disk_in_circle(a, b, c, e); decided(sg)) return {sg, Stage::double_filter};
   const TranslatedPoint *points[4] = {&p, &q, &r, &s};
   const FilteredPoint *certified[4] = {&a, &b, &c, &e};
   if (const Sign sg = structural_.determinant(points, certified, 4); decided(sg)) return {sg, Stage::structural};

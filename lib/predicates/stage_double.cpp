@@ -39,6 +39,81 @@ FilteredPoint DoubleStage::compute_point(const TranslatedPoint &p) {
   return r;
 }
 
+namespace {
+
+// The point in the disk, z = (N1, N2) / (1 + N0), and the error of each
+// coordinate: N within e moves the quotient by at most 2e / (1 + N0)
+// (|N_i| <= N0), and its two roundings by 2u |z| < 2u. About the relative
+// error of N (e / N0), whatever N's size: near the circle the disk's
+// determinants keep what the hyperboloid's lose (stage_double.hpp).
+struct DiskPoint {
+  double x, y, error;
+};
+DiskPoint disk_point(const FilteredPoint &p) {
+  const double d = 1 + p.n[0];
+  return {p.n[1] / d, p.n[2] / d, 2.02 * p.error / d + 2.01 * kUnit};
+}
+
+}  // namespace
+
+// Both: the disk stage's value and its rounding bound (12u of the
+// permanent, for the exact determinant at the computed coordinates), plus
+// how far the exact determinant moves when the coordinates move by their
+// errors: each difference q - a by eta <= e_q + e_a, so each |d|^2 by
+// 2 (X + Y) eta, with X, Y bounds on the differences' x and y parts.
+Sign DoubleStage::disk_in_circle(const FilteredPoint &fa, const FilteredPoint &fb, const FilteredPoint &fc,
+                                 const FilteredPoint &fe) {
+  const DiskPoint a = disk_point(fa), b = disk_point(fb), c = disk_point(fc), e = disk_point(fe);
+  const double eta = (std::max(std::max(b.error, c.error), e.error) + a.error) * (1 + kUnit);
+  if (!(eta < 1e-3)) return Sign::undecided;  // also NaN
+  const double bdx = b.x - a.x, bdy = b.y - a.y, cdx = c.x - a.x, cdy = c.y - a.y;
+  const double edx = e.x - a.x, edy = e.y - a.y;
+  const double lb = bdx * bdx + bdy * bdy, lc = cdx * cdx + cdy * cdy, le = edx * edx + edy * edy;
+  const double ce1 = cdx * edy, ce2 = edx * cdy;
+  const double eb1 = edx * bdy, eb2 = bdx * edy;
+  const double bc1 = bdx * cdy, bc2 = cdx * bdy;
+  const double value = (lb * (ce1 - ce2) + lc * (eb1 - eb2)) + le * (bc1 - bc2);
+  const double permanent = (lb * (std::abs(ce1) + std::abs(ce2)) + lc * (std::abs(eb1) + std::abs(eb2))) +
+                           le * (std::abs(bc1) + std::abs(bc2));
+  // Rows (dx, dy, |d|^2): each of the 6 products of the expansion takes one
+  // entry of each column and moves by at most eta Y L + X eta L +
+  // X Y 2 (X + Y) eta.
+  const double X = std::max(std::max(std::abs(bdx), std::abs(cdx)), std::abs(edx)) * 1.01 + eta;
+  const double Y = std::max(std::max(std::abs(bdy), std::abs(cdy)), std::abs(edy)) * 1.01 + eta;
+  const double L = std::max(std::max(lb, lc), le) * 1.01 + 2 * (X + Y) * eta;
+  const double input = 6 * eta * (X + Y) * (L + 2 * X * Y);
+  return sign_of(-value, (12 * kUnit * permanent + input) * 1.02);
+}
+
+Sign DoubleStage::disk_orientation(const FilteredPoint &fa, const FilteredPoint &fb, const FilteredPoint &fc) {
+  const DiskPoint a = disk_point(fa), b = disk_point(fb), c = disk_point(fc);
+  const double ea = a.error, eta = (std::max(b.error, c.error) + ea) * (1 + kUnit);
+  if (!(eta < 1e-3)) return Sign::undecided;  // also NaN
+  const double ax = a.x, ay = a.y;
+  const double bdx = b.x - ax, bdy = b.y - ay, cdx = c.x - ax, cdy = c.y - ay;
+  const double wa = 1 - (ax * ax + ay * ay);
+  const double lb = bdx * bdx + bdy * bdy, lc = cdx * cdx + cdy * cdy;
+  const double p1 = bdx * cdy, p2 = cdx * bdy;
+  const double q1 = ax * cdy, q2 = ay * cdx;
+  const double r1 = ax * bdy, r2 = ay * bdx;
+  const double value = (wa * (p1 - p2) - lb * (q1 - q2)) + lc * (r1 - r2);
+  const double permanent = (std::abs(p1) + std::abs(p2)) + lb * (std::abs(q1) + std::abs(q2)) +
+                           lc * (std::abs(r1) + std::abs(r2));
+  // Rows (w_a, a_x, a_y), (|d|^2, dx, dy) for b and c. a moves by ea: w_a
+  // by at most 3 ea (|a| <= 1 + ea), |a_x| + |a_y| stays below A. The
+  // term w_a (bdx cdy - cdx bdy) moves by 3 ea 2 X Y + W 2 eta (X + Y); each
+  // of the two curvature terms |d|^2 (a_x dy - a_y dx) by
+  // 2 (X + Y) eta A (X + Y) + Lm (ea (X + Y) + 2 A eta).
+  const double X = std::max(std::abs(bdx), std::abs(cdx)) * 1.01 + eta;
+  const double Y = std::max(std::abs(bdy), std::abs(cdy)) * 1.01 + eta;
+  const double Lm = std::max(lb, lc) * 1.01 + 2 * (X + Y) * eta;
+  const double A = (std::abs(ax) + std::abs(ay)) * 1.01 + 2 * ea;
+  const double W = std::abs(wa) + 3.01 * kUnit + 3 * ea;
+  const double input = 6 * ea * X * Y + 2 * W * eta * (X + Y) +
+                       2 * (2 * (X + Y) * eta * A * (X + Y) + Lm * (ea * (X + Y) + 2 * A * eta));
+  return sign_of(value, (12 * kUnit * permanent + input) * 1.02);
+}
+
 Sign DoubleStage::large_circumdisk(const FilteredPoint &a, const FilteredPoint &b, const FilteredPoint &c) const {
   auto as_refined = [](const FilteredPoint &f) { return RefinedPoint<double>{{f.n[0], f.n[1], f.n[2]}, f.error}; };
   // k within 4u of the exact value.

@@ -52,6 +52,18 @@ class DoubleStage {
     const Det3 d = det3_filtered(db.d, db.error, dc.d, dc.error, de.d, de.error);
     return sign_of(-d.value, d.bound);
   }
+  // The same two predicates from the points' disk coordinates: the disk
+  // stage's determinants (stage_disk.hpp: the hyperbolic in-circle is the
+  // Euclidean one, the orientation a lifted 3x3 determinant) with the
+  // coordinates' errors added to their bounds. For points near the circle,
+  // at hyperboloid height N0 and hyperbolic distance d apart, the disk
+  // determinants lose N0 / d of their size to those errors where the
+  // hyperboloid's lose N0^3 / d^2 (their differences are N0 d long, their
+  // determinant invariant): near the corners of F_g at large genus the
+  // difference between deciding in double and in double-double.
+  static Sign disk_orientation(const FilteredPoint &a, const FilteredPoint &b, const FilteredPoint &c);
+  static Sign disk_in_circle(const FilteredPoint &a, const FilteredPoint &b, const FilteredPoint &c,
+                             const FilteredPoint &e);
   Sign beyond_side(const FilteredPoint &a, int side) const {
     const auto &n = surface_.side_normal(side);
     // <N, n> with the Minkowski signs folded into n (n = (1 - Q0, Q1, Q2)).

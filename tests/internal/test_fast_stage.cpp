@@ -224,9 +224,11 @@ START_TEST(corner_clusters_agree_with_reference) {
   const auto s = kernel.statistics();
   std::printf("corner clusters g=%d: %d calls: filter %lu, double-double %lu, 133-bit %lu, exact %lu (%.1f s)\n", g,
               calls, s.filtered(), s[Stage::double_double], s[Stage::mpfr], s[Stage::exact], seconds_since(t0));
-  // The double filter fails on most of these; the double-double stage takes
-  // nearly all of those.
-  ck_assert_uint_gt(s.past_filters(), calls / 2);
+  // The double stage fails on a third of these and more: every
+  // large_circumdisk (the hyperboloid's determinants lose too much here, and
+  // it has no disk form), a few in-circle tests and orientations; the
+  // double-double stage takes nearly all of those.
+  ck_assert_uint_gt(s.past_filters(), calls / 3);
   ck_assert_uint_gt(s[Stage::double_double], s.past_filters() * 9 / 10);
 }
 END_TEST
