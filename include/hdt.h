@@ -501,6 +501,29 @@ HDT_API hdt_status hdt_voronoi_edges(const hdt_triangulation *t, double *xy, siz
 HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, double *xy, size_t capacity,
                                     size_t *count) HDT_NOEXCEPT;
 
+/* Every live vertex's star in one call (symbol version HDT_0.5), in rows
+   by vertex id: the star of vertex v is entries offsets[v] to
+   offsets[v + 1] - 1 of faces, corners and translations, exactly what
+   hdt_vertex_star(v) gives (same first face, same order, same ids).
+   offsets has hdt_vertex_id_bound(t) + 1 entries (offsets[0] = 0, the last
+   3F); indexed by id so that v's row needs no search, a removed id having
+   an empty row. Every face corner is in its vertex's row once: *count =
+   3F entries. Capacity in entries; each output may be NULL. About 1.7
+   hdt_faces in time, where hdt_vertex_star for every vertex takes 7 to 9
+   (docs/dual.md). The handle keeps the call's scratch (about 8 bytes an
+   entry) until hdt_destroy. */
+HDT_API hdt_status hdt_vertex_stars(const hdt_triangulation *t, size_t *offsets, uint32_t *faces, uint8_t *corners,
+                                    int32_t *translations, size_t capacity, size_t *count) HDT_NOEXCEPT;
+
+/* Every live vertex's Voronoi cell in one call (symbol version HDT_0.5),
+   in the rows of hdt_vertex_stars (offsets the same, hdt_vertex_id_bound(t)
+   + 1 entries, may be NULL): xy[2k], xy[2k + 1] for k from offsets[v] to
+   offsets[v + 1] - 1 is the cell of v, the same bits as hdt_voronoi_cell(v).
+   *count = 3F points; xy must not be NULL when capacity > 0. Capacity in
+   points. Keeps the circumcentres on the handle as hdt_voronoi_cell does. */
+HDT_API hdt_status hdt_voronoi_cells(const hdt_triangulation *t, size_t *offsets, double *xy, size_t capacity,
+                                     size_t *count) HDT_NOEXCEPT;
+
 /* ---- Refinement, epsilon-nets and quality (symbol version HDT_0.4) ----
    Meshes of controlled size and shape (docs/refinement.md, with the proof
    that the refinement terminates and how many points it can add).

@@ -15,6 +15,7 @@
 #include "capi/handle.hpp"
 #include "hdt.h"
 #include "triangulation/adjacency.hpp"
+#include "triangulation/all_stars.hpp"
 #include "triangulation/constructions.hpp"
 
 using hdt::capi::ApiError;
@@ -218,6 +219,43 @@ HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, doub
       cell.push_back(s.translation == 0 ? c : tri.table().moebius(s.translation).apply(c));
     }
     for (std::size_t k = 0; k < cell.size(); ++k) xy[2 * k] = cell[k].re, xy[2 * k + 1] = cell[k].im;
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_vertex_stars(const hdt_triangulation *t, size_t *offsets, uint32_t *faces, uint8_t *corners,
+                                    int32_t *translations, size_t capacity, size_t *count) HDT_NOEXCEPT {
+  return guarded("hdt_vertex_stars", [&] {
+    const Triangulation &tri = of(t);
+    if (!list_fits(3 * tri.faces().size(), capacity, count, "star entries")) return HDT_OK;
+    // What may fail (memory, translation ids) into the handle's scratch
+    // first, then the writing.
+    hdt::triangulation::AllStars &rows = t->rows;
+    rows.build(tri, false);
+    rows.write(tri, offsets, faces, corners, translations);
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_voronoi_cells(const hdt_triangulation *t, size_t *offsets, double *xy, size_t capacity,
+                                     size_t *count) HDT_NOEXCEPT {
+  return guarded("hdt_voronoi_cells", [&] {
+    const Triangulation &tri = of(t);
+    if (!list_fits(3 * tri.faces().size(), capacity, count, "cell corners")) return HDT_OK;
+    if (!xy) throw ApiError(HDT_EINVAL, "xy must not be NULL when capacity > 0");
+    // Each face's centre once, in face order, through the handle's centre
+    // cache as hdt_voronoi_cell (the same bits; kept for the next call and
+    // the other Voronoi outputs), into the handle's scratch; then the rows,
+    // which write xy only once nothing can fail.
+    hdt::triangulation::warm_corner_matrices(tri, false);
+    hdt::triangulation::CentreCache &cache = t->centres;
+    cache.reserve(tri);
+    std::vector<Point> &centre = t->cell;
+    centre.resize(tri.faces().size());
+    hdt::triangulation::face_centres(tri, centre.data(), &cache);
+    hdt::triangulation::AllStars &rows = t->rows;
+    rows.build(tri, true, centre.data(), xy);
+    rows.write_cells(tri, offsets, xy);
     return HDT_OK;
   });
 }

@@ -8,6 +8,7 @@
 #include "capi/guard.hpp"
 #include "hdt.h"
 #include "triangulation/adjacency.hpp"
+#include "triangulation/all_stars.hpp"
 #include "triangulation/constructions.hpp"
 #include "triangulation/progress.hpp"
 #include "triangulation/triangulation.hpp"
@@ -27,6 +28,9 @@ struct hdt_triangulation {
   mutable hdt::triangulation::CentreCache centres;
   mutable std::vector<hdt::triangulation::StarEntry> star;
   mutable std::vector<hdt::triangulation::Point> cell;
+  // hdt_vertex_stars' and hdt_voronoi_cells' rows (8 bytes an entry, 24 a
+  // face), kept: a later call writes into pages already mapped.
+  mutable hdt::triangulation::AllStars rows;
 };
 
 namespace hdt::capi {

@@ -1,0 +1,249 @@
+// Every star at once: count the corners per vertex, scatter each corner
+// into its vertex's row (with the next face about the vertex, read off the
+// corner's own face), then order each row by following those links from
+// the vertex's stored face, as vertex_star walks.
+#include "triangulation/all_stars.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace hdt::triangulation {
+
+namespace {
+
+// The ranks of up to 16 values among a row's faces (how many faces lie
+// below each), the row's faces given in fc (kNone past its end): out[i] for
+// x[i]. All at once, a vector comparison of every x with each face in
+// turn, where the compiler has vector extensions (a fifth of the
+// instructions of one rank at a time), else by loops. Compared as signed
+// after flipping the top bit, which SSE2 compares directly.
+#if defined(__GNUC__)
+template <int L>  // 4 L values
+inline void ranks_of(const uint32_t fc[16], std::size_t d, const uint32_t x[16], int32_t out[16]) {
+  typedef uint32_t u4 __attribute__((vector_size(16)));
+  typedef int32_t v4 __attribute__((vector_size(16)));
+  const u4 flip = {0x80000000u, 0x80000000u, 0x80000000u, 0x80000000u};
+  v4 xv[L], acc[L] = {};
+  for (int q = 0; q < L; ++q) {
+    u4 w;
+    std::memcpy(&w, x + 4 * q, sizeof w);
+    xv[q] = v4(w ^ flip);
+  }
+  for (std::size_t j = 0; j < d; ++j) {
+    const int32_t y = int32_t(fc[j] ^ 0x80000000u);
+    const v4 yv = {y, y, y, y};
+    for (int q = 0; q < L; ++q) acc[q] -= yv < xv[q];  // the comparison gives -1 where the face is below
+  }
+  std::memcpy(out, acc, sizeof acc);
+}
+#endif
+
+inline void ranks(const uint32_t fc[16], std::size_t d, const uint32_t x[16], int32_t out[16]) {
+#if defined(__GNUC__)
+  // Eight values (nearly every row) need half the comparisons.
+  if (d < 8) ranks_of<2>(fc, d, x, out);
+  else ranks_of<4>(fc, d, x, out);
+#else
+  for (int i = 0; i < 16; ++i) {
+    int32_t r = 0;
+    for (std::size_t j = 0; j < d; ++j) r += fc[j] < x[i];
+    out[i] = r;
+  }
+#endif
+}
+
+}  // namespace
+
+template <class U>
+void AllStars::build_rows(const Triangulation &tri, bool matrices, const Point *centre, double *xy, Rows<U> &rows) {
+  constexpr U top = U(1) << (std::numeric_limits<U>::digits - 1);
+  const std::vector<Face> &F = tri.faces();
+  const std::vector<Vertex> &V = tri.vertices();
+  group::TranslationTable &T = tri.table();
+  const std::size_t n = V.size();
+  // Counts at v + 2: after the prefix sums start[v + 1] is where v's row
+  // begins, and the scatter moves it to where it ends, which is start[v + 1]
+  // as it should be.
+  rows.start.assign(n + 2, 0);
+  moved_.clear();
+  for (std::size_t f = 0; f < F.size(); ++f) {
+    const Face &A = F[f];
+    for (int c = 0; c < 3; ++c) {
+      if (A.v[c] >= n) throw std::logic_error("all stars: face " + std::to_string(f) + " names no vertex");
+      ++rows.start[A.v[c] + 2];
+    }
+    if ((A.t[0] | A.t[1] | A.t[2]) == 0) continue;
+    // A translated corner (few: the faces across F_g's sides): vertex_star's
+    // translation, computed now, where it may add ids.
+    for (int c = 0; c < 3; ++c) {
+      if (A.t[c] == 0) continue;
+      const TranslationId home = V[A.v[c]].home;
+      const TranslationId t = T.inverse(T.compose(A.t[c], T.inverse(home)));
+      moved_.push_back({3 * f + c, t});
+      if (matrices && t != 0) T.moebius(t);
+    }
+  }
+  if (matrices)
+    for (const Vertex &u : V)
+      if (u.alive() && u.home != 0) T.moebius(u.home);
+  std::size_t largest = 0;
+  for (std::size_t v = 2; v < n + 2; ++v) {
+    largest = std::max<std::size_t>(largest, rows.start[v]);
+    rows.start[v] += rows.start[v - 1];
+  }
+  if (xy) row_.resize(largest);
+  // Kept from call to call (its pages stay mapped); grown when too small.
+  if (rows.capacity < entries_) {
+    rows.entry.reset(new typename Rows<U>::Entry[entries_]);
+    rows.capacity = entries_;
+  }
+  // Nothing fails from here on. The scatter; for the cells, each face's
+  // centre goes to its corners' places too, read here in face order (the
+  // rows' order in star order would read them scattered, a cache miss
+  // each).
+  auto *entry = rows.entry.get();
+  std::size_t m = 0;
+  uint64_t moved_k = moved_.empty() ? UINT64_MAX : moved_[0].first;  // the next translated corner's
+  for (std::size_t f = 0; f < F.size(); ++f) {
+    const Face &A = F[f];
+    for (int c = 0; c < 3; ++c) {
+      const U k = U(3 * f + c);
+      U flag = 0;
+      if (k == moved_k) flag = top, moved_k = ++m < moved_.size() ? moved_[m].first : UINT64_MAX;
+      const U at = rows.start[A.v[c] + 1]++;
+      entry[at] = {U(k | flag), U(A.n[c == 2 ? 0 : c + 1])};
+      if (xy) xy[2 * std::size_t(at)] = centre[f].re, xy[2 * std::size_t(at) + 1] = centre[f].im;
+    }
+  }
+  rows.start.pop_back();
+}
+
+void AllStars::build(const Triangulation &tri, bool matrices, const Point *centre, double *xy) {
+  entries_ = 3 * tri.faces().size();
+  // Corner indices and the flag in 32 bits while they fit.
+  wide_ = entries_ >= (std::size_t(1) << 31);
+  if (wide_) {
+    small_ = {};
+    build_rows(tri, matrices, centre, xy, large_);
+  } else {
+    large_ = {};
+    build_rows(tri, matrices, centre, xy, small_);
+  }
+}
+
+template <class U, class Begin, class Emit>
+void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *offsets, Begin &&begin,
+                    Emit &&emit) const {
+  constexpr U top = U(1) << (std::numeric_limits<U>::digits - 1);
+  const std::vector<Vertex> &V = tri.vertices();
+  const auto *entry = rows.entry.get();
+  const std::size_t n = V.size();
+  const auto broken = [](std::size_t v) {
+    return std::logic_error("all stars: the star of vertex " + std::to_string(v) + " is broken");
+  };
+  for (std::size_t v = 0; v < n; ++v) {
+    const U b = rows.start[v], e = rows.start[v + 1];
+    if (offsets) offsets[v] = b;
+    if (!V[v].alive()) {
+      if (b != e) throw broken(v);
+      continue;
+    }
+    const TranslationId home = V[v].home;
+    const std::size_t d = e - b;
+    const auto *row = entry + b;
+    const auto face = [&](std::size_t i) { return uint32_t((row[i].k & ~top) / 3); };
+    const auto put = [&](std::size_t j, std::size_t i) {
+      U k = row[i].k;
+      TranslationId t = home;
+      if (k & top) {
+        k &= ~top;
+        const auto it = std::lower_bound(moved_.begin(), moved_.end(), std::pair<uint64_t, TranslationId>{k, 0},
+                                         [](const auto &x, const auto &y) { return x.first < y.first; });
+        t = it->second;
+      }
+      emit(std::size_t(b + j), i, uint32_t(k / 3), int(k % 3), t);
+    };
+    begin(std::size_t(b), d);
+    // In star order: from the vertex's stored face, the entry of the face
+    // the previous one leads to. A row lists its faces in increasing order
+    // (the scatter ran in face order), so in a small row (nearly all) the
+    // entry of face x is at the rank of x, the count of the row's faces
+    // below it: a sum of comparisons, without a branch, computed for every
+    // entry before the walk, which is then a chain of byte loads. A used
+    // mask catches an entry met twice.
+    const uint32_t first = V[v].face;
+    uint32_t f = first;
+    if (d > 0 && d < 16) {
+      // The successors' ranks in lanes 0..d-1, the stored face's in lane d.
+      uint32_t fc[16], x[16];
+      int32_t succ[16];
+      for (std::size_t i = 0; i < 16; ++i) fc[i] = kNone, x[i] = kNone;
+      for (std::size_t i = 0; i < d; ++i) fc[i] = face(i), x[i] = uint32_t(row[i].next);
+      x[d] = first;
+      ranks(fc, d, x, succ);
+      // Checked at the end: each face reached is the one sought (a face
+      // not in the row gets the rank of another), and every entry used
+      // once.
+      int32_t i = succ[d];
+      unsigned used = 0;
+      uint32_t wrong = 0;
+      for (std::size_t j = 0; j < d; ++j) {
+        wrong |= fc[i] ^ f;
+        used |= 1u << i;
+        put(j, i);
+        f = x[i];
+        i = succ[i];
+      }
+      if (wrong != 0 || used != (1u << d) - 1 || f != first) throw broken(v);
+      continue;
+    } else {
+      for (std::size_t j = 0; j < d; ++j) {
+        std::size_t i = 0;
+        while (i < d && face(i) != f) ++i;
+        if (i == d) throw broken(v);
+        put(j, i);
+        f = uint32_t(row[i].next);
+      }
+    }
+    if (d == 0 || f != first) throw broken(v);
+  }
+  if (offsets) offsets[n] = rows.start[n];
+}
+
+template <class Begin, class Emit>
+void AllStars::dispatch(const Triangulation &tri, std::size_t *offsets, Begin &&begin, Emit &&emit) const {
+  if (wide_) each(tri, large_, offsets, begin, emit);
+  else each(tri, small_, offsets, begin, emit);
+}
+
+void AllStars::write(const Triangulation &tri, std::size_t *offsets, uint32_t *faces, uint8_t *corners,
+                     int32_t *translations) const {
+  const auto none = [](std::size_t, std::size_t) {};
+  if (!faces && !corners && !translations) {
+    dispatch(tri, offsets, none, [](std::size_t, std::size_t, uint32_t, int, TranslationId) {});
+    return;
+  }
+  dispatch(tri, offsets, none, [&](std::size_t j, std::size_t, uint32_t f, int c, TranslationId t) {
+    if (faces) faces[j] = f;
+    if (corners) corners[j] = uint8_t(c);
+    if (translations) translations[j] = t;
+  });
+}
+
+void AllStars::write_cells(const Triangulation &tri, std::size_t *offsets, double *xy) const {
+  group::TranslationTable &T = tri.table();
+  // A row's centres (in face order, from build) aside, then back in star
+  // order, each mapped as hdt_voronoi_cell maps it (the same bits).
+  Point *row = row_.data();
+  dispatch(
+      tri, offsets, [&](std::size_t b, std::size_t d) { std::memcpy(row, xy + 2 * b, d * sizeof *row); },
+      [&](std::size_t j, std::size_t i, uint32_t, int, TranslationId t) {
+        const Point p = t == 0 ? row[i] : T.moebius(t).apply(row[i]);
+        xy[2 * j] = p.re, xy[2 * j + 1] = p.im;
+      });
+}
+
+}  // namespace hdt::triangulation
