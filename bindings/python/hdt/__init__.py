@@ -43,7 +43,8 @@ from .group import (
 )
 from .library import abi_version, version
 from .surface import point_representative, polygon_side_midpoint, polygon_vertex, systole
-from .triangulation import Edges, Faces, Location, Neighbours, Quality, Refined, Star, Triangulation, Vertices, Voronoi
+from .triangulation import (Cells, Edges, Faces, Location, Neighbours, Quality, Refined, Star, Stars, Triangulation,
+                            Vertices, Voronoi)
 
 #: The version of these bindings (the library's is version()).
 __version__ = "0.5.0"
@@ -51,6 +52,7 @@ __version__ = "0.5.0"
 __all__ = [
     "AlreadyExists",
     "BufferTooSmall",
+    "Cells",
     "Edges",
     "Error",
     "Faces",
@@ -65,6 +67,7 @@ __all__ = [
     "Quality",
     "Refined",
     "Star",
+    "Stars",
     "Status",
     "Triangulation",
     "Vertices",

@@ -21,7 +21,8 @@ try:
 except ImportError:  # pragma: no cover - depends on the installation
     numpy = None
 
-_NUMPY_TYPES = {ctypes.c_double: "float64", ctypes.c_uint32: "uint32", ctypes.c_int32: "int32", ctypes.c_uint8: "uint8"}
+_NUMPY_TYPES = {ctypes.c_double: "float64", ctypes.c_uint32: "uint32", ctypes.c_int32: "int32", ctypes.c_uint8: "uint8",
+                ctypes.c_size_t: "uintp"}
 
 
 def point_buffer(points):

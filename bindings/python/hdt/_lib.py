@@ -111,6 +111,8 @@ PROTOTYPES = {
     "hdt_voronoi_vertices": (_status, (_handle, _double_p, _double_p, _size, _size_p)),
     "hdt_voronoi_edges": (_status, (_handle, _double_p, _size, _size_p)),
     "hdt_voronoi_cell": (_status, (_handle, _uint32, _double_p, _size, _size_p)),
+    "hdt_vertex_stars": (_status, (_handle, _size_p, _uint32_p, _uint8_p, _int32_p, _size, _size_p)),
+    "hdt_voronoi_cells": (_status, (_handle, _size_p, _double_p, _size, _size_p)),
     "hdt_refine": (_status, (_handle, _double, _double, _size, _size_p, _size_p)),
     "hdt_epsilon_net": (_status, (_handle, _double, _size, _size_p, _size_p)),
     "hdt_quality": (_status, (_handle, _double_p, _double_p, _double_p, _double_p)),

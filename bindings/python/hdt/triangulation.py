@@ -30,7 +30,8 @@ that format and give an independent triangulation.
 
 Adjacency, edges and the Voronoi diagram: :meth:`neighbours`, :meth:`star`,
 :meth:`edges`, :meth:`face_points`, :meth:`voronoi` and :meth:`voronoi_cell`
-(the C functions of symbol version HDT_0.4; docs/dual.md of the source tree).
+(the C functions of symbol version HDT_0.4), every star and cell at once:
+:meth:`stars`, :meth:`voronoi_cells` (HDT_0.5); docs/dual.md of the source tree.
 
 Refinement: :meth:`refine`, :meth:`epsilon_net` and :meth:`quality`
 (docs/refinement.md of the source tree).
@@ -94,6 +95,19 @@ Star = collections.namedtuple("Star", "faces corners translations")
 Star.__doc__ = """The faces around a vertex, counterclockwise: faces (indices
 into faces()), corners (the vertex's corner 0..2 in each) and translations
 (the id h such that h(canonical copy) has the vertex at its representative)."""
+
+#: :meth:`Triangulation.stars`: every vertex's star, in rows by vertex id.
+Stars = collections.namedtuple("Stars", "offsets faces corners translations")
+Stars.__doc__ = """Every live vertex's star in one array per field: the star of
+vertex v is entries offsets[v] to offsets[v + 1] - 1 of faces, corners and
+translations (each of length 3F), the same as :meth:`Triangulation.star`
+gives; offsets has vertex_id_bound + 1 entries, a removed id an empty row."""
+
+#: :meth:`Triangulation.voronoi_cells`: every vertex's Voronoi cell, in rows by vertex id.
+Cells = collections.namedtuple("Cells", "offsets points")
+Cells.__doc__ = """Every live vertex's Voronoi cell: points[offsets[v]:offsets[v + 1]]
+(float64, shape (3F, 2) in all) is the cell of v, the same as
+:meth:`Triangulation.voronoi_cell` gives; offsets as in :class:`Stars`."""
 
 #: :meth:`Triangulation.edges`: every edge once.
 Edges = collections.namedtuple("Edges", "vertices translations faces lengths")
@@ -585,6 +599,21 @@ class Triangulation:
                 [(ctypes.c_uint32, None), (ctypes.c_uint8, None), (ctypes.c_int32, None)], count.value)
         return Star(_arrays.result(faces), _arrays.result(corners), _arrays.result(translations))
 
+    def stars(self):
+        """Every live vertex's star in one call, as a :class:`Stars` named
+        tuple (offsets, faces, corners, translations): the star of vertex v
+        is rows offsets[v] to offsets[v + 1] - 1, what :meth:`star` gives for
+        v (lists without NumPy). Much faster than :meth:`star` per vertex."""
+        with self._lock:
+            handle = self._live("stars")
+            pointer, offsets = _arrays.output(ctypes.c_size_t, lib.hdt_vertex_id_bound(handle) + 1)
+            faces, corners, translations = self._list(
+                "stars", lambda *a: lib.hdt_vertex_stars(handle, pointer, *a),
+                [(ctypes.c_uint32, None), (ctypes.c_uint8, None), (ctypes.c_int32, None)],
+                3 * lib.hdt_face_count(handle))
+        return Stars(_arrays.result(offsets), _arrays.result(faces), _arrays.result(corners),
+                     _arrays.result(translations))
+
     @property
     def edge_count(self):
         """The number of edges, E = 3 F / 2."""
@@ -648,6 +677,18 @@ class Triangulation:
             (xy,) = self._list("voronoi_cell", lambda *a: lib.hdt_voronoi_cell(handle, vertex, *a),
                                [(ctypes.c_double, 2)], count.value)
         return _arrays.result(xy, 2)
+
+    def voronoi_cells(self):
+        """Every live vertex's Voronoi cell in one call, as a :class:`Cells`
+        named tuple (offsets, points): points[offsets[v]:offsets[v + 1]] is
+        what :meth:`voronoi_cell` gives for v, the same bits (a float64 array
+        of shape (3F, 2); lists without NumPy)."""
+        with self._lock:
+            handle = self._live("voronoi_cells")
+            pointer, offsets = _arrays.output(ctypes.c_size_t, lib.hdt_vertex_id_bound(handle) + 1)
+            (xy,) = self._list("voronoi_cells", lambda *a: lib.hdt_voronoi_cells(handle, pointer, *a),
+                               [(ctypes.c_double, 2)], 3 * lib.hdt_face_count(handle))
+        return Cells(_arrays.result(offsets), _arrays.result(xy, 2))
 
     # ---- queries ----
 

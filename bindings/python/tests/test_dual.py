@@ -119,6 +119,38 @@ def test_neighbours_and_stars(tri):
     assert total == 3 * tri.face_count
 
 
+def test_stars_and_cells_in_one_call(tri, arrays):
+    """Every row of stars() and voronoi_cells() is star(v) and
+    voronoi_cell(v), also after removals (empty rows at the gaps)."""
+    for round in range(2):
+        stars, cells = tri.stars(), tri.voronoi_cells()
+        F, bound = tri.face_count, tri.vertex_id_bound
+        if arrays == "numpy":
+            assert stars.offsets.shape == (bound + 1,) and stars.faces.shape == (3 * F,)
+            assert stars.corners.dtype.name == "uint8" and stars.translations.dtype.name == "int32"
+            assert cells.points.shape == (3 * F, 2) and cells.points.dtype.name == "float64"
+        offsets = rows(stars.offsets)
+        assert rows(cells.offsets) == offsets and len(offsets) == bound + 1
+        assert offsets[0] == 0 and offsets[-1] == 3 * F
+        faces, corners, translations = rows(stars.faces), rows(stars.corners), rows(stars.translations)
+        points = [tuple(p) for p in rows(cells.points)]
+        live = set(rows(tri.vertices().ids))
+        for v in range(bound):
+            b, e = offsets[v], offsets[v + 1]
+            if v not in live:
+                assert b == e
+                continue
+            star = tri.star(v)
+            assert faces[b:e] == rows(star.faces) and corners[b:e] == rows(star.corners)
+            assert translations[b:e] == rows(star.translations)
+            assert points[b:e] == [tuple(p) for p in rows(tri.voronoi_cell(v))]
+        for v in sorted(live)[round::4]:
+            try:
+                tri.remove(v)
+            except hdt.Error:
+                pass  # a vertex the guarantee needs
+
+
 def test_errors(tri):
     bound = tri.vertex_id_bound
     with pytest.raises(hdt.InvalidArgument):
