@@ -1,7 +1,8 @@
 /* The cost of the adjacency, edge, corner and Voronoi outputs (HDT_0.4)
  * next to hdt_faces on the same triangulation: N points uniform for area in
- * F_g, dummies removed; each output fetched whole (the stars and cells one
- * vertex at a time, every vertex): the first call, then the best of
+ * F_g, dummies removed; each output fetched whole (the stars and cells in
+ * one call, hdt_vertex_stars and hdt_voronoi_cells, and one vertex at a
+ * time, every vertex): the first call, then the best of
  * `calls - 1` more. Then the cost of saving and loading that triangulation
  * next to hdt_insert_many of its points.
  *
@@ -9,7 +10,7 @@
  *
  * Prints one line per output: milliseconds and the ratio to hdt_faces
  * (vertex ids and translations), first call and best later call; then
- * hdt_voronoi_vertices and hdt_voronoi_edges again, now that
+ * hdt_voronoi_vertices, hdt_voronoi_edges and hdt_voronoi_cells again, now that
  * hdt_voronoi_cell has filled the handle's centre cache (not with
  * --calls 1); then
  * hdt_insert_many, hdt_save and hdt_load (first and best) in ms. With
@@ -34,7 +35,8 @@ static void check(hdt_status s, const char *what) {
 }
 
 typedef struct buffers {
-  size_t V, F, E;
+  size_t V, F, E, bound;
+  size_t *offsets;
   uint32_t *ids, *u32a, *u32b;
   int32_t *i32a;
   uint8_t *u8;
@@ -65,6 +67,12 @@ static void cells(void) {
     check(hdt_voronoi_cell(T, B.ids[i], B.d1, B.F, &n), "hdt_voronoi_cell");
   }
 }
+
+static void all_stars(void) {
+  size_t n;
+  check(hdt_vertex_stars(T, B.offsets, B.u32a, B.u8, B.i32a, 3 * B.F, &n), "hdt_vertex_stars");
+}
+static void all_cells(void) { size_t n; check(hdt_voronoi_cells(T, B.offsets, B.d1, 3 * B.F, &n), "hdt_voronoi_cells"); }
 
 static int calls = 4;
 
@@ -107,17 +115,19 @@ int main(int argc, char **argv) {
   const double insert_ms = bench_now_ms() - insert_t0;
   check(hdt_remove_dummies(T, NULL), "hdt_remove_dummies");
   free(xy);
-  B.V = hdt_vertex_count(T), B.F = hdt_face_count(T), B.E = hdt_edge_count(T);
+  B.V = hdt_vertex_count(T), B.F = hdt_face_count(T), B.E = hdt_edge_count(T), B.bound = hdt_vertex_id_bound(T);
+  B.offsets = malloc((B.bound + 1) * sizeof *B.offsets);
   B.ids = malloc(B.V * sizeof *B.ids);
   B.u32a = malloc(3 * B.F * sizeof *B.u32a);
   B.u32b = malloc(2 * B.E * sizeof *B.u32b);
   B.i32a = malloc(3 * B.F * sizeof *B.i32a);
-  B.u8 = malloc(B.F);
+  B.u8 = malloc(3 * B.F);
   B.d1 = malloc(6 * B.F * sizeof *B.d1);
   B.d2 = malloc(B.F * sizeof *B.d2);
   /* Touched once: the first call must not pay the buffers' page faults. */
   memset(B.u32a, 0, 3 * B.F * sizeof *B.u32a), memset(B.u32b, 0, 2 * B.E * sizeof *B.u32b);
-  memset(B.i32a, 0, 3 * B.F * sizeof *B.i32a), memset(B.u8, 0, B.F);
+  memset(B.i32a, 0, 3 * B.F * sizeof *B.i32a), memset(B.u8, 0, 3 * B.F);
+  memset(B.offsets, 0, (B.bound + 1) * sizeof *B.offsets);
   memset(B.d1, 0, 6 * B.F * sizeof *B.d1), memset(B.d2, 0, B.F * sizeof *B.d2);
   size_t count;
   check(hdt_vertices(T, B.ids, NULL, NULL, B.V, &count), "hdt_vertices");
@@ -132,6 +142,8 @@ int main(int argc, char **argv) {
               {"hdt_face_points", face_points},
               {"hdt_voronoi_vertices", voronoi_vertices},
               {"hdt_voronoi_edges", voronoi_edges},
+              {"hdt_vertex_stars", all_stars},
+              {"hdt_voronoi_cells", all_cells},
               {"hdt_vertex_star, every vertex", stars},
               {"hdt_voronoi_cell, every vertex", cells}};
   double base_first = 0, base_best = 0;
@@ -148,7 +160,8 @@ int main(int argc, char **argv) {
   const struct {
     const char *name;
     void (*f)(void);
-  } cached[] = {{"hdt_voronoi_vertices, cache full", voronoi_vertices}, {"hdt_voronoi_edges, cache full", voronoi_edges}};
+  } cached[] = {{"hdt_voronoi_vertices, cache full", voronoi_vertices}, {"hdt_voronoi_edges, cache full", voronoi_edges},
+              {"hdt_voronoi_cells, cache full", all_cells}};
   for (size_t k = 0; calls > 1 && k < sizeof cached / sizeof cached[0]; ++k) {
     double first, best;
     time_calls(cached[k].f, &first, &best);
@@ -166,7 +179,7 @@ int main(int argc, char **argv) {
          insert_ms, save_ms, saved_size, load_first, load_first / insert_ms, load_best, load_best / insert_ms);
   hdt_destroy(loaded);
   free(saved);
-  free(B.ids), free(B.u32a), free(B.u32b), free(B.i32a), free(B.u8), free(B.d1), free(B.d2);
+  free(B.ids), free(B.offsets), free(B.u32a), free(B.u32b), free(B.i32a), free(B.u8), free(B.d1), free(B.d2);
   hdt_destroy(T);
   return 0;
 }
