@@ -245,8 +245,8 @@ HDT_API hdt_status hdt_voronoi_cells(const hdt_triangulation *t, size_t *offsets
     if (!xy) throw ApiError(HDT_EINVAL, "xy must not be NULL when capacity > 0");
     // Each face's centre once, in face order, through the handle's centre
     // cache as hdt_voronoi_cell (the same bits; kept for the next call and
-    // the other Voronoi outputs), into the handle's scratch; then the rows,
-    // which write xy only once nothing can fail.
+    // the other Voronoi outputs), into the handle's scratch; then the rows;
+    // the writing last, once nothing can fail.
     hdt::triangulation::warm_corner_matrices(tri, false);
     hdt::triangulation::CentreCache &cache = t->centres;
     cache.reserve(tri);
@@ -254,8 +254,8 @@ HDT_API hdt_status hdt_voronoi_cells(const hdt_triangulation *t, size_t *offsets
     centre.resize(tri.faces().size());
     hdt::triangulation::face_centres(tri, centre.data(), &cache);
     hdt::triangulation::AllStars &rows = t->rows;
-    rows.build(tri, true, centre.data(), xy);
-    rows.write_cells(tri, offsets, xy);
+    rows.build(tri, true);
+    rows.write_cells(tri, offsets, xy, centre.data());
     return HDT_OK;
   });
 }

@@ -14,10 +14,10 @@ namespace hdt::triangulation {
 
 namespace {
 
-// The ranks of up to 16 values among a row's faces (how many faces lie
-// below each), the row's faces given in fc (kNone past its end): out[i] for
-// x[i]. All at once, a vector comparison of every x with each face in
-// turn, where the compiler has vector extensions (a fifth of the
+// The ranks of values among a row's d faces fc[0..d) (how many faces lie
+// below each): out[i] for x[i], i up to 8 when d < 8, else up to 16 (x
+// set there). All at once, a vector comparison of every x with each face
+// in turn, where the compiler has vector extensions (a fifth of the
 // instructions of one rank at a time), else by loops. Compared as signed
 // after flipping the top bit, which SSE2 compares directly.
 #if defined(__GNUC__)
@@ -47,7 +47,7 @@ inline void ranks(const uint32_t fc[16], std::size_t d, const uint32_t x[16], in
   if (d < 8) ranks_of<2>(fc, d, x, out);
   else ranks_of<4>(fc, d, x, out);
 #else
-  for (int i = 0; i < 16; ++i) {
+  for (std::size_t i = 0; i <= d; ++i) {  // the lanes the caller reads
     int32_t r = 0;
     for (std::size_t j = 0; j < d; ++j) r += fc[j] < x[i];
     out[i] = r;
@@ -58,7 +58,7 @@ inline void ranks(const uint32_t fc[16], std::size_t d, const uint32_t x[16], in
 }  // namespace
 
 template <class U>
-void AllStars::build_rows(const Triangulation &tri, bool matrices, const Point *centre, double *xy, Rows<U> &rows) {
+void AllStars::build_rows(const Triangulation &tri, bool matrices, Rows<U> &rows) {
   constexpr U top = U(1) << (std::numeric_limits<U>::digits - 1);
   const std::vector<Face> &F = tri.faces();
   const std::vector<Vertex> &V = tri.vertices();
@@ -89,21 +89,13 @@ void AllStars::build_rows(const Triangulation &tri, bool matrices, const Point *
   if (matrices)
     for (const Vertex &u : V)
       if (u.alive() && u.home != 0) T.moebius(u.home);
-  std::size_t largest = 0;
-  for (std::size_t v = 2; v < n + 2; ++v) {
-    largest = std::max<std::size_t>(largest, rows.start[v]);
-    rows.start[v] += rows.start[v - 1];
-  }
-  if (xy) row_.resize(largest);
+  for (std::size_t v = 2; v < n + 2; ++v) rows.start[v] += rows.start[v - 1];
   // Kept from call to call (its pages stay mapped); grown when too small.
   if (rows.capacity < entries_) {
     rows.entry.reset(new typename Rows<U>::Entry[entries_]);
     rows.capacity = entries_;
   }
-  // Nothing fails from here on. The scatter; for the cells, each face's
-  // centre goes to its corners' places too, read here in face order (the
-  // rows' order in star order would read them scattered, a cache miss
-  // each).
+  // The scatter, in face order.
   auto *entry = rows.entry.get();
   std::size_t m = 0;
   uint64_t moved_k = moved_.empty() ? UINT64_MAX : moved_[0].first;  // the next translated corner's
@@ -113,30 +105,27 @@ void AllStars::build_rows(const Triangulation &tri, bool matrices, const Point *
       const U k = U(3 * f + c);
       U flag = 0;
       if (k == moved_k) flag = top, moved_k = ++m < moved_.size() ? moved_[m].first : UINT64_MAX;
-      const U at = rows.start[A.v[c] + 1]++;
-      entry[at] = {U(k | flag), U(A.n[c == 2 ? 0 : c + 1])};
-      if (xy) xy[2 * std::size_t(at)] = centre[f].re, xy[2 * std::size_t(at) + 1] = centre[f].im;
+      entry[rows.start[A.v[c] + 1]++] = {U(k | flag), U(A.n[c == 2 ? 0 : c + 1])};
     }
   }
   rows.start.pop_back();
 }
 
-void AllStars::build(const Triangulation &tri, bool matrices, const Point *centre, double *xy) {
+void AllStars::build(const Triangulation &tri, bool matrices) {
   entries_ = 3 * tri.faces().size();
   // Corner indices and the flag in 32 bits while they fit.
   wide_ = entries_ >= (std::size_t(1) << 31);
   if (wide_) {
     small_ = {};
-    build_rows(tri, matrices, centre, xy, large_);
+    build_rows(tri, matrices, large_);
   } else {
     large_ = {};
-    build_rows(tri, matrices, centre, xy, small_);
+    build_rows(tri, matrices, small_);
   }
 }
 
-template <class U, class Begin, class Emit>
-void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *offsets, Begin &&begin,
-                    Emit &&emit) const {
+template <class U, class Emit>
+void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *offsets, Emit &&emit) const {
   constexpr U top = U(1) << (std::numeric_limits<U>::digits - 1);
   const std::vector<Vertex> &V = tri.vertices();
   const auto *entry = rows.entry.get();
@@ -155,7 +144,8 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
     const std::size_t d = e - b;
     const auto *row = entry + b;
     const auto face = [&](std::size_t i) { return uint32_t((row[i].k & ~top) / 3); };
-    const auto put = [&](std::size_t j, std::size_t i) {
+    // Entry i (of face f) as the j-th of the star.
+    const auto put = [&](std::size_t j, std::size_t i, uint32_t f) {
       U k = row[i].k;
       TranslationId t = home;
       if (k & top) {
@@ -164,9 +154,13 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
                                          [](const auto &x, const auto &y) { return x.first < y.first; });
         t = it->second;
       }
-      emit(std::size_t(b + j), i, uint32_t(k / 3), int(k % 3), t);
+      emit(std::size_t(b + j), f, int(k - 3 * U(f)), t);
     };
-    begin(std::size_t(b), d);
+    // The centres of the rows a few vertices on: the cells read them in
+    // the vertices' order, scattered over the faces.
+    if (prefetch_)
+      for (std::size_t i = 0, a = std::size_t(b) + 64; i < d && a < entries_; ++i, ++a)
+        __builtin_prefetch(prefetch_ + (entry[a].k & ~top) / 3);
     // In star order: from the vertex's stored face, the entry of the face
     // the previous one leads to. A row lists its faces in increasing order
     // (the scatter ran in face order), so in a small row (nearly all) the
@@ -180,9 +174,9 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
       // The successors' ranks in lanes 0..d-1, the stored face's in lane d.
       uint32_t fc[16], x[16];
       int32_t succ[16];
-      for (std::size_t i = 0; i < 16; ++i) fc[i] = kNone, x[i] = kNone;
       for (std::size_t i = 0; i < d; ++i) fc[i] = face(i), x[i] = uint32_t(row[i].next);
       x[d] = first;
+      for (std::size_t i = d + 1; i < (d < 8 ? 8 : 16); ++i) x[i] = kNone;  // the lanes ranks reads
       ranks(fc, d, x, succ);
       // Checked at the end: each face reached is the one sought (a face
       // not in the row gets the rank of another), and every entry used
@@ -193,7 +187,7 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
       for (std::size_t j = 0; j < d; ++j) {
         wrong |= fc[i] ^ f;
         used |= 1u << i;
-        put(j, i);
+        put(j, i, f);
         f = x[i];
         i = succ[i];
       }
@@ -204,7 +198,7 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
         std::size_t i = 0;
         while (i < d && face(i) != f) ++i;
         if (i == d) throw broken(v);
-        put(j, i);
+        put(j, i, f);
         f = uint32_t(row[i].next);
       }
     }
@@ -213,37 +207,35 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
   if (offsets) offsets[n] = rows.start[n];
 }
 
-template <class Begin, class Emit>
-void AllStars::dispatch(const Triangulation &tri, std::size_t *offsets, Begin &&begin, Emit &&emit) const {
-  if (wide_) each(tri, large_, offsets, begin, emit);
-  else each(tri, small_, offsets, begin, emit);
+template <class Emit>
+void AllStars::dispatch(const Triangulation &tri, std::size_t *offsets, Emit &&emit) const {
+  if (wide_) each(tri, large_, offsets, emit);
+  else each(tri, small_, offsets, emit);
 }
 
 void AllStars::write(const Triangulation &tri, std::size_t *offsets, uint32_t *faces, uint8_t *corners,
                      int32_t *translations) const {
-  const auto none = [](std::size_t, std::size_t) {};
   if (!faces && !corners && !translations) {
-    dispatch(tri, offsets, none, [](std::size_t, std::size_t, uint32_t, int, TranslationId) {});
+    dispatch(tri, offsets, [](std::size_t, uint32_t, int, TranslationId) {});
     return;
   }
-  dispatch(tri, offsets, none, [&](std::size_t j, std::size_t, uint32_t f, int c, TranslationId t) {
+  dispatch(tri, offsets, [&](std::size_t j, uint32_t f, int c, TranslationId t) {
     if (faces) faces[j] = f;
     if (corners) corners[j] = uint8_t(c);
     if (translations) translations[j] = t;
   });
 }
 
-void AllStars::write_cells(const Triangulation &tri, std::size_t *offsets, double *xy) const {
+void AllStars::write_cells(const Triangulation &tri, std::size_t *offsets, double *xy, const Point *centre) const {
   group::TranslationTable &T = tri.table();
-  // A row's centres (in face order, from build) aside, then back in star
-  // order, each mapped as hdt_voronoi_cell maps it (the same bits).
-  Point *row = row_.data();
-  dispatch(
-      tri, offsets, [&](std::size_t b, std::size_t d) { std::memcpy(row, xy + 2 * b, d * sizeof *row); },
-      [&](std::size_t j, std::size_t i, uint32_t, int, TranslationId t) {
-        const Point p = t == 0 ? row[i] : T.moebius(t).apply(row[i]);
-        xy[2 * j] = p.re, xy[2 * j + 1] = p.im;
-      });
+  // hdt_voronoi_cell's expression, for the same bits. The centres are read
+  // in the rows' order, scattered: each() prefetches them a few rows on.
+  prefetch_ = centre;
+  dispatch(tri, offsets, [&](std::size_t j, uint32_t f, int, TranslationId t) {
+    const Point p = t == 0 ? centre[f] : T.moebius(t).apply(centre[f]);
+    xy[2 * j] = p.re, xy[2 * j + 1] = p.im;
+  });
+  prefetch_ = nullptr;
 }
 
 }  // namespace hdt::triangulation

@@ -23,35 +23,33 @@ class AllStars {
   // Everything that may fail: memory, and the translation ids (and, with
   // matrices, their matrices) the stars need. Throws std::bad_alloc, or
   // std::logic_error on a broken invariant; the triangulation is unchanged
-  // (its table may have gained ids, as with any query). For the cells,
-  // centre[f] the circumcentre of face f's canonical copy (built with
-  // matrices) and xy (2 per entry) the cells' output: build writes it (a
-  // face's centre at each of its corners' places) once nothing can fail,
-  // and write_cells puts it in order.
-  void build(const Triangulation &tri, bool matrices, const Point *centre = nullptr, double *xy = nullptr);
+  // (its table may have gained ids, as with any query).
+  void build(const Triangulation &tri, bool matrices);
   std::size_t entries() const { return entries_; }  // 3F
   // Then the outputs, which cannot fail. offsets: id bound + 1 entries
   // (may be null); the others 1 per entry, each may be null.
   void write(const Triangulation &tri, std::size_t *offsets, uint32_t *faces, uint8_t *corners,
              int32_t *translations) const;
-  // xy as build(centre, xy) left it.
-  void write_cells(const Triangulation &tri, std::size_t *offsets, double *xy) const;
+  // xy: 2 per entry; centre[f] the circumcentre of face f's canonical copy
+  // (built with matrices).
+  void write_cells(const Triangulation &tri, std::size_t *offsets, double *xy, const Point *centre) const;
 
  private:
   template <class U>
   struct Rows;
   template <class U>
-  void build_rows(const Triangulation &tri, bool matrices, const Point *centre, double *xy, Rows<U> &rows);
-  // For each live vertex by id: begin(row start, degree), then emit(entry,
-  // index in the row, face, corner, translation) in star order.
-  template <class U, class Begin, class Emit>
-  void each(const Triangulation &tri, const Rows<U> &rows, std::size_t *offsets, Begin &&begin, Emit &&emit) const;
-  template <class Begin, class Emit>
-  void dispatch(const Triangulation &tri, std::size_t *offsets, Begin &&begin, Emit &&emit) const;
+  void build_rows(const Triangulation &tri, bool matrices, Rows<U> &rows);
+  // For each live vertex by id, in star order: emit(entry, face, corner,
+  // translation); offsets written when not null.
+  template <class U, class Emit>
+  void each(const Triangulation &tri, const Rows<U> &rows, std::size_t *offsets, Emit &&emit) const;
+  template <class Emit>
+  void dispatch(const Triangulation &tri, std::size_t *offsets, Emit &&emit) const;
 
-  // Corner k = 3f + c of each entry and the next face about the vertex
-  // (counterclockwise), in the vertex's row in face order; the top bit of k marks a corner whose translation is not the
-  // vertex's home, listed in moved_ (by k). 32-bit while 3F < 2^31.
+  // Per entry, its corner k = 3f + c and the next face about the vertex
+  // (counterclockwise); a row in face order. The top bit of k marks a
+  // corner whose translation is not the vertex's home, listed in moved_
+  // (by k). 32-bit while 3F < 2^31.
   template <class U>
   struct Rows {
     struct Entry {
@@ -66,7 +64,7 @@ class AllStars {
   bool wide_ = false;
   std::size_t entries_ = 0;
   std::vector<std::pair<uint64_t, TranslationId>> moved_;
-  mutable std::vector<Point> row_;  // the largest row's centres, for write_cells
+  mutable const Point *prefetch_ = nullptr;  // write_cells' centres, prefetched by each()
 };
 
 }  // namespace hdt::triangulation
