@@ -62,8 +62,16 @@ HDT_INLINE bool rounded_corners(const Triangulation &tri, const Face &f) {
   return tri.site_of(f.v[0]) >= 0 || tri.site_of(f.v[1]) >= 0 || tri.site_of(f.v[2]) >= 0;
 }
 
+// The radius from s2, the squared Euclidean length of the circle's
+// diameter from 0 once a corner is moved to the origin (below).
+HDT_INLINE double radius_of(double s2) {
+  const double s = std::sqrt(s2);
+  // atanh(s) = log1p(2s / (1 - s)) / 2, without atanh's case split.
+  return 0.5 * std::log1p(2 * s / (1 - s));
+}
+
 // The circumcentre of p0, p1, p2, and its radius when asked (radius may be
-// null). With N_k = p_k - p0 and D_k = 1 - conj(p0) p_k, the corners moved
+// null); *diameter2 (may be null) receives s2 for radius_of. With N_k = p_k - p0 and D_k = 1 - conj(p0) p_k, the corners moved
 // to the origin are w_k = A_k / |D_k|^2, A_k = N_k conj(D_k)
 // (to_origin_scaled), and |w_k|^2 = |N_k|^2 / |D_k|^2: the Euclidean centre
 // c of 0, w1, w2 (2 c.w_k = |w_k|^2) is then free of the |D_k|^2,
@@ -80,7 +88,7 @@ HDT_INLINE bool rounded_corners(const Triangulation &tri, const Face &f) {
 // third edge; sine^2 = cross^2 / (4 |A_1|^2 |A_2|^2)), or the circle is no
 // circle of the disk.
 HDT_INLINE bool centre_of(const Point &p0, const Point &p1, const Point &p2, bool rounded, Point *centre,
-                          double *radius) {
+                          double *radius, double *diameter2 = nullptr) {
   const Point a1 = to_origin_scaled(p0, p1), a2 = to_origin_scaled(p0, p2);
   const double n1r = p1.re - p0.re, n1i = p1.im - p0.im, n2r = p2.re - p0.re, n2i = p2.im - p0.im;
   const double m1 = n1r * n1r + n1i * n1i, m2 = n2r * n2r + n2i * n2i;
@@ -100,11 +108,8 @@ HDT_INLINE bool centre_of(const Point &p0, const Point &p1, const Point &p2, boo
   const double s2 = 4 * (cr * cr + ci * ci);
   if (!(s2 < 1)) return false;
   const double k = 2 / (1 + std::sqrt(1 - s2));
-  // atanh(s) = log1p(2s / (1 - s)) / 2, without atanh's case split.
-  if (radius) {
-    const double s = std::sqrt(s2);
-    *radius = 0.5 * std::log1p(2 * s / (1 - s));
-  }
+  if (radius) *radius = radius_of(s2);
+  if (diameter2) *diameter2 = s2;
   *centre = from_origin(p0, Point{k * cr, k * ci});
   return true;
 }
@@ -115,6 +120,23 @@ HDT_INLINE Point face_centre(const Triangulation &tri, const Face &f, const Poin
   if (centre_of(p[0], p[1], p[2], rounded_corners(tri, f), &c, radius)) return c;
   const Circle precise = precise_circumcircle(tri, f);
   if (radius) *radius = precise.radius;
+  return precise.centre;
+}
+
+// The same, for the centre cache: *kept is the radius when asked (or from
+// the fallback, which computes it anyway), else -s2, from which
+// CentreCache::radius_held computes the same radius later, a logarithm
+// without the rest.
+HDT_INLINE Point face_centre_kept(const Triangulation &tri, const Face &f, const Point p[3], bool radius,
+                                  double *kept) {
+  Point c;
+  double s2 = 0;
+  if (centre_of(p[0], p[1], p[2], rounded_corners(tri, f), &c, radius ? kept : nullptr, &s2)) {
+    if (!radius) *kept = -s2;
+    return c;
+  }
+  const Circle precise = precise_circumcircle(tri, f);
+  *kept = precise.radius;
   return precise.centre;
 }
 
@@ -192,15 +214,15 @@ namespace {
 // Face f's centre (and radius into *radius, which may be null), through the
 // cache when there is one.
 HDT_INLINE Point cached_centre(const Triangulation &tri, uint32_t f, double *radius, CentreCache *cache) {
-  if (cache && cache->holds(tri, f, radius != nullptr)) return cache->centre_held(f, radius);
+  if (cache && cache->holds(tri, f)) return cache->centre_held(f, radius);
   // Computed here, inline; the radius (a logarithm) only when asked.
   const Face &A = tri.faces()[f];
   Point p[3];
-  double r = std::numeric_limits<double>::quiet_NaN();
+  double kept;
   corners(tri, A, p);
-  const Point c = face_centre(tri, A, p, radius ? &r : nullptr);
-  if (radius) *radius = r;
-  if (cache) cache->store(tri, f, c, r);
+  const Point c = face_centre_kept(tri, A, p, radius != nullptr, &kept);
+  if (radius) *radius = kept;
+  if (cache) cache->store(tri, f, c, kept);
   return c;
 }
 
@@ -280,12 +302,16 @@ Point CentreCache::compute(const Triangulation &tri, uint32_t f, double *radius)
   // The radius only when asked: a Voronoi cell needs none, and its
   // logarithm is a third of a circumcentre's cost. (The centre's bits do
   // not depend on it.)
-  double r = std::numeric_limits<double>::quiet_NaN();
-  e.centre = face_centre(tri, F, p, radius ? &r : nullptr);
-  e.radius = r;
+  e.centre = face_centre_kept(tri, F, p, radius != nullptr, &e.radius);
   e.v = F.v, e.t = F.t;
-  if (radius) *radius = r;
+  if (radius) *radius = e.radius;
   return e.centre;
+}
+
+double CentreCache::radius_held(uint32_t f) {
+  double &r = entries_[f].radius;
+  if (r < 0) r = radius_of(-r);
+  return r;
 }
 
 #undef HDT_INLINE

@@ -66,46 +66,45 @@ class CentreCache {
   // without the cache rather than allocate it).
   bool ready(const Triangulation &tri) const { return entries_.size() >= tri.faces().size(); }
   // The circumcentre of face f's canonical copy (the same bits as
-  // circumcentre() of its corners), and its radius when radius is not null.
+  // circumcentre() of its corners), and its radius when radius is not null
+  // (the same bits as circumcircle()'s).
   // reserve() first; the face's corner matrices may be computed (as
   // face_corner does).
   Point centre(const Triangulation &tri, uint32_t f, double *radius = nullptr) {
-    const Face &F = tri.faces()[f];
-    const Entry &e = entries_[f];
-    // Compared one by one: std::array's == calls memcmp. A radius not yet
-    // computed is NaN.
-    if (e.v[0] == F.v[0] && e.v[1] == F.v[1] && e.v[2] == F.v[2] && e.t[0] == F.t[0] && e.t[1] == F.t[1] &&
-        e.t[2] == F.t[2] && (!radius || e.radius == e.radius)) {
-      if (radius) *radius = e.radius;
-      return e.centre;
-    }
+    if (holds(tri, f)) return centre_held(f, radius);
     return compute(tri, f, radius);
   }
-  // Whether face f's entry holds its centre, and its radius when asked
-  // (reserve() first).
-  bool holds(const Triangulation &tri, uint32_t f, bool radius) const {
+  // Whether face f's entry holds its centre (reserve() first); its radius
+  // then comes with it.
+  bool holds(const Triangulation &tri, uint32_t f) const {
     const Face &F = tri.faces()[f];
     const Entry &e = entries_[f];
+    // Compared one by one: std::array's == calls memcmp.
     return e.v[0] == F.v[0] && e.v[1] == F.v[1] && e.v[2] == F.v[2] && e.t[0] == F.t[0] && e.t[1] == F.t[1] &&
-           e.t[2] == F.t[2] && (!radius || e.radius == e.radius);
+           e.t[2] == F.t[2];
   }
-  Point centre_held(uint32_t f, double *radius) const {
-    if (radius) *radius = entries_[f].radius;
+  Point centre_held(uint32_t f, double *radius) {
+    if (radius) *radius = radius_held(f);
     return entries_[f].centre;
   }
-  // Face f's centre and radius (NaN: not computed), computed by the caller
-  // (the same bits).
-  void store(const Triangulation &tri, uint32_t f, const Point &centre, double radius) {
+  // Face f's centre and what its radius needs (kept, as Entry::radius),
+  // computed by the caller (the same bits).
+  void store(const Triangulation &tri, uint32_t f, const Point &centre, double kept) {
     const Face &F = tri.faces()[f];
-    entries_[f] = Entry{F.v, F.t, centre, radius};
+    entries_[f] = Entry{F.v, F.t, centre, kept};
   }
 
  private:
   Point compute(const Triangulation &tri, uint32_t f, double *radius);
+  double radius_held(uint32_t f);
   struct Entry {
     std::array<uint32_t, 3> v;
     std::array<TranslationId, 3> t;
     Point centre;
+    // The radius, or, until one is asked, -s2 with s2 > 0 the squared
+    // diameter it is computed from (a logarithm, where the centre costs
+    // an isometry's worth): a cell's centres need no radius, and a later
+    // hdt_voronoi_vertices then need not recompute the centre.
     double radius;
   };
   std::vector<Entry> entries_;
