@@ -77,13 +77,17 @@ void AllStars::build_rows(const Triangulation &tri, bool matrices, Rows<U> &rows
     }
     if ((A.t[0] | A.t[1] | A.t[2]) == 0) continue;
     // A translated corner (few: the faces across F_g's sides): vertex_star's
-    // translation, computed now, where it may add ids.
+    // translation, computed now, where it may add ids; with matrices, the
+    // corner's matrix too, as warm_corner_matrices would.
     for (int c = 0; c < 3; ++c) {
       if (A.t[c] == 0) continue;
       const TranslationId home = V[A.v[c]].home;
       const TranslationId t = T.inverse(T.compose(A.t[c], T.inverse(home)));
       moved_.push_back({3 * f + c, t});
-      if (matrices && t != 0) T.moebius(t);
+      if (matrices) {
+        T.moebius(A.t[c]);
+        if (t != 0) T.moebius(t);
+      }
     }
   }
   if (matrices)

@@ -21,7 +21,8 @@ namespace hdt::triangulation {
 class AllStars {
  public:
   // Everything that may fail: memory, and the translation ids (and, with
-  // matrices, their matrices) the stars need. Throws std::bad_alloc, or
+  // matrices, their matrices and the corners' matrices, as
+  // warm_corner_matrices(tri, false)) the stars need. Throws std::bad_alloc, or
   // std::logic_error on a broken invariant; the triangulation is unchanged
   // (its table may have gained ids, as with any query).
   void build(const Triangulation &tri, bool matrices);
