@@ -56,6 +56,15 @@ HDT_INLINE void corners(const Triangulation &tri, const Face &f, Point p[3]) {
   }
 }
 
+// The vertices of face f + 32, fetched ahead: the loops over the faces
+// read their corners' points scattered over the vertices.
+HDT_INLINE void fetch_ahead(const Triangulation &tri, std::size_t f) {
+  const std::vector<Face> &F = tri.faces();
+  if (f + 32 >= F.size()) return;
+  const Face &A = F[f + 32];
+  for (int i = 0; i < 3; ++i) __builtin_prefetch(&tri.vertices()[A.v[i]]);
+}
+
 // Whether some corner of f is rounded: translated, or a dummy's algebraic point.
 HDT_INLINE bool rounded_corners(const Triangulation &tri, const Face &f) {
   if ((f.t[0] | f.t[1] | f.t[2]) != 0) return true;
@@ -203,6 +212,7 @@ void warm_corner_matrices(const Triangulation &tri, bool across) {
 void face_points(const Triangulation &tri, double *xy) {
   const std::vector<Face> &F = tri.faces();
   for (std::size_t f = 0; f < F.size(); ++f) {
+    fetch_ahead(tri, f);
     Point p[3];
     corners(tri, F[f], p);
     for (int i = 0; i < 3; ++i) xy[6 * f + 2 * i] = p[i].re, xy[6 * f + 2 * i + 1] = p[i].im;
@@ -232,6 +242,7 @@ void voronoi_vertices(const Triangulation &tri, double *xy, double *radii, Centr
   const std::size_t F = tri.faces().size();
   if (!cache) {  // the loop without the cache's tests (they cost 28 instructions a face)
     for (std::size_t f = 0; f < F; ++f) {
+      fetch_ahead(tri, f);
       const Face &A = tri.faces()[f];
       Point p[3];
       corners(tri, A, p);
@@ -250,6 +261,7 @@ void face_centres(const Triangulation &tri, Point *out, CentreCache *cache) {
   const std::size_t F = tri.faces().size();
   if (!cache) {
     for (std::size_t f = 0; f < F; ++f) {
+      fetch_ahead(tri, f);
       const Face &A = tri.faces()[f];
       Point p[3];
       corners(tri, A, p);
@@ -267,6 +279,7 @@ void write_edges(const Triangulation &tri, std::size_t count, uint32_t *vertices
     const Face &A = F[f];
     // The smaller face of an edge lists it (adjacency.hpp); a face's
     // corners and their factors 1 - |z|^2 serve all the edges it lists.
+    fetch_ahead(tri, f);
     if (!(A.n[0] > f || A.n[1] > f || A.n[2] > f)) continue;
     Point p[3];
     double w[3];
