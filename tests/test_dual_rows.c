@@ -152,6 +152,20 @@ START_TEST(rows_equal_the_per_vertex_functions) {
     check_rows(t, what);
     hdt_destroy(t);
   }
+  /* A vertex of degree 40 (rows of 16 and more take another path): the
+     origin and 40 points on a circle about it. */
+  {
+    hdt_triangulation *w = new_triangulation(2);
+    double xy[82] = {0, 0};
+    for (int k = 0; k < 40; ++k) xy[2 + 2 * k] = 0.1 * cos(k * M_PI / 20), xy[3 + 2 * k] = 0.1 * sin(k * M_PI / 20);
+    uint32_t ids[41];
+    OK(hdt_insert_many(w, xy, 41, ids));
+    size_t n = 0;
+    OK(hdt_vertex_star(w, ids[0], NULL, NULL, NULL, 0, &n));
+    expect(n == 40, "the centre has degree %zu", n);
+    check_rows(w, "genus 2, a vertex of degree 40");
+    hdt_destroy(w);
+  }
   /* The dummy set alone (cocircular faces) and a larger set. */
   hdt_triangulation *t = new_triangulation(2);
   check_rows(t, "genus 2, the dummies alone");
