@@ -7,6 +7,7 @@
 #define _DEFAULT_SOURCE
 
 #include "hdt_test.h"
+#include "limited_child.h"
 
 static void *need(void *p) {
   ck_assert_ptr_nonnull(p);
@@ -248,7 +249,64 @@ START_TEST(bad_arguments) {
 }
 END_TEST
 
+/* Out of memory: under an address-space limit 1 MiB above what the process
+   uses, both functions need more scratch than that (the rows 24 bytes a
+   face, the cells' centre cache 48): HDT_ENOMEM, no byte of the buffers
+   written (count set); with the memory back, the rows as before. In a
+   child process (limited_child.h); not under a sanitizer or valgrind,
+   which reserve address space of their own. */
+static void out_of_memory_child(void) {
+  hdt_triangulation *t = wide_triangulation(2, 100000, 0xe0e0);
+  const size_t F = hdt_face_count(t), bound = hdt_vertex_id_bound(t);
+  size_t *offsets = malloc((bound + 1) * sizeof *offsets);
+  uint32_t *faces = malloc(3 * F * sizeof *faces), *before = malloc(3 * F * sizeof *before);
+  double *xy = malloc(6 * F * sizeof *xy);
+  require(offsets && faces && before && xy, "no memory for the buffers");
+  memset(offsets, 0x5a, (bound + 1) * sizeof *offsets), memset(faces, 0x5a, 3 * F * sizeof *faces);
+  memset(xy, 0x5a, 6 * F * sizeof *xy);
+  struct rlimit old;
+  require(getrlimit(RLIMIT_AS, &old) == 0, "getrlimit: %s", strerror(errno));
+  struct rlimit tight = {(rlim_t)(address_space_bytes() + ((size_t)1 << 20)), old.rlim_max};
+  require(setrlimit(RLIMIT_AS, &tight) == 0, "setrlimit: %s", strerror(errno));
+  size_t count = 0;
+  hdt_status s = hdt_vertex_stars(t, offsets, faces, NULL, NULL, 3 * F, &count);
+  require(s == HDT_ENOMEM && count == 3 * F, "hdt_vertex_stars under the limit: %s, count %zu",
+          hdt_status_string(s), count);
+  require(strstr(hdt_last_error_message(), "hdt_vertex_stars"), "message \"%s\"", hdt_last_error_message());
+  count = 0;
+  s = hdt_voronoi_cells(t, offsets, xy, 3 * F, &count);
+  require(s == HDT_ENOMEM && count == 3 * F, "hdt_voronoi_cells under the limit: %s, count %zu",
+          hdt_status_string(s), count);
+  const unsigned char *bytes = (const unsigned char *)offsets;
+  for (size_t i = 0; i < (bound + 1) * sizeof *offsets; ++i) require(bytes[i] == 0x5a, "offsets byte %zu written", i);
+  bytes = (const unsigned char *)faces;
+  for (size_t i = 0; i < 3 * F * sizeof *faces; ++i) require(bytes[i] == 0x5a, "faces byte %zu written", i);
+  bytes = (const unsigned char *)xy;
+  for (size_t i = 0; i < 6 * F * sizeof *xy; ++i) require(bytes[i] == 0x5a, "xy byte %zu written", i);
+  require(setrlimit(RLIMIT_AS, &old) == 0, "setrlimit back: %s", strerror(errno));
+  require(hdt_vertex_stars(t, offsets, faces, NULL, NULL, 3 * F, &count) == HDT_OK &&
+              hdt_voronoi_cells(t, offsets, xy, 3 * F, &count) == HDT_OK,
+          "with memory back: %s", hdt_last_error_message());
+  /* The first row against hdt_vertex_star. */
+  uint32_t v = 0;
+  while (offsets[v] == offsets[v + 1]) ++v;
+  require(hdt_vertex_star(t, v, before, NULL, NULL, F, &count) == HDT_OK && count == offsets[v + 1] - offsets[v] &&
+              memcmp(before, faces + offsets[v], count * sizeof *faces) == 0,
+          "with memory back: the row of vertex %u differs", v);
+  hdt_destroy(t);
+  free(offsets), free(faces), free(before), free(xy);
+  _exit(0);
+}
+
+START_TEST(out_of_memory) {
+  const char *preload = getenv("LD_PRELOAD");
+  if (UNDER_SANITIZER || (preload && strstr(preload, "vgpreload"))) return;
+  run_child(out_of_memory_child);
+}
+END_TEST
+
 int main(void) {
-  const TTest *const tests[] = {rows_equal_the_per_vertex_functions, rows_follow_changes, bad_arguments};
+  const TTest *const tests[] = {rows_equal_the_per_vertex_functions, rows_follow_changes, bad_arguments,
+                                out_of_memory};
   return run_tests("dual_rows", tests, sizeof tests / sizeof tests[0]);
 }
