@@ -179,7 +179,7 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
       uint32_t fc[16], x[16];
       int32_t succ[16];
       for (std::size_t i = 0; i < d; ++i) fc[i] = face(i), x[i] = uint32_t(row[i].next);
-      x[d] = first;
+      x[d] = first, fc[d] = kNone;  // (a rank of d, a face not in the row, then fails the check)
       for (std::size_t i = d + 1; i < (d < 8 ? 8 : 16); ++i) x[i] = kNone;  // the lanes ranks reads
       ranks(fc, d, x, succ);
       // Checked at the end: each face reached is the one sought (a face
