@@ -144,6 +144,16 @@ def test_stars_and_cells_in_one_call(tri, arrays):
             assert faces[b:e] == rows(star.faces) and corners[b:e] == rows(star.corners)
             assert translations[b:e] == rows(star.translations)
             assert points[b:e] == [tuple(p) for p in rows(tri.voronoi_cell(v))]
+        # Independently: the cells' hyperbolic areas add up to 4 pi (g - 1).
+        reps = dict(zip(rows(tri.vertices().ids), (complex(x, y) for x, y in rows(tri.vertices().points))))
+        area = 0.0
+        for v in live:
+            p, cell = reps[v], [complex(*q) for q in points[offsets[v]:offsets[v + 1]]]
+            for k, z1 in enumerate(cell):
+                z2 = cell[(k + 1) % len(cell)]
+                w1, w2 = (z1 - p) / (1 - p.conjugate() * z1), (z2 - p) / (1 - p.conjugate() * z2)
+                area += -2 * cmath.phase(1 - w1.conjugate() * w2)
+        assert area == pytest.approx(4 * math.pi * (tri.genus - 1), rel=1e-9)
         for v in sorted(live)[round::4]:
             try:
                 tri.remove(v)
