@@ -57,7 +57,8 @@ static void check_rows(hdt_triangulation *t, const char *what) {
   expect(n == 3 * F, "%s: hdt_vertex_stars asks for %zu entries, 3F = %zu", what, n, 3 * F);
   OK(hdt_voronoi_cells(t, NULL, NULL, 0, &n));
   expect(n == 3 * F, "%s: hdt_voronoi_cells asks for %zu points, 3F = %zu", what, n, 3 * F);
-  size_t *offsets = need(malloc((bound + 1) * sizeof *offsets)), *cell_offsets = need(malloc((bound + 1) * sizeof *offsets));
+  size_t *offsets = need(malloc((bound + 1) * sizeof *offsets));
+  size_t *cell_offsets = need(malloc((bound + 1) * sizeof *cell_offsets));
   uint32_t *faces = need(malloc(3 * F * sizeof *faces)), *fv = need(malloc(3 * F * sizeof *fv)),
            *nf = need(malloc(3 * F * sizeof *nf)), *one_faces = need(malloc(F * sizeof *one_faces));
   uint8_t *corners = need(malloc(3 * F)), *one_corners = need(malloc(F)), *seen = need(calloc(3 * F, 1));

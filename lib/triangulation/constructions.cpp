@@ -80,7 +80,8 @@ HDT_INLINE double radius_of(double s2) {
 }
 
 // The circumcentre of p0, p1, p2, and its radius when asked (radius may be
-// null); *diameter2 (may be null) receives s2 for radius_of. With N_k = p_k - p0 and D_k = 1 - conj(p0) p_k, the corners moved
+// null); *diameter2 (may be null) receives s2 for radius_of. With
+// N_k = p_k - p0 and D_k = 1 - conj(p0) p_k, the corners moved
 // to the origin are w_k = A_k / |D_k|^2, A_k = N_k conj(D_k)
 // (to_origin_scaled), and |w_k|^2 = |N_k|^2 / |D_k|^2: the Euclidean centre
 // c of 0, w1, w2 (2 c.w_k = |w_k|^2) is then free of the |D_k|^2,
