@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "predicates/representative.hpp"
+#include "triangulation/dummy_relaxation.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
@@ -86,6 +87,14 @@ class DummyThinning {
 
   void run() {
     // Eight rounds at most: later ones gained nothing at genus 2 .. 32.
+    // Genus 3 .. kRelaxationGenusMax: the relaxation alone, from the refined
+    // set (the rounds below first gave nothing it does not find, and cost
+    // as much). Genus 2 keeps its published-size set of these rounds.
+    if (t_.genus() >= 3 && t_.genus() <= kRelaxationGenusMax) {
+      relax();
+      t_.compact_ids();
+      return;
+    }
     for (int round = 0, idle = 0; round < 8 && idle < 2; ++round) {
       const std::size_t before = t_.dummy_count();
       for (uint32_t v = fixed_; v < t_.vertices().size(); ++v)
@@ -99,6 +108,16 @@ class DummyThinning {
   }
 
  private:
+  // The double-precision relaxation's set (dummy_relaxation.hpp): its new
+  // points go in by Bowyer-Watson, then the old dummies it dropped leave
+  // through the certified removal; one it still needs stays.
+  void relax() {
+    const RelaxedDummies r = relax_dummy_points(t_);
+    if (r.removed.empty()) return;
+    for (std::size_t i = 0; i < r.added.size(); ++i) insert_dummy(r.added[i][0], r.added[i][1], r.near[i]);
+    for (uint32_t v : r.removed) t_.remove(v);
+  }
+
   // Small sets try every merge; larger ones only those the fan estimate
   // finds promising (a try costs an insertion and removals).
   bool exhaustive() const { return t_.dummy_count() < 64; }

@@ -1,0 +1,496 @@
+// A smaller dummy set chosen in double precision (dummy_relaxation.hpp).
+//
+// A copy of the triangulation's faces (vertices, corner translations,
+// neighbours) with every vertex's point as a double hyperboloid vector in the
+// frame it is stored in: corner (v, t) is lorentz(t) P_v, so moving P_v moves
+// every copy of v. Three edits: Lawson flips (the copy stays Delaunay, in
+// double), moving a vertex inside its star, and merging the two ends of an
+// edge into one point (their stars become a fan). Nothing here decides the
+// certificate: the caller inserts the points it returns through the exact
+// Bowyer-Watson insertion and removes the old ones through the exact removal.
+#include "triangulation/dummy_relaxation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "triangulation/triangulation.hpp"
+
+namespace hdt::triangulation {
+
+namespace {
+
+using Point = std::array<double, 3>;  // (t, u, v) on the hyperboloid
+
+double dot(const Point &p, const Point &q) { return p[0] * q[0] - p[1] * q[1] - p[2] * q[2]; }
+
+// The Minkowski normal of the plane through p, q, r: its dual is the centre.
+Point normal(const Point &p, const Point &q, const Point &r) {
+  const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, v[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+  return {u[1] * v[2] - u[2] * v[1], -(u[2] * v[0] - u[0] * v[2]), -(u[0] * v[1] - u[1] * v[0])};
+}
+
+// cosh of the circumradius; infinite for a horocycle or hypercycle.
+double cosh_circumradius(const Point &p, const Point &q, const Point &r) {
+  const Point m = normal(p, q, r);
+  const double mm = dot(m, m);
+  if (!(mm > 0)) return INFINITY;
+  return (m[0] > 0 ? 1 : -1) * dot(m, p) / std::sqrt(mm);
+}
+
+// Positive when p, q, r are counterclockwise.
+double orientation(const Point &p, const Point &q, const Point &r) {
+  return p[0] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[0] * r[2] - q[2] * r[0]) + p[2] * (q[0] * r[1] - q[1] * r[0]);
+}
+
+// Whether d lies clearly inside the circle of a, b, c: near-ties keep the
+// edge, so that rounding cannot make the flips cycle (the exact insertion
+// decides the final triangulation).
+bool in_circle(const Point &a, const Point &b, const Point &c, const Point &d) {
+  const Point m = normal(a, b, c);
+  const double ma = dot(m, a), s = (m[0] > 0 ? 1 : -1) * (dot(m, d) - ma);
+  return s < -1e-9 * std::abs(ma);
+}
+
+Point from_disk(double x, double y) {
+  const double w = 1 - x * x - y * y;
+  return {(2 - w) / w, 2 * x / w, 2 * y / w};
+}
+
+}  // namespace
+
+class DummyRelaxation {
+ public:
+  explicit DummyRelaxation(Triangulation &t)
+      : t_(t), T_(t.table()), fixed_(uint32_t(2 * t.genus() + 2)), limit_(t.surface().quarter_systole_cosh_rounded()) {
+    const auto &faces = t.faces();
+    F_.resize(faces.size());
+    for (uint32_t f = 0; f < faces.size(); ++f) {
+      const Face &G = faces[f];
+      RFace &R = F_[f];
+      R.v = G.v, R.t = G.t, R.n = G.n, R.nt = G.nt;
+      for (int i = 0; i < 3; ++i) R.tw[i] = int8_t(t.twin(f, i));
+    }
+    const auto &vertices = t.vertices();
+    P_.resize(vertices.size());
+    vface_.resize(vertices.size(), kNone);
+    for (uint32_t v = 0; v < vertices.size(); ++v)
+      if (vertices[v].alive()) P_[v] = from_disk(vertices[v].x, vertices[v].y), vface_[v] = vertices[v].face;
+    original_ = P_;
+  }
+
+  RelaxedDummies run() {
+    // Accepted below ok: a margin of 1e-3 in cosh(radius) absorbs the
+    // rounding of far copies at genus 64 (fewer removals refused). Merges
+    // are tried when their fan estimate is below cap: the repair saved
+    // almost none above 1.2 times the limit at genus 4 .. 32.
+    const double ok = limit_ * (1 - 1e-3), cap = limit_ * 1.2;
+    for (int s = 0; s < 3; ++s) smooth_all();
+    std::size_t merged = 0;
+    for (int pass = 0; pass < 6; ++pass) {
+      std::size_t merged_here = 0;
+      // The most promising merges first: smallest fan estimate.
+      auto candidates = edges();
+      for (auto &e : candidates) {
+        merge(e.second[0], e.second[1], cap, false);
+        e.first = estimate_;
+      }
+      std::sort(candidates.begin(), candidates.end());
+      for (const auto &e : candidates) {
+        const uint32_t u = e.second[0], w = e.second[1];
+        if (e.first >= cap) break;
+        if (vface_[u] == kNone || vface_[w] == kNone) continue;
+        if (!merge(u, w, cap)) continue;
+        if (repair(u, ok)) ++merged_here;
+        else restore();
+      }
+      merged += merged_here;
+      if (merged_here == 0) break;
+      for (int s = 0; s < 2; ++s) smooth_all();
+    }
+    RelaxedDummies out;
+    if (merged == 0) return out;
+    for (uint32_t v = fixed_; v < P_.size(); ++v) {
+      if (!t_.vertices()[v].alive()) continue;
+      const bool kept = vface_[v] != kNone && P_[v] == original_[v];
+      if (kept) continue;
+      out.removed.push_back(v);
+      if (vface_[v] != kNone) {
+        const Point &p = P_[v];
+        out.added.push_back({p[1] / (1 + p[0]), p[2] / (1 + p[0])});
+        out.near.push_back(v);
+      }
+    }
+    return out;
+  }
+
+ private:
+  struct RFace {
+    std::array<uint32_t, 3> v;  // v[0] == kNone: a free slot
+    std::array<TranslationId, 3> t;
+    std::array<uint32_t, 3> n;
+    std::array<TranslationId, 3> nt;
+    std::array<int8_t, 3> tw;  // the edge of n[i] that is edge i
+  };
+  struct Corner2 {
+    uint32_t v;
+    TranslationId t;
+  };
+  struct Outer {
+    uint32_t face;
+    int tw;
+    TranslationId nt;
+  };
+  // A vertex's star with the vertex at the identity (its stored frame):
+  // per face, its id, the vertex's corner and the face's frame; the link
+  // corners and the outer neighbours across the link edges.
+  struct Star {
+    std::vector<uint32_t> face;
+    std::vector<int> corner;
+    std::vector<TranslationId> frame;
+    std::vector<Corner2> link;
+    std::vector<Outer> outer;
+  };
+
+  std::size_t live() const {
+    std::size_t n = 0;
+    for (uint32_t v = fixed_; v < vface_.size(); ++v) n += vface_[v] != kNone;
+    return n;
+  }
+  bool movable(uint32_t v) const { return v >= fixed_ && vface_[v] != kNone; }
+  Point at(uint32_t v, TranslationId t) {
+    const group::Lorentz<double> &L = T_.lorentz(t);
+    const Point &p = P_[v];
+    Point r;
+    for (int i = 0; i < 3; ++i) r[i] = L.m[i][0] * p[0] + L.m[i][1] * p[1] + L.m[i][2] * p[2];
+    return r;
+  }
+  Point corner(uint32_t f, int i) { return at(F_[f].v[i], F_[f].t[i]); }
+  double face_radius(uint32_t f) {
+    const Point a = corner(f, 0), b = corner(f, 1), c = corner(f, 2);
+    if (!(orientation(a, b, c) > 0)) return INFINITY;
+    return cosh_circumradius(a, b, c);
+  }
+
+  bool star(uint32_t v, Star *s) {
+    s->face.clear(), s->corner.clear(), s->frame.clear(), s->link.clear(), s->outer.clear();
+    const uint32_t start = vface_[v];
+    auto corner_of = [&](uint32_t f) {
+      int c = -1;
+      for (int i = 0; i < 3; ++i)
+        if (F_[f].v[i] == v) {
+          if (c >= 0) return -1;
+          c = i;
+        }
+      return c;
+    };
+    int c = corner_of(start);
+    if (c < 0) return false;
+    const TranslationId base = T_.inverse(F_[start].t[c]);
+    TranslationId frame = base;
+    uint32_t f = start;
+    for (;;) {
+      const RFace &R = F_[f];
+      s->face.push_back(f), s->corner.push_back(c), s->frame.push_back(frame);
+      const int a = next(c);
+      s->link.push_back({R.v[a], T_.compose(frame, R.t[a])});
+      s->outer.push_back({R.n[c], R.tw[c], T_.compose(frame, R.nt[c])});
+      const int e = next(c);
+      const int k = R.tw[e];
+      frame = T_.compose(frame, R.nt[e]);
+      f = R.n[e];
+      c = next(k);
+      if (F_[f].v[c] != v) return false;
+      if (f == start) break;
+      if (s->face.size() > 64) return false;
+    }
+    return frame == base && c == corner_of(start);
+  }
+
+  // The largest circle of the fan from p over the closed polygon L; infinite
+  // when a fan triangle is not counterclockwise. Stops at `stop`: the
+  // search only asks whether a point beats the best so far.
+  static double fan(const Point &p, const std::vector<Point> &L, double stop = INFINITY, std::size_t *first = nullptr) {
+    const std::size_t n = L.size(), start = first ? *first : 0;
+    double r = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = start + k < n ? start + k : start + k - n;
+      const Point &a = L[i], &b = L[i + 1 == n ? 0 : i + 1];
+      if (!(orientation(p, a, b) > 0)) return INFINITY;
+      const double c = cosh_circumradius(p, a, b);
+      if (c > r) {
+        r = c;
+        if (first) *first = i;
+        if (r >= stop) break;
+      }
+    }
+    return r;
+  }
+
+  // The point near *p minimising fan(p, L), by compass steps in the disk.
+  // The largest triangle at the best point so far is tested first: most
+  // steps are refused by it.
+  static double best_fan_point(const std::vector<Point> &L, Point *p) {
+    static const double kDirections[8][2] = {{1, 0}, {M_SQRT1_2, M_SQRT1_2}, {0, 1}, {-M_SQRT1_2, M_SQRT1_2},
+                                             {-1, 0}, {-M_SQRT1_2, -M_SQRT1_2}, {0, -1}, {M_SQRT1_2, -M_SQRT1_2}};
+    double x = (*p)[1] / (1 + (*p)[0]), y = (*p)[2] / (1 + (*p)[0]);
+    std::size_t worst = 0;
+    double f = fan(*p, L, INFINITY, &worst);
+    for (double h = 0.25; h > 0.001;) {
+      const double scale = h * (1 - x * x - y * y) / 2;
+      bool moved = false;
+      for (int d = 0; d < 8 && !moved; ++d) {
+        const double nx = x + scale * kDirections[d][0], ny = y + scale * kDirections[d][1];
+        if (!(nx * nx + ny * ny < 1)) continue;
+        const Point q = from_disk(nx, ny);
+        std::size_t w = worst;
+        const double fq = fan(q, L, f, &w);
+        if (fq < f) x = nx, y = ny, f = fq, *p = q, moved = true, worst = w;
+      }
+      if (!moved) h /= 2;
+    }
+    return f;
+  }
+
+  // Moves v to the best point of its star when that makes its largest
+  // circle smaller; then flips back to Delaunay.
+  bool smooth(uint32_t v) {
+    if (!movable(v) || !star(v, &s_)) return false;
+    L_.clear();
+    for (const Corner2 &c : s_.link) L_.push_back(at(c.v, c.t));
+    const double current = fan(P_[v], L_);
+    Point p = P_[v];
+    const double best = best_fan_point(L_, &p);
+    if (!(best < current * (1 - 1e-7))) return false;
+    P_[v] = p;
+    for (uint32_t f : s_.face)
+      for (int i = 0; i < 3; ++i) stack_.push_back({f, i});
+    lawson();
+    return true;
+  }
+
+  void smooth_all() {
+    saved_F_ = F_, saved_P_ = P_, saved_vface_ = vface_, saved_free_ = free_;
+    for (uint32_t v = fixed_; v < P_.size() && !broken_; ++v) smooth(v);
+    if (broken_) restore();
+  }
+
+  // Flips edge i of f when the opposite corner is inside its circle.
+  void lawson() {
+    // A cap against cycles that rounding might still make: the try fails.
+    std::size_t budget = 4096;
+    while (!stack_.empty()) {
+      if (budget-- == 0) {
+        broken_ = true;
+        stack_.clear();
+        return;
+      }
+      const auto [f, i] = stack_.back();
+      stack_.pop_back();
+      if (F_[f].v[0] == kNone) continue;
+      flip_if_illegal(f, i);
+    }
+  }
+
+  void flip_if_illegal(uint32_t f, int i) {
+    const RFace Fa = F_[f];
+    const uint32_t n = Fa.n[i];
+    if (n == f) return;
+    const int k = Fa.tw[i];
+    const RFace N = F_[n];
+    const int b = next(i), c = prev(i);
+    for (int j : {b, c})
+      if (Fa.n[j] == f || Fa.n[j] == n) return;
+    for (int j : {next(k), prev(k)})
+      if (N.n[j] == f || N.n[j] == n) return;
+    const Corner2 A{Fa.v[i], Fa.t[i]}, B{Fa.v[b], Fa.t[b]}, C{Fa.v[c], Fa.t[c]};
+    const Corner2 D{N.v[k], T_.compose(Fa.nt[i], N.t[k])};
+    if (A.v == D.v) return;  // not simplicial: leave it
+    const Point pa = at(A.v, A.t), pb = at(B.v, B.t), pc = at(C.v, C.t), pd = at(D.v, D.t);
+    if (!in_circle(pa, pb, pc, pd)) return;
+    if (!(orientation(pa, pb, pd) > 0) || !(orientation(pa, pd, pc) > 0)) return;
+    const Outer oAB{Fa.n[c], Fa.tw[c], Fa.nt[c]}, oCA{Fa.n[b], Fa.tw[b], Fa.nt[b]};
+    const Outer oBD{N.n[next(k)], N.tw[next(k)], T_.compose(Fa.nt[i], N.nt[next(k)])};
+    const Outer oDC{N.n[prev(k)], N.tw[prev(k)], T_.compose(Fa.nt[i], N.nt[prev(k)])};
+    // f becomes (A, B, D), n becomes (A, D, C), both in f's frame.
+    RFace &X = F_[f];
+    X.v = {A.v, B.v, D.v}, X.t = {A.t, B.t, D.t};
+    RFace &Y = F_[n];
+    Y.v = {A.v, D.v, C.v}, Y.t = {A.t, D.t, C.t};
+    link(f, 0, oBD), link(f, 2, oAB), link(n, 0, oDC), link(n, 1, oCA);
+    X.n[1] = n, X.nt[1] = 0, X.tw[1] = 2;
+    Y.n[2] = f, Y.nt[2] = 0, Y.tw[2] = 1;
+    vface_[A.v] = f, vface_[B.v] = f, vface_[D.v] = f, vface_[C.v] = n;
+    for (int j = 0; j < 3; ++j) stack_.push_back({f, j}), stack_.push_back({n, j});
+  }
+
+  // Edge i of f faces edge o.tw of o.face, whose frame is o.nt in f's.
+  void link(uint32_t f, int i, const Outer &o) {
+    F_[f].n[i] = o.face, F_[f].nt[i] = o.nt, F_[f].tw[i] = int8_t(o.tw);
+    RFace &O = F_[o.face];
+    O.n[o.tw] = f, O.nt[o.tw] = T_.inverse(o.nt), O.tw[o.tw] = int8_t(i);
+  }
+
+  // Merges w into u: their stars become the fan from one point over the
+  // boundary of their union, at the point that makes the fan's largest
+  // circle smallest. False (nothing changed) when the union is not a disk
+  // the fan can fill.
+  bool merge(uint32_t u, uint32_t w, double cap, bool apply = true) {
+    estimate_ = INFINITY;
+    if (!movable(u) || !movable(w) || !star(u, &s_) || !star(w, &sw_)) return false;
+    const std::size_t d = s_.face.size(), dw = sw_.face.size();
+    std::size_t j = d;
+    for (std::size_t i = 0; i < d; ++i)
+      if (s_.link[i].v == w) {
+        if (j != d) return false;
+        j = i;
+      }
+    if (j == d) return false;
+    auto rot = [](Star &s, std::size_t by) {
+      std::rotate(s.face.begin(), s.face.begin() + by, s.face.end());
+      std::rotate(s.corner.begin(), s.corner.begin() + by, s.corner.end());
+      std::rotate(s.frame.begin(), s.frame.begin() + by, s.frame.end());
+      std::rotate(s.link.begin(), s.link.begin() + by, s.link.end());
+      std::rotate(s.outer.begin(), s.outer.begin() + by, s.outer.end());
+    };
+    rot(s_, j);
+    const TranslationId tw = s_.link[0].t;  // w's copy next to u
+    std::size_t ju = dw;
+    for (std::size_t i = 0; i < dw; ++i)
+      if (sw_.link[i].v == u) {
+        if (ju != dw) return false;
+        ju = i;
+      }
+    if (ju == dw) return false;
+    rot(sw_, ju);
+    for (Corner2 &c : sw_.link) c.t = T_.compose(tw, c.t);
+    for (Outer &o : sw_.outer) o.nt = T_.compose(tw, o.nt);
+    if (sw_.link[0].t != 0) return false;
+    auto same = [](const Corner2 &a, const Corner2 &b) { return a.v == b.v && a.t == b.t; };
+    if (d < 3 || dw < 3 || !same(s_.link.back(), sw_.link[1]) || !same(s_.link[1], sw_.link.back())) return false;
+    poly_.assign(s_.link.begin() + 1, s_.link.end());
+    poly_.insert(poly_.end(), sw_.link.begin() + 2, sw_.link.end() - 1);
+    outer_.assign(s_.outer.begin() + 1, s_.outer.end() - 1);
+    outer_.insert(outer_.end(), sw_.outer.begin() + 1, sw_.outer.end() - 1);
+    if (poly_.size() != outer_.size() || poly_.size() < 3) return false;
+    // A simplicial disk: no vertex twice on the boundary, no face twice.
+    ids_.clear();
+    for (const Corner2 &c : poly_) ids_.push_back(c.v);
+    std::sort(ids_.begin(), ids_.end());
+    if (std::adjacent_find(ids_.begin(), ids_.end()) != ids_.end()) return false;
+    if (std::binary_search(ids_.begin(), ids_.end(), u) || std::binary_search(ids_.begin(), ids_.end(), w)) return false;
+    old_.assign(s_.face.begin(), s_.face.end());
+    old_.insert(old_.end(), sw_.face.begin(), sw_.face.end());
+    std::sort(old_.begin(), old_.end());
+    old_.erase(std::unique(old_.begin(), old_.end()), old_.end());
+    if (old_.size() != d + dw - 2) return false;
+    for (const Outer &o : outer_)
+      if (std::binary_search(old_.begin(), old_.end(), o.face)) return false;
+    L_.clear();
+    for (const Corner2 &c : poly_) L_.push_back(at(c.v, c.t));
+    const Point pu = P_[u], pw = at(w, tw);
+    const Point m{pu[0] + pw[0], pu[1] + pw[1], pu[2] + pw[2]};
+    const double s = 1 / std::sqrt(dot(m, m));
+    Point p{m[0] * s, m[1] * s, m[2] * s};
+    estimate_ = best_fan_point(L_, &p);
+    if (!(estimate_ < cap) || !apply) return false;
+    saved_F_ = F_, saved_P_ = P_, saved_vface_ = vface_, saved_free_ = free_;
+    // The fan from u, in u's frame, over the polygon.
+    for (uint32_t f : old_) F_[f].v[0] = kNone, free_.push_back(f);
+    const std::size_t k = poly_.size();
+    fan_.resize(k);
+    for (std::size_t i = 0; i < k; ++i) fan_[i] = free_.back(), free_.pop_back();
+    for (std::size_t i = 0; i < k; ++i) {
+      const Corner2 &a = poly_[i], &b = poly_[(i + 1) % k];
+      RFace &R = F_[fan_[i]];
+      R.v = {u, a.v, b.v}, R.t = {0, a.t, b.t};
+      R.n[1] = fan_[(i + 1) % k], R.nt[1] = 0, R.tw[1] = 2;
+      R.n[2] = fan_[(i + k - 1) % k], R.nt[2] = 0, R.tw[2] = 1;
+      vface_[a.v] = fan_[i];
+    }
+    for (std::size_t i = 0; i < k; ++i) link(fan_[i], 0, outer_[i]);
+    vface_[u] = fan_[0], vface_[w] = kNone;
+    P_[u] = p;
+    for (uint32_t f : fan_)
+      for (int i = 0; i < 3; ++i) stack_.push_back({f, i});
+    lawson();
+    return true;
+  }
+
+  // After a merge at u: moves the vertices near u (two rings) until no
+  // circle there reaches `ok`; false if that fails.
+  bool repair(uint32_t u, double ok) {
+    region_.clear();
+    region_.push_back(u);
+    for (int ring = 0; ring < 2; ++ring) {
+      const std::size_t n = region_.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!star(region_[i], &s_)) return false;
+        for (const Corner2 &c : s_.link) region_.push_back(c.v);
+      }
+      std::sort(region_.begin(), region_.end());
+      region_.erase(std::unique(region_.begin(), region_.end()), region_.end());
+    }
+    std::vector<double> &largest = largest_;
+    for (int sweep = 0; sweep < 8; ++sweep) {
+      double worst = 0;
+      largest.assign(region_.size(), 0);
+      for (std::size_t i = 0; i < region_.size(); ++i) {
+        if (vface_[region_[i]] == kNone || !star(region_[i], &s_)) return false;
+        for (uint32_t f : s_.face) largest[i] = std::max(largest[i], face_radius(f));
+        worst = std::max(worst, largest[i]);
+      }
+      if (broken_) return false;
+      if (worst < ok) return true;
+      // Only vertices with a near-critical circle in their star can help.
+      bool moved = false;
+      for (std::size_t i = 0; i < region_.size(); ++i)
+        if (largest[i] >= ok * 0.99) moved = smooth(region_[i]) || moved;
+      if (!moved) return false;
+    }
+    return false;
+  }
+
+  // Edges between two movable vertices, shortest first.
+  std::vector<std::pair<double, std::array<uint32_t, 2>>> edges() {
+    std::vector<std::pair<double, std::array<uint32_t, 2>>> out;
+    for (uint32_t f = 0; f < F_.size(); ++f) {
+      const RFace &R = F_[f];
+      if (R.v[0] == kNone) continue;
+      for (int i = 0; i < 3; ++i) {
+        const int a = next(i), b = prev(i);
+        if (R.v[a] < R.v[b] && movable(R.v[a]) && movable(R.v[b]))
+          out.push_back({dot(corner(f, a), corner(f, b)), {R.v[a], R.v[b]}});
+      }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  void restore() {
+    broken_ = false;
+    F_.swap(saved_F_), P_.swap(saved_P_), vface_.swap(saved_vface_), free_.swap(saved_free_);
+    stack_.clear();
+  }
+
+  Triangulation &t_;
+  group::TranslationTable &T_;
+  const uint32_t fixed_;
+  const double limit_;
+  std::vector<RFace> F_, saved_F_;
+  std::vector<Point> P_, saved_P_, original_;
+  std::vector<uint32_t> vface_, saved_vface_, free_, saved_free_;
+  std::vector<std::pair<uint32_t, int>> stack_;
+  Star s_, sw_;
+  std::vector<Point> L_;
+  std::vector<Corner2> poly_;
+  std::vector<Outer> outer_;
+  std::vector<uint32_t> ids_, old_, fan_, region_;
+  double estimate_ = 0;  // the last merge's fan estimate
+  bool broken_ = false;   // the flips did not settle: the try fails
+  std::vector<double> largest_;
+};
+
+RelaxedDummies relax_dummy_points(Triangulation &t) { return DummyRelaxation(t).run(); }
+
+}  // namespace hdt::triangulation
