@@ -277,8 +277,10 @@ class DummyRelaxation {
 
   // Flips edge i of f when the opposite corner is inside its circle.
   void lawson() {
-    // A cap against cycles that rounding might still make: the try fails.
-    std::size_t budget = 4096;
+    // A cap against cycles that rounding makes (far corners at large genus:
+    // see kRelaxationGenusMax): the try fails. A merge or a move needs a
+    // few dozen flips.
+    std::size_t budget = 256;
     while (!stack_.empty()) {
       if (budget-- == 0) {
         broken_ = true;

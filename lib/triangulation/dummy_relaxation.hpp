@@ -28,9 +28,13 @@ struct RelaxedDummies {
 // pass found no merge.
 RelaxedDummies relax_dummy_points(Triangulation &t);
 
-// The largest genus relaxed: 1.46 times the area bound there, and the first
-// hdt_create about 0.8 s of CPU. At 128 the pass took 2 s and left 1.63
-// times the bound (fewer merges repaired), worse than the thinning's rounds.
-constexpr int kRelaxationGenusMax = 64;
+// The largest genus relaxed (1.42 times the area bound there; the first
+// hdt_create 0.65 s of CPU). Beyond it the double computations fail near
+// F_g's corners, whose coordinates grow like cot(pi/4g)^2 (2.6e4 at genus
+// 128): a corner lorentz(t) P_v with entries near 1e8 keeps only about 1e-4
+// of absolute accuracy, and a circle cancels four times the bits of its
+// coordinates. The ratio then climbs (1.46 to 1.56 at genus 52 to 63, 1.63
+// at 128) and the time passes 1 s: genus 49 .. 128 keep the local thinning.
+constexpr int kRelaxationGenusMax = 48;
 
 }  // namespace hdt::triangulation
