@@ -1,19 +1,24 @@
 // A smaller dummy set chosen in double precision (dummy_relaxation.hpp).
 //
 // A copy of the triangulation's faces (vertices, corner translations,
-// neighbours) with every vertex's point as a double hyperboloid vector in the
-// frame it is stored in: corner (v, t) is lorentz(t) P_v, so moving P_v moves
-// every copy of v. Three edits: Lawson flips (the copy stays Delaunay, in
-// double), moving a vertex inside its star, and merging the two ends of an
-// edge into one point (their stars become a fan). Nothing here decides the
-// certificate: the caller inserts the points it returns through the exact
-// Bowyer-Watson insertion and removes the old ones through the exact removal.
+// neighbours); every vertex has a chart, a boost centred at its first point,
+// and its point is a double hyperboloid vector in that chart, so moving it
+// moves every copy of the vertex. Three edits: Lawson flips (the copy stays
+// Delaunay, in double), moving a vertex inside its star, and merging the two
+// ends of an edge into one point (their stars become a fan). Nothing here
+// decides the certificate: the caller inserts the points it returns through
+// the exact Bowyer-Watson insertion and removes the old ones through the
+// exact removal.
 #include "triangulation/dummy_relaxation.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <utility>
 
+#include "group/word_matrix.hpp"
+#include "predicates/double_double.hpp"
+#include "predicates/stage_double_double.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
@@ -52,6 +57,41 @@ bool in_circle(const Point &a, const Point &b, const Point &c, const Point &d) {
   return s < -1e-9 * std::abs(ma);
 }
 
+using DD = predicates::DoubleDouble;
+using DDPoint = std::array<DD, 3>;
+
+DDPoint widen(const Point &p) { return {DD(p[0]), DD(p[1]), DD(p[2])}; }
+
+// Far from O at large genus (F_g's corners have coordinates near
+// cot(pi/4g)^2, 2.6e4 at genus 128; corner translations have matrix entries
+// near 1e8) a double corner lorentz(t) P keeps about 1e-4 of absolute
+// accuracy, and a circle formula cancels four times the bits of the
+// coordinates: from genus 52 on the double version's ratio climbed to 1.5
+// and its flips cycled. So each vertex's point lives in a chart near O, and
+// the maps between charts are computed in double-double from the words'
+// accurate matrices, then rounded: they are near the identity.
+struct Chart {
+  DD m[3][3];
+  explicit Chart(DDPoint a) {
+    // Onto the hyperboloid first (a double P_v is on it to about 1e-16 of
+    // its coordinates' square): 1 / sqrt(1 + d) to third order.
+    const DD d = a[0] * a[0] - a[1] * a[1] - a[2] * a[2] - DD(1);
+    const DD s = DD(1) - d * DD(0.5) + d * d * DD(0.375);
+    for (DD &x : a) x = x * s;
+    const DD k = DD(1) / (DD(1) + a[0]);
+    m[0][0] = a[0], m[0][1] = -a[1], m[0][2] = -a[2];
+    m[1][0] = -a[1], m[1][1] = DD(1) + a[1] * a[1] * k, m[1][2] = a[1] * a[2] * k;
+    m[2][0] = -a[2], m[2][1] = a[1] * a[2] * k, m[2][2] = DD(1) + a[2] * a[2] * k;
+  }
+  // m moves the centre to O; out of the chart: the inverse is J m^T J, J = diag(1, -1, -1).
+  Point back(const Point &q) const {
+    const DDPoint p = widen(q);
+    return {double(m[0][0] * p[0] - m[1][0] * p[1] - m[2][0] * p[2]),
+            double(-(m[0][1] * p[0]) + m[1][1] * p[1] + m[2][1] * p[2]),
+            double(-(m[0][2] * p[0]) + m[1][2] * p[1] + m[2][2] * p[2])};
+  }
+};
+
 Point from_disk(double x, double y) {
   const double w = 1 - x * x - y * y;
   return {(2 - w) / w, 2 * x / w, 2 * y / w};
@@ -72,22 +112,35 @@ class DummyRelaxation {
       for (int i = 0; i < 3; ++i) R.tw[i] = int8_t(t.twin(f, i));
     }
     const auto &vertices = t.vertices();
-    P_.resize(vertices.size());
+    // Each vertex gets a chart centred at its first point: P_ holds its
+    // point in it (O at first).
+    P_.assign(vertices.size(), Point{1, 0, 0});
     vface_.resize(vertices.size(), kNone);
-    for (uint32_t v = 0; v < vertices.size(); ++v)
-      if (vertices[v].alive()) P_[v] = from_disk(vertices[v].x, vertices[v].y), vface_[v] = vertices[v].face;
+    charts_.reserve(vertices.size());
+    transitions_.resize(vertices.size());
+    for (uint32_t v = 0; v < vertices.size(); ++v) {
+      const bool live = vertices[v].alive();
+      charts_.emplace_back(widen(live ? from_disk(vertices[v].x, vertices[v].y) : Point{1, 0, 0}));
+      if (live) vface_[v] = vertices[v].face;
+    }
     original_ = P_;
   }
 
   RelaxedDummies run() {
-    // Accepted below ok: a margin of 1e-3 in cosh(radius) absorbs the
-    // rounding of far copies at genus 64 (fewer removals refused). Merges
-    // are tried when their fan estimate is below cap: the repair saved
-    // almost none above 1.2 times the limit at genus 4 .. 32.
-    const double ok = limit_ * (1 - 1e-3), cap = limit_ * 1.2;
-    for (int s = 0; s < 3; ++s) smooth_all();
+    // The effort follows the cost: up to genus 32 six passes, three and two
+    // smoothing sweeps, merges ranked by their searched fan estimate and
+    // tried up to 1.2 times the limit (the repair saved almost none above);
+    // beyond, where the first hdt_create must stay within a second up to
+    // genus 128, two passes, one sweep each, ranked by the fan at the
+    // midpoint, tried up to 1.15 (1.1 left 1.50 at genus 48..128). A merge
+    // is kept when every circle near it is below ok, 1e-3 under the limit
+    // in cosh(radius), which the exact removal then rarely refuses.
+    const bool full = full_effort();
+    const double ok = limit_ * (1 - 1e-3), cap = limit_ * (full ? 1.2 : 1.15);
+    const int passes = full ? 6 : 2, first_sweeps = full ? 3 : 1, later_sweeps = full ? 2 : 1;
+    for (int s = 0; s < first_sweeps; ++s) smooth_all();
     std::size_t merged = 0;
-    for (int pass = 0; pass < 6; ++pass) {
+    for (int pass = 0; pass < passes; ++pass) {
       std::size_t merged_here = 0;
       // The most promising merges first: smallest fan estimate.
       auto candidates = edges();
@@ -106,7 +159,7 @@ class DummyRelaxation {
       }
       merged += merged_here;
       if (merged_here == 0) break;
-      for (int s = 0; s < 2; ++s) smooth_all();
+      for (int s = 0; s < later_sweeps; ++s) smooth_all();
     }
     RelaxedDummies out;
     if (merged == 0) return out;
@@ -116,7 +169,7 @@ class DummyRelaxation {
       if (kept) continue;
       out.removed.push_back(v);
       if (vface_[v] != kNone) {
-        const Point &p = P_[v];
+        const Point p = charts_[v].back(P_[v]);
         out.added.push_back({p[1] / (1 + p[0]), p[2] / (1 + p[0])});
         out.near.push_back(v);
       }
@@ -157,17 +210,59 @@ class DummyRelaxation {
     for (uint32_t v = fixed_; v < vface_.size(); ++v) n += vface_[v] != kNone;
     return n;
   }
+  bool full_effort() const { return t_.genus() <= 32; }
   bool movable(uint32_t v) const { return v >= fixed_ && vface_[v] != kNone; }
-  Point at(uint32_t v, TranslationId t) {
-    const group::Lorentz<double> &L = T_.lorentz(t);
-    const Point &p = P_[v];
-    Point r;
-    for (int i = 0; i < 3; ++i) r[i] = L.m[i][0] * p[0] + L.m[i][1] * p[1] + L.m[i][2] * p[2];
-    return r;
+  // The word's matrix in double-double (from its 133-bit matrix).
+  const std::array<std::array<DD, 3>, 3> &lorentz_dd(TranslationId t) {
+    if (dd_.size() <= std::size_t(t)) dd_.resize(std::max(T_.size(), std::size_t(t) + 1));
+    auto &slot = dd_[std::size_t(t)];
+    if (!slot) {
+      const group::Lorentz<predicates::MidReal> M =
+          group::accurate_lorentz_as<predicates::MidReal>(t_.surface().presentation(), T_.word(t));
+      slot = std::make_unique<std::array<std::array<DD, 3>, 3>>();
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) (*slot)[i][j] = predicates::round_to_fast(M.m[i][j]);
+    }
+    return *slot;
   }
-  Point corner(uint32_t f, int i) { return at(F_[f].v[i], F_[f].t[i]); }
+  // The copy t of w's point in v's chart (t relative to v's stored frame).
+  // The map from w's chart to v's, chart_v lorentz(t) chart_w^-1, is near
+  // the identity for neighbours: computed once in double-double, it is
+  // rounded to double and cached (charts never move).
+  Point local(uint32_t v, uint32_t w, TranslationId t) {
+    if (v == w && t == 0) return P_[v];
+    std::vector<Transition> &list = transitions_[v];
+    auto it = std::find_if(list.begin(), list.end(), [&](const Transition &x) { return x.w == w && x.t == t; });
+    if (it == list.end()) {
+      const Chart &cv = charts_[v], &cw = charts_[w];
+      std::array<std::array<DD, 3>, 3> A;  // chart_w^-1 = J m_w^T J
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) A[i][j] = ((i == 0) == (j == 0)) ? cw.m[j][i] : -cw.m[j][i];
+      if (t != 0) {
+        const auto &L = lorentz_dd(t);
+        std::array<std::array<DD, 3>, 3> B;
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) B[i][j] = L[i][0] * A[0][j] + L[i][1] * A[1][j] + L[i][2] * A[2][j];
+        A = B;
+      }
+      std::array<double, 9> M;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) M[3 * i + j] = double(cv.m[i][0] * A[0][j] + cv.m[i][1] * A[1][j] + cv.m[i][2] * A[2][j]);
+      list.push_back({w, t, M});
+      it = list.end() - 1;
+    }
+    const std::array<double, 9> &M = it->m;
+    const Point &q = P_[w];
+    return {M[0] * q[0] + M[1] * q[1] + M[2] * q[2], M[3] * q[0] + M[4] * q[1] + M[5] * q[2],
+            M[6] * q[0] + M[7] * q[1] + M[8] * q[2]};
+  }
+  // Corner j of f in the chart of corner i's vertex.
+  Point local_corner(uint32_t f, int i, int j) {
+    const RFace &R = F_[f];
+    return local(R.v[i], R.v[j], T_.compose(T_.inverse(R.t[i]), R.t[j]));
+  }
   double face_radius(uint32_t f) {
-    const Point a = corner(f, 0), b = corner(f, 1), c = corner(f, 2);
+    const Point a = P_[F_[f].v[0]], b = local_corner(f, 0, 1), c = local_corner(f, 0, 2);
     if (!(orientation(a, b, c) > 0)) return INFINITY;
     return cosh_circumradius(a, b, c);
   }
@@ -257,9 +352,9 @@ class DummyRelaxation {
   bool smooth(uint32_t v) {
     if (!movable(v) || !star(v, &s_)) return false;
     L_.clear();
-    for (const Corner2 &c : s_.link) L_.push_back(at(c.v, c.t));
-    const double current = fan(P_[v], L_);
+    for (const Corner2 &c : s_.link) L_.push_back(local(v, c.v, c.t));
     Point p = P_[v];
+    const double current = fan(p, L_);
     const double best = best_fan_point(L_, &p);
     if (!(best < current * (1 - 1e-7))) return false;
     P_[v] = p;
@@ -308,7 +403,9 @@ class DummyRelaxation {
     const Corner2 A{Fa.v[i], Fa.t[i]}, B{Fa.v[b], Fa.t[b]}, C{Fa.v[c], Fa.t[c]};
     const Corner2 D{N.v[k], T_.compose(Fa.nt[i], N.t[k])};
     if (A.v == D.v) return;  // not simplicial: leave it
-    const Point pa = at(A.v, A.t), pb = at(B.v, B.t), pc = at(C.v, C.t), pd = at(D.v, D.t);
+    const TranslationId back = T_.inverse(A.t);
+    const Point pa = P_[A.v], pb = local(A.v, B.v, T_.compose(back, B.t)), pc = local(A.v, C.v, T_.compose(back, C.t)),
+                pd = local(A.v, D.v, T_.compose(back, D.t));
     if (!in_circle(pa, pb, pc, pd)) return;
     if (!(orientation(pa, pb, pd) > 0) || !(orientation(pa, pd, pc) > 0)) return;
     const Outer oAB{Fa.n[c], Fa.tw[c], Fa.nt[c]}, oCA{Fa.n[b], Fa.tw[b], Fa.nt[b]};
@@ -389,12 +486,13 @@ class DummyRelaxation {
     for (const Outer &o : outer_)
       if (std::binary_search(old_.begin(), old_.end(), o.face)) return false;
     L_.clear();
-    for (const Corner2 &c : poly_) L_.push_back(at(c.v, c.t));
-    const Point pu = P_[u], pw = at(w, tw);
+    for (const Corner2 &c : poly_) L_.push_back(local(u, c.v, c.t));
+    const Point pu = P_[u], pw = local(u, w, tw);
     const Point m{pu[0] + pw[0], pu[1] + pw[1], pu[2] + pw[2]};
     const double s = 1 / std::sqrt(dot(m, m));
     Point p{m[0] * s, m[1] * s, m[2] * s};
-    estimate_ = best_fan_point(L_, &p);
+    // Ranking takes the fan at the midpoint; a try searches the best point.
+    estimate_ = apply || full_effort() ? best_fan_point(L_, &p) : fan(p, L_);
     if (!(estimate_ < cap) || !apply) return false;
     saved_F_ = F_, saved_P_ = P_, saved_vface_ = vface_, saved_free_ = free_;
     // The fan from u, in u's frame, over the polygon.
@@ -434,6 +532,7 @@ class DummyRelaxation {
       region_.erase(std::unique(region_.begin(), region_.end()), region_.end());
     }
     std::vector<double> &largest = largest_;
+    double previous = INFINITY;
     for (int sweep = 0; sweep < 8; ++sweep) {
       double worst = 0;
       largest.assign(region_.size(), 0);
@@ -444,6 +543,8 @@ class DummyRelaxation {
       }
       if (broken_) return false;
       if (worst < ok) return true;
+      if (!full_effort() && !(worst < previous)) return false;  // stalled
+      previous = worst;
       // Only vertices with a near-critical circle in their star can help.
       bool moved = false;
       for (std::size_t i = 0; i < region_.size(); ++i)
@@ -462,7 +563,7 @@ class DummyRelaxation {
       for (int i = 0; i < 3; ++i) {
         const int a = next(i), b = prev(i);
         if (R.v[a] < R.v[b] && movable(R.v[a]) && movable(R.v[b]))
-          out.push_back({dot(corner(f, a), corner(f, b)), {R.v[a], R.v[b]}});
+          out.push_back({dot(P_[R.v[a]], local_corner(f, a, b)), {R.v[a], R.v[b]}});
       }
     }
     std::sort(out.begin(), out.end());
@@ -479,6 +580,14 @@ class DummyRelaxation {
   group::TranslationTable &T_;
   const uint32_t fixed_;
   const double limit_;
+  struct Transition {
+    uint32_t w;
+    TranslationId t;
+    std::array<double, 9> m;
+  };
+  std::vector<std::unique_ptr<std::array<std::array<DD, 3>, 3>>> dd_;  // by translation id
+  std::vector<Chart> charts_;  // by vertex: centred at its first point
+  std::vector<std::vector<Transition>> transitions_;  // by vertex: its neighbours' copies
   std::vector<RFace> F_, saved_F_;
   std::vector<Point> P_, saved_P_, original_;
   std::vector<uint32_t> vface_, saved_vface_, free_, saved_free_;

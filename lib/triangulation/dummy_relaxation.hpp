@@ -28,13 +28,8 @@ struct RelaxedDummies {
 // pass found no merge.
 RelaxedDummies relax_dummy_points(Triangulation &t);
 
-// The largest genus relaxed (1.42 times the area bound there; the first
-// hdt_create 0.65 s of CPU). Beyond it the double computations fail near
-// F_g's corners, whose coordinates grow like cot(pi/4g)^2 (2.6e4 at genus
-// 128): a corner lorentz(t) P_v with entries near 1e8 keeps only about 1e-4
-// of absolute accuracy, and a circle cancels four times the bits of its
-// coordinates. The ratio then climbs (1.46 to 1.56 at genus 52 to 63, 1.63
-// at 128) and the time passes 1 s: genus 49 .. 128 keep the local thinning.
-constexpr int kRelaxationGenusMax = 48;
+// The largest genus relaxed: the thinning's (kThinningGenusMax). Beyond it
+// the certified removal of the old dummies alone took 2.5 s at genus 192.
+constexpr int kRelaxationGenusMax = 128;
 
 }  // namespace hdt::triangulation

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "predicates/representative.hpp"
@@ -86,15 +87,23 @@ class DummyThinning {
         limit_(t.surface().quarter_systole_cosh_rounded()) {}
 
   void run() {
-    // Eight rounds at most: later ones gained nothing at genus 2 .. 32.
     // Genus 3 .. kRelaxationGenusMax: the relaxation alone, from the refined
-    // set (the rounds below first gave nothing it does not find, and cost
-    // as much). Genus 2 keeps its published-size set of these rounds.
+    // set (the rounds below, run first, left it nothing more to find, and
+    // cost as much). Genus 2 keeps the 14-point set of the rounds.
     if (t_.genus() >= 3 && t_.genus() <= kRelaxationGenusMax) {
-      relax();
-      t_.compact_ids();
-      return;
+      bool relaxed = false;
+      try {
+        relaxed = relax();
+      } catch (const std::length_error &) {
+        // A frame's word beyond the canonical words' reach (met at genus
+        // 256): the relaxation touched only its copy; the rounds below run.
+      }
+      if (relaxed) {
+        t_.compact_ids();
+        return;
+      }
     }
+    // Eight rounds at most: later ones gained nothing at genus 2 .. 32.
     for (int round = 0, idle = 0; round < 8 && idle < 2; ++round) {
       const std::size_t before = t_.dummy_count();
       for (uint32_t v = fixed_; v < t_.vertices().size(); ++v)
@@ -111,11 +120,12 @@ class DummyThinning {
   // The double-precision relaxation's set (dummy_relaxation.hpp): its new
   // points go in by Bowyer-Watson, then the old dummies it dropped leave
   // through the certified removal; one it still needs stays.
-  void relax() {
+  bool relax() {
     const RelaxedDummies r = relax_dummy_points(t_);
-    if (r.removed.empty()) return;
+    if (r.removed.empty()) return false;
     for (std::size_t i = 0; i < r.added.size(); ++i) insert_dummy(r.added[i][0], r.added[i][1], r.near[i]);
     for (uint32_t v : r.removed) t_.remove(v);
+    return true;
   }
 
   // Small sets try every merge; larger ones only those the fan estimate
