@@ -13,7 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
+#include <unordered_map>
 #include <utility>
 
 #include "group/word_matrix.hpp"
@@ -213,42 +213,60 @@ class DummyRelaxation {
   bool full_effort() const { return t_.genus() <= 32; }
   bool movable(uint32_t v) const { return v >= fixed_ && vface_[v] != kNone; }
   // The word's matrix in double-double (from its 133-bit matrix).
+  // Cached by id in a hash map: a few thousand ids at genus 128, of the
+  // table's 2.6 * 10^5.
   const std::array<std::array<DD, 3>, 3> &lorentz_dd(TranslationId t) {
-    if (dd_.size() <= std::size_t(t)) dd_.resize(std::max(T_.size(), std::size_t(t) + 1));
-    auto &slot = dd_[std::size_t(t)];
-    if (!slot) {
+    auto it = dd_.find(t);
+    if (it == dd_.end()) {
       const group::Lorentz<predicates::MidReal> M =
           group::accurate_lorentz_as<predicates::MidReal>(t_.surface().presentation(), T_.word(t));
-      slot = std::make_unique<std::array<std::array<DD, 3>, 3>>();
+      std::array<std::array<DD, 3>, 3> L;
       for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) (*slot)[i][j] = predicates::round_to_fast(M.m[i][j]);
+        for (int j = 0; j < 3; ++j) L[i][j] = predicates::round_to_fast(M.m[i][j]);
+      it = dd_.emplace(t, L).first;
     }
-    return *slot;
+    return it->second;
   }
-  // The copy t of w's point in v's chart (t relative to v's stored frame).
-  // The map from w's chart to v's, chart_v lorentz(t) chart_w^-1, is near
-  // the identity for neighbours: computed once in double-double, it is
-  // rounded to double and cached (charts never move).
-  Point local(uint32_t v, uint32_t w, TranslationId t) {
-    if (v == w && t == 0) return P_[v];
+  // The copy of w's point in v's chart, for copies b of w and a of v in
+  // one frame (a = 0: v's stored frame). The map from w's chart to v's,
+  // chart_v lorentz(a)^-1 lorentz(b) chart_w^-1, is near the identity for
+  // neighbours: computed once in double-double from the words' accurate
+  // matrices, it is rounded to double and cached (charts never move). Keyed
+  // by both ids, which spares the translation table a product per query.
+  Point local(uint32_t v, TranslationId a, uint32_t w, TranslationId b) {
+    if (v == w && a == b) return P_[v];
     std::vector<Transition> &list = transitions_[v];
-    auto it = std::find_if(list.begin(), list.end(), [&](const Transition &x) { return x.w == w && x.t == t; });
+    auto it = std::find_if(list.begin(), list.end(),
+                           [&](const Transition &x) { return x.w == w && x.a == a && x.b == b; });
     if (it == list.end()) {
-      const Chart &cv = charts_[v], &cw = charts_[w];
-      std::array<std::array<DD, 3>, 3> A;  // chart_w^-1 = J m_w^T J
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) A[i][j] = ((i == 0) == (j == 0)) ? cw.m[j][i] : -cw.m[j][i];
-      if (t != 0) {
-        const auto &L = lorentz_dd(t);
-        std::array<std::array<DD, 3>, 3> B;
+      // Old neighbours pile up as merges change the stars: past 32 (a star
+      // has about 7 corners, each met in up to 3 frames) the list restarts.
+      if (list.size() >= 32) list.clear();
+      using Matrix = std::array<std::array<DD, 3>, 3>;
+      auto product = [](const Matrix &X, const Matrix &Y) {
+        Matrix Z;
         for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) B[i][j] = L[i][0] * A[0][j] + L[i][1] * A[1][j] + L[i][2] * A[2][j];
-        A = B;
-      }
+          for (int j = 0; j < 3; ++j) Z[i][j] = X[i][0] * Y[0][j] + X[i][1] * Y[1][j] + X[i][2] * Y[2][j];
+        return Z;
+      };
+      // The inverse of a Lorentz matrix is J X^T J, J = diag(1, -1, -1).
+      auto inverse = [](const Matrix &X) {
+        Matrix Z;
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) Z[i][j] = ((i == 0) == (j == 0)) ? X[j][i] : -X[j][i];
+        return Z;
+      };
+      Matrix cv, A;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) cv[i][j] = charts_[v].m[i][j], A[i][j] = charts_[w].m[i][j];
+      A = inverse(A);
+      if (b != 0) A = product(lorentz_dd(b), A);
+      if (a != 0) A = product(inverse(lorentz_dd(a)), A);
+      A = product(cv, A);
       std::array<double, 9> M;
       for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) M[3 * i + j] = double(cv.m[i][0] * A[0][j] + cv.m[i][1] * A[1][j] + cv.m[i][2] * A[2][j]);
-      list.push_back({w, t, M});
+        for (int j = 0; j < 3; ++j) M[3 * i + j] = double(A[i][j]);
+      list.push_back({w, a, b, M});
       it = list.end() - 1;
     }
     const std::array<double, 9> &M = it->m;
@@ -256,10 +274,11 @@ class DummyRelaxation {
     return {M[0] * q[0] + M[1] * q[1] + M[2] * q[2], M[3] * q[0] + M[4] * q[1] + M[5] * q[2],
             M[6] * q[0] + M[7] * q[1] + M[8] * q[2]};
   }
+  Point local(uint32_t v, uint32_t w, TranslationId t) { return local(v, 0, w, t); }
   // Corner j of f in the chart of corner i's vertex.
   Point local_corner(uint32_t f, int i, int j) {
     const RFace &R = F_[f];
-    return local(R.v[i], R.v[j], T_.compose(T_.inverse(R.t[i]), R.t[j]));
+    return local(R.v[i], R.t[i], R.v[j], R.t[j]);
   }
   double face_radius(uint32_t f) {
     const Point a = P_[F_[f].v[0]], b = local_corner(f, 0, 1), c = local_corner(f, 0, 2);
@@ -403,9 +422,8 @@ class DummyRelaxation {
     const Corner2 A{Fa.v[i], Fa.t[i]}, B{Fa.v[b], Fa.t[b]}, C{Fa.v[c], Fa.t[c]};
     const Corner2 D{N.v[k], T_.compose(Fa.nt[i], N.t[k])};
     if (A.v == D.v) return;  // not simplicial: leave it
-    const TranslationId back = T_.inverse(A.t);
-    const Point pa = P_[A.v], pb = local(A.v, B.v, T_.compose(back, B.t)), pc = local(A.v, C.v, T_.compose(back, C.t)),
-                pd = local(A.v, D.v, T_.compose(back, D.t));
+    const Point pa = P_[A.v], pb = local(A.v, A.t, B.v, B.t), pc = local(A.v, A.t, C.v, C.t),
+                pd = local(A.v, A.t, D.v, D.t);
     if (!in_circle(pa, pb, pc, pd)) return;
     if (!(orientation(pa, pb, pd) > 0) || !(orientation(pa, pd, pc) > 0)) return;
     const Outer oAB{Fa.n[c], Fa.tw[c], Fa.nt[c]}, oCA{Fa.n[b], Fa.tw[b], Fa.nt[b]};
@@ -582,10 +600,10 @@ class DummyRelaxation {
   const double limit_;
   struct Transition {
     uint32_t w;
-    TranslationId t;
+    TranslationId a, b;
     std::array<double, 9> m;
   };
-  std::vector<std::unique_ptr<std::array<std::array<DD, 3>, 3>>> dd_;  // by translation id
+  std::unordered_map<TranslationId, std::array<std::array<DD, 3>, 3>> dd_;
   std::vector<Chart> charts_;  // by vertex: centred at its first point
   std::vector<std::vector<Transition>> transitions_;  // by vertex: its neighbours' copies
   std::vector<RFace> F_, saved_F_;
