@@ -1,4 +1,6 @@
 // Thinning of the dummy point set: fewer dummies, the same certificate.
+// Genus 3 .. 128 use the relaxation of dummy_relaxation.hpp; genus 2 the
+// local moves below.
 //
 // The refinement of dummy_points.cpp inserts circumcentres of the largest
 // circles, which leaves about twice the area lower bound, and no single dummy
@@ -22,9 +24,10 @@ class Triangulation;
 void thin_dummy_points(Triangulation &t);
 
 // The largest genus thinned (a test certifies the set at this genus). At
-// 128 the pass makes the first hdt_create about 0.5 s slower (0.25 -> 0.77
-// s of CPU); at 256 it would take 29 s of CPU instead of 0.9 s (2302 dummies
-// instead of 2963): beyond 128 the refined set is kept (about 2x the bound).
+// 128 the relaxation makes the first hdt_create about 0.6 s slower (0.25 ->
+// 0.85 s of CPU); the local rounds would take 29 s at 256, and the
+// relaxation's exact removals alone 2.5 s at 192: beyond 128 the refined
+// set is kept (about 2x the bound).
 constexpr int kThinningGenusMax = 128;
 
 }  // namespace hdt::triangulation
