@@ -50,30 +50,42 @@ static inline hdt_triangulation *new_triangulation(int g) {
   return t;
 }
 
-/* n random points (x, y pairs, malloc'ed) of the disk of radius 0.4:
-   inside F_g for every genus (the sides' midpoints are at radius > 0.64),
-   so no point is on F_g's boundary and each is its own representative
-   (hdt_vertex_point gives it back bit for bit). */
-static inline double *small_disk_points(size_t n, uint64_t seed) {
+/* n points uniform in the disk of radius r about 0 (malloc'd, 2n doubles). */
+static inline double *uniform_disk_points(size_t n, uint64_t seed, double r) {
   double *xy = (double *)malloc((2 * n + 1) * sizeof *xy);
   ck_assert_ptr_nonnull(xy);
   for (size_t i = 0; i < n;) {
-    const double x = 0.8 * uniform01(&seed) - 0.4, y = 0.8 * uniform01(&seed) - 0.4;
-    if (x * x + y * y >= 0.4 * 0.4) continue;
+    const double x = 2 * r * uniform01(&seed) - r, y = 2 * r * uniform01(&seed) - r;
+    if (x * x + y * y >= r * r) continue;
     xy[2 * i] = x, xy[2 * i + 1] = y;
     ++i;
   }
   return xy;
 }
 
-/* A triangulation of small_disk_points(n, seed), dummies removed or kept. */
-static inline hdt_triangulation *small_disk_triangulation(int genus, size_t n, uint64_t seed, int remove_dummies) {
+/* n random points (x, y pairs, malloc'ed) of the disk of radius 0.4:
+   inside F_g for every genus (the sides' midpoints are at radius > 0.64),
+   so no point is on F_g's boundary and each is its own representative
+   (hdt_vertex_point gives it back bit for bit). */
+static inline double *small_disk_points(size_t n, uint64_t seed) { return uniform_disk_points(n, seed, 0.4); }
+
+/* A triangulation of uniform_disk_points(n, seed, r), dummies removed or kept. */
+static inline hdt_triangulation *disk_triangulation(int genus, size_t n, uint64_t seed, double r, int remove_dummies) {
   hdt_triangulation *t = new_triangulation(genus);
-  double *xy = small_disk_points(n, seed);
+  double *xy = uniform_disk_points(n, seed, r);
   expect(hdt_insert_many(t, xy, n, NULL) == HDT_OK, "hdt_insert_many: %s", hdt_last_error_message());
   if (remove_dummies) expect(hdt_remove_dummies(t, NULL) == HDT_OK, "hdt_remove_dummies: %s", hdt_last_error_message());
   free(xy);
   return t;
+}
+/* Of small_disk_points. */
+static inline hdt_triangulation *small_disk_triangulation(int genus, size_t n, uint64_t seed, int remove_dummies) {
+  return disk_triangulation(genus, n, seed, 0.4, remove_dummies);
+}
+/* Of points in the disk of radius 0.95: many outside F_g, so that vertices
+   have homes other than the identity. */
+static inline hdt_triangulation *wide_disk_triangulation(int genus, size_t n, uint64_t seed, int remove_dummies) {
+  return disk_triangulation(genus, n, seed, 0.95, remove_dummies);
 }
 
 #if defined(_POSIX_C_SOURCE) && _POSIX_C_SOURCE >= 199309L

@@ -153,25 +153,9 @@ static const setup setups[] = {{2, 0, 0, 0},   {2, 150, 1, 0}, {3, 120, 0, 0}, {
                                {4, 250, 1, 0}, {2, 200, 1, 1}, {3, 150, 0, 1}};
 #define SETUPS (sizeof setups / sizeof setups[0])
 
-static hdt_triangulation *wide_triangulation(int genus, size_t n, uint64_t seed, int remove_dummies) {
-  hdt_triangulation *t = NULL;
-  OK(hdt_create(&t, genus));
-  double *xy = need(malloc((2 * n + 1) * sizeof *xy));
-  for (size_t i = 0; i < n;) {
-    const double x = 1.9 * uniform01(&seed) - 0.95, y = 1.9 * uniform01(&seed) - 0.95;
-    if (x * x + y * y >= 0.95 * 0.95) continue;
-    xy[2 * i] = x, xy[2 * i + 1] = y;
-    ++i;
-  }
-  OK(hdt_insert_many(t, xy, n, NULL));
-  if (remove_dummies) OK(hdt_remove_dummies(t, NULL));
-  free(xy);
-  return t;
-}
-
 static void load(size_t k, dual *d) {
   const setup *s = &setups[k];
-  read_dual(s->wide ? wide_triangulation(s->g, s->n, 0x5eed + k, s->remove_dummies)
+  read_dual(s->wide ? wide_disk_triangulation(s->g, s->n, 0x5eed + k, s->remove_dummies)
                     : small_disk_triangulation(s->g, s->n, 0x5eed + k, s->remove_dummies),
             d);
 }
@@ -719,7 +703,7 @@ static void check_cells_against_vertices(hdt_triangulation *t, int round) {
 }
 
 START_TEST(cells_follow_changes) {
-  hdt_triangulation *t = wide_triangulation(2, 150, 0xce11, 1);
+  hdt_triangulation *t = wide_disk_triangulation(2, 150, 0xce11, 1);
   uint64_t seed = 0xce12;
   for (int round = 0; round < 4; ++round) {
     check_cells_against_vertices(t, round);

@@ -14,21 +14,6 @@ static void *need(void *p) {
   return p;
 }
 
-/* n points uniform in the disk of radius 0.95: many outside F_g, so that
-   vertices have homes other than the identity. */
-static hdt_triangulation *wide_triangulation(int genus, size_t n, uint64_t seed) {
-  hdt_triangulation *t = new_triangulation(genus);
-  double *xy = need(malloc((2 * n + 1) * sizeof *xy));
-  for (size_t i = 0; i < n;) {
-    const double x = 1.9 * uniform01(&seed) - 0.95, y = 1.9 * uniform01(&seed) - 0.95;
-    if (x * x + y * y >= 0.95 * 0.95) continue;
-    xy[2 * i] = x, xy[2 * i + 1] = y;
-    ++i;
-  }
-  OK(hdt_insert_many(t, xy, n, NULL));
-  free(xy);
-  return t;
-}
 
 /* Removes every k-th live vertex that may go (gaps in the ids). */
 static void remove_some(hdt_triangulation *t, size_t k, size_t from) {
@@ -145,7 +130,7 @@ START_TEST(rows_equal_the_per_vertex_functions) {
     snprintf(what, sizeof what, "genus %d, every fifth vertex removed", g);
     check_rows(t, what);
     hdt_destroy(t);
-    t = wide_triangulation(g, 400, 0x77 + g);
+    t = wide_disk_triangulation(g, 400, 0x77 + g, 0);
     snprintf(what, sizeof what, "genus %d, spread over the disk", g);
     check_rows(t, what);
     OK(hdt_remove_dummies(t, NULL));
@@ -172,7 +157,7 @@ START_TEST(rows_equal_the_per_vertex_functions) {
   hdt_triangulation *t = new_triangulation(2);
   check_rows(t, "genus 2, the dummies alone");
   hdt_destroy(t);
-  t = wide_triangulation(2, 3000, 0x99);
+  t = wide_disk_triangulation(2, 3000, 0x99, 0);
   OK(hdt_remove_dummies(t, NULL));
   check_rows(t, "genus 2, 3000 points");
   hdt_destroy(t);
@@ -182,7 +167,7 @@ END_TEST
 /* The triangulation changes between calls: the rows follow (the centre
    cache's stale entries are never read). */
 START_TEST(rows_follow_changes) {
-  hdt_triangulation *t = wide_triangulation(2, 150, 0xce11);
+  hdt_triangulation *t = wide_disk_triangulation(2, 150, 0xce11, 0);
   OK(hdt_remove_dummies(t, NULL));
   uint64_t seed = 0xce12;
   for (int round = 0; round < 3; ++round) {
@@ -257,7 +242,7 @@ END_TEST
    child process (limited_child.h); not under a sanitizer or valgrind,
    which reserve address space of their own. */
 static void out_of_memory_child(void) {
-  hdt_triangulation *t = wide_triangulation(2, 100000, 0xe0e0);
+  hdt_triangulation *t = wide_disk_triangulation(2, 100000, 0xe0e0, 0);
   const size_t F = hdt_face_count(t), bound = hdt_vertex_id_bound(t);
   size_t *offsets = malloc((bound + 1) * sizeof *offsets);
   uint32_t *faces = malloc(3 * F * sizeof *faces), *before = malloc(3 * F * sizeof *before);

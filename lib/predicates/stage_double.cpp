@@ -66,15 +66,11 @@ Sign DoubleStage::disk_in_circle(const FilteredPoint &fa, const FilteredPoint &f
   const DiskPoint a = disk_point(fa), b = disk_point(fb), c = disk_point(fc), e = disk_point(fe);
   const double eta = (std::max(std::max(b.error, c.error), e.error) + a.error) * (1 + kUnit);
   if (!(eta < 1e-3)) return Sign::undecided;  // also NaN
+  const DiskDeterminant d = disk_in_circle_determinant(a.x, a.y, b.x, b.y, c.x, c.y, e.x, e.y);
+  // The differences again, for the bound.
   const double bdx = b.x - a.x, bdy = b.y - a.y, cdx = c.x - a.x, cdy = c.y - a.y;
   const double edx = e.x - a.x, edy = e.y - a.y;
   const double lb = bdx * bdx + bdy * bdy, lc = cdx * cdx + cdy * cdy, le = edx * edx + edy * edy;
-  const double ce1 = cdx * edy, ce2 = edx * cdy;
-  const double eb1 = edx * bdy, eb2 = bdx * edy;
-  const double bc1 = bdx * cdy, bc2 = cdx * bdy;
-  const double value = (lb * (ce1 - ce2) + lc * (eb1 - eb2)) + le * (bc1 - bc2);
-  const double permanent = (lb * (std::abs(ce1) + std::abs(ce2)) + lc * (std::abs(eb1) + std::abs(eb2))) +
-                           le * (std::abs(bc1) + std::abs(bc2));
   // Rows (dx, dy, |d|^2): each of the 6 products of the expansion takes one
   // entry of each column and moves by at most eta Y L + X eta L +
   // X Y 2 (X + Y) eta.
@@ -82,23 +78,18 @@ Sign DoubleStage::disk_in_circle(const FilteredPoint &fa, const FilteredPoint &f
   const double Y = std::max(std::max(std::abs(bdy), std::abs(cdy)), std::abs(edy)) * 1.01 + eta;
   const double L = std::max(std::max(lb, lc), le) * 1.01 + 2 * (X + Y) * eta;
   const double input = 6 * eta * (X + Y) * (L + 2 * X * Y);
-  return sign_of(-value, (12 * kUnit * permanent + input) * 1.02);
+  return sign_of(-d.value, (12 * kUnit * d.permanent + input) * 1.02);
 }
 
 Sign DoubleStage::disk_orientation(const FilteredPoint &fa, const FilteredPoint &fb, const FilteredPoint &fc) {
   const DiskPoint a = disk_point(fa), b = disk_point(fb), c = disk_point(fc);
   const double ea = a.error, eta = (std::max(b.error, c.error) + ea) * (1 + kUnit);
   if (!(eta < 1e-3)) return Sign::undecided;  // also NaN
+  const DiskDeterminant d = disk_orientation_determinant(a.x, a.y, b.x, b.y, c.x, c.y);
   const double ax = a.x, ay = a.y;
   const double bdx = b.x - ax, bdy = b.y - ay, cdx = c.x - ax, cdy = c.y - ay;
   const double wa = 1 - (ax * ax + ay * ay);
   const double lb = bdx * bdx + bdy * bdy, lc = cdx * cdx + cdy * cdy;
-  const double p1 = bdx * cdy, p2 = cdx * bdy;
-  const double q1 = ax * cdy, q2 = ay * cdx;
-  const double r1 = ax * bdy, r2 = ay * bdx;
-  const double value = (wa * (p1 - p2) - lb * (q1 - q2)) + lc * (r1 - r2);
-  const double permanent = (std::abs(p1) + std::abs(p2)) + lb * (std::abs(q1) + std::abs(q2)) +
-                           lc * (std::abs(r1) + std::abs(r2));
   // Rows (w_a, a_x, a_y), (|d|^2, dx, dy) for b and c. a moves by ea: w_a
   // by at most 3 ea (|a| <= 1 + ea), |a_x| + |a_y| stays below A. The
   // term w_a (bdx cdy - cdx bdy) moves by 3 ea 2 X Y + W 2 eta (X + Y); each
@@ -111,7 +102,7 @@ Sign DoubleStage::disk_orientation(const FilteredPoint &fa, const FilteredPoint 
   const double W = std::abs(wa) + 3.01 * kUnit + 3 * ea;
   const double input = 6 * ea * X * Y + 2 * W * eta * (X + Y) +
                        2 * (2 * (X + Y) * eta * A * (X + Y) + Lm * (ea * (X + Y) + 2 * A * eta));
-  return sign_of(value, (12 * kUnit * permanent + input) * 1.02);
+  return sign_of(d.value, (12 * kUnit * d.permanent + input) * 1.02);
 }
 
 Sign DoubleStage::large_circumdisk(const FilteredPoint &a, const FilteredPoint &b, const FilteredPoint &c) const {

@@ -102,7 +102,11 @@ Point from_disk(double x, double y) {
 class DummyRelaxation {
  public:
   DummyRelaxation(Triangulation &t, double cap_factor)
-      : t_(t), T_(t.table()), cap_factor_(cap_factor), fixed_(uint32_t(2 * t.genus() + 2)), limit_(t.surface().quarter_systole_cosh_rounded()) {
+      : t_(t),
+        T_(t.table()),
+        cap_factor_(cap_factor),
+        fixed_(uint32_t(2 * t.genus() + 2)),
+        limit_(t.surface().quarter_systole_cosh_rounded()) {
     const auto &faces = t.faces();
     F_.resize(faces.size());
     for (uint32_t f = 0; f < faces.size(); ++f) {
@@ -494,7 +498,8 @@ class DummyRelaxation {
     for (const Corner2 &c : poly_) ids_.push_back(c.v);
     std::sort(ids_.begin(), ids_.end());
     if (std::adjacent_find(ids_.begin(), ids_.end()) != ids_.end()) return false;
-    if (std::binary_search(ids_.begin(), ids_.end(), u) || std::binary_search(ids_.begin(), ids_.end(), w)) return false;
+    if (std::binary_search(ids_.begin(), ids_.end(), u) || std::binary_search(ids_.begin(), ids_.end(), w))
+      return false;
     old_.assign(s_.face.begin(), s_.face.end());
     old_.insert(old_.end(), sw_.face.begin(), sw_.face.end());
     std::sort(old_.begin(), old_.end());
