@@ -60,6 +60,8 @@ CyclotomicField::CyclotomicField(int n) : n_(n) {
   if (n < 1) throw std::invalid_argument("cyclotomic field order must be positive");
   modulus_ = cyclotomic_polynomial(n);
   degree_ = int(modulus_.size()) - 1;
+  for (std::size_t i = 0; i < std::size_t(degree_); ++i)
+    if (modulus_[i] != 0) modulus_nonzero_.push_back(i);
   negacyclic_ = (n & (n - 1)) == 0 && n >= 2;
 }
 
@@ -90,9 +92,11 @@ void CyclotomicField::reduce(std::vector<Integer> &c) const {
     }
   } else {
     for (std::size_t k = c.size(); k-- > d;) {
-      const Integer t = c[k];
+      // Phi_n is monic: its leading term cancels c[k], which the loop does
+      // not write (and the resize drops), so t may refer to it.
+      const Integer &t = c[k];
       if (t == 0) continue;
-      for (std::size_t i = 0; i <= d; ++i) c[k - d + i] -= t * modulus_[i];
+      for (const std::size_t i : modulus_nonzero_) c[k - d + i] -= t * modulus_[i];
     }
   }
   c.resize(d);

@@ -64,6 +64,10 @@ class CyclotomicField {
   int n_;
   int degree_;
   std::vector<Integer> modulus_;  // Phi_n, monic, degree_ + 1 coefficients, low first
+  // The indices of Phi_n's nonzero coefficients below the leading one, the
+  // reduction's only work: for 8g = 2^(3+j) m, m odd > 1, Phi_8g(x) =
+  // Phi_m(-x^(4 2^j)) has them at multiples of 4 only.
+  std::vector<std::size_t> modulus_nonzero_;
   bool negacyclic_;                // Phi_n = x^degree + 1 (n a power of two)
 };
 
