@@ -94,7 +94,7 @@ HDT_API int hdt_abi_version(void) HDT_NOEXCEPT;
 /* Largest genus hdt_create accepts (HDT_ENOTSUP, naming this limit, above
    it), the largest at which a test builds and certifies the dummy points.
    The first triangulation of a genus in a process builds them: measured as
-   above, 0.3 to 0.4 s of CPU at genus 64, 0.6 to 0.9 s at 128 (up to 1 s
+   above, 0.3 to 0.4 s of CPU at genus 64, 0.6 to 0.9 s at 128 (0.9 s
    at 127), 1 s and 240 MiB at 256 (where the set is not thinned: about
    twice as many points); later ones copy them (16 ms at 128, 55 ms at
    256). May grow in later versions. */
