@@ -129,7 +129,8 @@ void AllStars::build(const Triangulation &tri, bool matrices) {
 }
 
 template <class U, class Emit>
-void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *offsets, Emit &&emit) const {
+void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *offsets, const Point *prefetch,
+                    Emit &&emit) const {
   constexpr U top = U(1) << (std::numeric_limits<U>::digits - 1);
   const std::vector<Vertex> &V = tri.vertices();
   const auto *entry = rows.entry.get();
@@ -162,9 +163,9 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
     };
     // The centres of the rows a few vertices on: the cells read them in
     // the vertices' order, scattered over the faces.
-    if (prefetch_)
+    if (prefetch)
       for (std::size_t i = 0, a = std::size_t(b) + 64; i < d && a < entries_; ++i, ++a)
-        __builtin_prefetch(prefetch_ + (entry[a].k & ~top) / 3);
+        __builtin_prefetch(prefetch + (entry[a].k & ~top) / 3);
     // In star order: from the vertex's stored face, the entry of the face
     // the previous one leads to. A row lists its faces in increasing order
     // (the scatter ran in face order), so in a small row (nearly all) the
@@ -197,14 +198,13 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
       }
       if (wrong != 0 || used != (1u << d) - 1 || f != first) throw broken(v);
       continue;
-    } else {
-      for (std::size_t j = 0; j < d; ++j) {
-        std::size_t i = 0;
-        while (i < d && face(i) != f) ++i;
-        if (i == d) throw broken(v);
-        put(j, i, f);
-        f = uint32_t(row[i].next);
-      }
+    }
+    for (std::size_t j = 0; j < d; ++j) {
+      std::size_t i = 0;
+      while (i < d && face(i) != f) ++i;
+      if (i == d) throw broken(v);
+      put(j, i, f);
+      f = uint32_t(row[i].next);
     }
     if (d == 0 || f != first) throw broken(v);
   }
@@ -212,18 +212,18 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
 }
 
 template <class Emit>
-void AllStars::dispatch(const Triangulation &tri, std::size_t *offsets, Emit &&emit) const {
-  if (wide_) each(tri, large_, offsets, emit);
-  else each(tri, small_, offsets, emit);
+void AllStars::dispatch(const Triangulation &tri, std::size_t *offsets, const Point *prefetch, Emit &&emit) const {
+  if (wide_) each(tri, large_, offsets, prefetch, emit);
+  else each(tri, small_, offsets, prefetch, emit);
 }
 
 void AllStars::write(const Triangulation &tri, std::size_t *offsets, uint32_t *faces, uint8_t *corners,
                      int32_t *translations) const {
   if (!faces && !corners && !translations) {
-    dispatch(tri, offsets, [](std::size_t, uint32_t, int, TranslationId) {});
+    dispatch(tri, offsets, nullptr, [](std::size_t, uint32_t, int, TranslationId) {});
     return;
   }
-  dispatch(tri, offsets, [&](std::size_t j, uint32_t f, int c, TranslationId t) {
+  dispatch(tri, offsets, nullptr, [&](std::size_t j, uint32_t f, int c, TranslationId t) {
     if (faces) faces[j] = f;
     if (corners) corners[j] = uint8_t(c);
     if (translations) translations[j] = t;
@@ -234,12 +234,10 @@ void AllStars::write_cells(const Triangulation &tri, std::size_t *offsets, doubl
   group::TranslationTable &T = tri.table();
   // hdt_voronoi_cell's expression, for the same bits. The centres are read
   // in the rows' order, scattered: each() prefetches them a few rows on.
-  prefetch_ = centre;
-  dispatch(tri, offsets, [&](std::size_t j, uint32_t f, int, TranslationId t) {
+  dispatch(tri, offsets, centre, [&](std::size_t j, uint32_t f, int, TranslationId t) {
     const Point p = t == 0 ? centre[f] : T.moebius(t).apply(centre[f]);
     xy[2 * j] = p.re, xy[2 * j + 1] = p.im;
   });
-  prefetch_ = nullptr;
 }
 
 }  // namespace hdt::triangulation

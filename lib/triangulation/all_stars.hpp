@@ -41,11 +41,13 @@ class AllStars {
   template <class U>
   void build_rows(const Triangulation &tri, bool matrices, Rows<U> &rows);
   // For each live vertex by id, in star order: emit(entry, face, corner,
-  // translation); offsets written when not null.
+  // translation); offsets written when not null. prefetch (may be null):
+  // per-face data emit reads, fetched a few rows ahead.
   template <class U, class Emit>
-  void each(const Triangulation &tri, const Rows<U> &rows, std::size_t *offsets, Emit &&emit) const;
+  void each(const Triangulation &tri, const Rows<U> &rows, std::size_t *offsets, const Point *prefetch,
+            Emit &&emit) const;
   template <class Emit>
-  void dispatch(const Triangulation &tri, std::size_t *offsets, Emit &&emit) const;
+  void dispatch(const Triangulation &tri, std::size_t *offsets, const Point *prefetch, Emit &&emit) const;
 
   // Per entry, its corner k = 3f + c and the next face about the vertex
   // (counterclockwise); a row in face order. The top bit of k marks a
@@ -65,7 +67,6 @@ class AllStars {
   bool wide_ = false;
   std::size_t entries_ = 0;
   std::vector<std::pair<uint64_t, TranslationId>> moved_;
-  mutable const Point *prefetch_ = nullptr;  // write_cells' centres, prefetched by each()
 };
 
 }  // namespace hdt::triangulation
