@@ -39,7 +39,7 @@ class DummyBuilder {
       for (int i = 0; i < 3; ++i) stack_.push_back({f, i});
     lawson();
     refine();
-    if (t_.genus() <= kThinningGenusMax) thin_dummy_points(t_);
+    thin_dummy_points(t_);
     t_.validate();  // the certificate
     auto result = std::make_shared<DummyTemplate>();
     result->genus = t_.genus();

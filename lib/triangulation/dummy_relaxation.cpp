@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <unordered_map>
 #include <utility>
 
@@ -149,7 +150,7 @@ class DummyRelaxation {
       // The most promising merges first: smallest fan estimate.
       auto candidates = edges();
       for (auto &e : candidates) {
-        merge(e.second[0], e.second[1], cap, false);
+        beyond_reach([&] { merge(e.second[0], e.second[1], cap, false); });
         e.first = estimate_;
       }
       std::sort(candidates.begin(), candidates.end());
@@ -157,9 +158,11 @@ class DummyRelaxation {
         const uint32_t u = e.second[0], w = e.second[1];
         if (e.first >= cap) break;
         if (vface_[u] == kNone || vface_[w] == kNone) continue;
-        if (!merge(u, w, cap)) continue;
-        if (repair(u, ok)) ++merged_here;
-        else restore();
+        bool kept = false;
+        saved_ = false;  // merge saves the state once it changes it
+        beyond_reach([&] { kept = merge(u, w, cap) && repair(u, ok); });
+        if (kept) ++merged_here;
+        else if (saved_) restore();
       }
       merged += merged_here;
       if (merged_here == 0) break;
@@ -215,6 +218,21 @@ class DummyRelaxation {
     return n;
   }
   bool full_effort() const { return t_.genus() <= 32; }
+  // Runs a step; true when a frame it needed lies beyond the canonical
+  // words' reach (std::length_error: above genus 128, copies near F_g's
+  // corners two faces out have words of 2g + 1 letters). Every product is
+  // taken before the faces it describes change, so the faces stay whole;
+  // the caller undoes or drops the step.
+  template <class Step>
+  bool beyond_reach(Step &&step) {
+    try {
+      step();
+      return false;
+    } catch (const std::length_error &) {
+      estimate_ = INFINITY;
+      return true;
+    }
+  }
   bool movable(uint32_t v) const { return v >= fixed_ && vface_[v] != kNone; }
   // The word's matrix in double-double (from its 133-bit matrix).
   // Cached by id in a hash map: a few thousand ids at genus 128, of the
@@ -388,8 +406,9 @@ class DummyRelaxation {
   }
 
   void smooth_all() {
-    saved_F_ = F_, saved_P_ = P_, saved_vface_ = vface_, saved_free_ = free_;
-    for (uint32_t v = fixed_; v < P_.size() && !broken_; ++v) smooth(v);
+    save();
+    for (uint32_t v = fixed_; v < P_.size() && !broken_; ++v)
+      if (beyond_reach([&] { smooth(v); })) broken_ = true;
     if (broken_) restore();
   }
 
@@ -520,7 +539,7 @@ class DummyRelaxation {
     // product is rarely in N and costs a canonical word (at genus 128 the
     // ranking's products were a third of the first hdt_create).
     for (std::size_t i = d - 2; i < outer_.size(); ++i) outer_[i].nt = T_.compose(tw, outer_[i].nt);
-    saved_F_ = F_, saved_P_ = P_, saved_vface_ = vface_, saved_free_ = free_;
+    save();
     // The fan from u, in u's frame, over the polygon.
     for (uint32_t f : old_) F_[f].v[0] = kNone, free_.push_back(f);
     const std::size_t k = poly_.size();
@@ -596,8 +615,12 @@ class DummyRelaxation {
     return out;
   }
 
+  void save() {
+    saved_F_ = F_, saved_P_ = P_, saved_vface_ = vface_, saved_free_ = free_;
+    saved_ = true;
+  }
   void restore() {
-    broken_ = false;
+    broken_ = false, saved_ = false;
     F_.swap(saved_F_), P_.swap(saved_P_), vface_.swap(saved_vface_), free_.swap(saved_free_);
     stack_.clear();
   }
@@ -626,6 +649,7 @@ class DummyRelaxation {
   std::vector<uint32_t> ids_, old_, fan_, region_;
   double estimate_ = 0;  // the last merge's fan estimate
   bool broken_ = false;   // the flips did not settle: the try fails
+  bool saved_ = false;    // saved_* hold the state before the current try
   std::vector<double> largest_;
 };
 

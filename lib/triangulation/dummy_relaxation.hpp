@@ -28,8 +28,4 @@ struct RelaxedDummies {
 // pass found no merge.
 RelaxedDummies relax_dummy_points(Triangulation &t);
 
-// The largest genus relaxed: the thinning's (kThinningGenusMax). Beyond it
-// the certified removal of the old dummies alone took 2.5 s at genus 192.
-constexpr int kRelaxationGenusMax = 128;
-
 }  // namespace hdt::triangulation

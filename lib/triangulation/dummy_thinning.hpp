@@ -23,11 +23,4 @@ class Triangulation;
 // densely in their order (the order the symbolic perturbation reads).
 void thin_dummy_points(Triangulation &t);
 
-// The largest genus thinned (a test certifies the set at this genus). At
-// 128 the relaxation makes the first hdt_create about 0.6 s slower (0.25 ->
-// 0.85 s of CPU); the local rounds would take 29 s at 256, and the
-// relaxation's exact removals alone 2.5 s at 192: beyond 128 the refined
-// set is kept (about 2x the bound).
-constexpr int kThinningGenusMax = 128;
-
 }  // namespace hdt::triangulation
