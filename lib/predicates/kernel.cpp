@@ -37,6 +37,7 @@ int Kernel::decide([[maybe_unused]] const char *predicate, Decision d, [[maybe_u
 
 // ---- orientation ----
 
+template <bool kThroughExact>
 Kernel::Decision Kernel::orientation_stages(const TranslatedPoint &p, const TranslatedPoint &q,
                                             const TranslatedPoint &r) {
   if (same_frame(p, q, r)) {
@@ -59,11 +60,19 @@ Kernel::Decision Kernel::orientation_stages(const TranslatedPoint &p, const Tran
   if (const Sign s = structural_.determinant(points, certified, 3); decided(s)) return {s, Stage::structural};
   if (const Sign s = double_double_.orientation(p, q, r); decided(s)) return {s, Stage::double_double};
   if (const Sign s = mpfr_.orientation(p, q, r); decided(s)) return {s, Stage::mpfr};
-  return {exact_.orientation(p, q, r), Stage::exact};
+  if constexpr (kThroughExact) return {exact_.orientation(p, q, r), Stage::exact};
+  return {Sign::undecided, Stage::exact};
 }
 
 int Kernel::orientation_checked(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
-  return decide("orientation", orientation_stages(p, q, r), [&] { return exact_.orientation(p, q, r); });
+  return decide("orientation", orientation_stages<true>(p, q, r), [&] { return exact_.orientation(p, q, r); });
+}
+
+std::optional<int> Kernel::orientation_before_exact(const TranslatedPoint &p, const TranslatedPoint &q,
+                                                    const TranslatedPoint &r) {
+  const Decision d = orientation_stages<false>(p, q, r);
+  if (!decided(d.sign)) return std::nullopt;
+  return decide("orientation", d, [&] { return exact_.orientation(p, q, r); });
 }
 
 int Kernel::orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,

@@ -42,6 +42,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 
 #include "predicates/sign.hpp"
 #include "predicates/stage_disk.hpp"
@@ -155,6 +156,14 @@ class Kernel {
   // when that stage has no approximation of p.
   bool hyperboloid_mid(const TranslatedPoint &p, std::array<MidReal, 3> *n);
 
+  // orientation(p, q, r) when a stage before the field K_g's decides it,
+  // else nothing: for callers that may answer "cannot tell" (the early
+  // refusal of a removal), where the exact stage's matrices over K_g would
+  // cost more than the answer saves (seconds at genus 256: a point placed
+  // on a line through a vertex is near-degenerate by construction).
+  std::optional<int> orientation_before_exact(const TranslatedPoint &p, const TranslatedPoint &q,
+                                              const TranslatedPoint &r);
+
   // The exact stage alone (for tests against the pipeline).
   int orientation_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   int in_circle_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
@@ -179,7 +188,10 @@ class Kernel {
   template <class Exact>
   int decide(const char *predicate, Decision d, Exact &&exact);
 
-  // Each predicate's stages in order, through the exact one.
+  // Each predicate's stages in order, through the exact one (orientation:
+  // without kThroughExact, the stages before the field K_g's, undecided
+  // when none decides; a template so that the common path keeps its code).
+  template <bool kThroughExact>
   Decision orientation_stages(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   // The in-circle stages before the field K_g's (same-frame points: through
   // the exact disk stage); undecided when none decides.

@@ -1,6 +1,7 @@
 #include "triangulation/early_refusal.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include "predicates/filtered_point.hpp"
 
@@ -48,8 +49,11 @@ Vec3 away(const Vec3 &x, const Vec3 &p, double s) {
 }
 
 // Whether the disk point x (its own frame: the hole's) lies in the closed
-// star triangle (removed, p_i, p_i+1) of some i, exactly. The star-shaped
-// polygon is the union of those triangles.
+// star triangle (removed, p_i, p_i+1) of some i, certified; false also when
+// only the exact stage could tell (x was moved along the line from a link
+// vertex through the removed one: near-degenerate by construction, and the
+// exact stage's matrices over K_g cost seconds of removals at genus 256).
+// The star-shaped polygon is the union of those triangles.
 bool in_hole(Kernel &kernel, const std::vector<HoleVertex> &polygon, const HoleVertex &removed,
              const TranslatedPoint &x, const Vec3 &lift) {
   auto det = [](const Vec3 &a, const Vec3 &b, const Vec3 &c) {
@@ -61,8 +65,11 @@ bool in_hole(Kernel &kernel, const std::vector<HoleVertex> &polygon, const HoleV
     // The double orientations (det of the lifts) pick the triangle; the
     // kernel decides.
     if (det(removed.lift, p.lift, lift) < 0 || det(removed.lift, q.lift, lift) > 0) continue;
-    return kernel.orientation(removed.point, p.point, x) >= 0 && kernel.orientation(p.point, q.point, x) >= 0 &&
-           kernel.orientation(q.point, removed.point, x) >= 0;
+    auto inside = [&](const HoleVertex &a, const HoleVertex &b) {
+      const std::optional<int> s = kernel.orientation_before_exact(a.point, b.point, x);
+      return s && *s >= 0;
+    };
+    return inside(removed, p) && inside(p, q) && inside(q, removed);
   }
   return false;
 }
