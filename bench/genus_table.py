@@ -4,7 +4,10 @@ against the area lower bound, the first and the cached hdt_create, the peak
 memory and the insertion time per point, each run a fresh process of
 bench/triangulation_bench (CPU times; peak resident size from the kernel).
 
-    python3 bench/genus_table.py --build-dir build [--n 100000] [--genus 2,3,4,8,16,32,64,128,256]
+    python3 bench/genus_table.py --build-dir build [--n 100000,1000000] [--genus 2,3,4,8,16,32,64,128,256]
+
+The creation times and the peak memory come from the run with the first n;
+each further n is one more fresh process for its µs/pt column.
 
 Genera above HDT_CREATE_GENUS_MAX (read from include/hdt.h) are listed as
 refused without a run (hdt_create returns HDT_ENOTSUP at once; drawing the
@@ -48,28 +51,35 @@ def run(bench, g, n, timeout):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--build-dir', default='build')
-    ap.add_argument('--n', type=int, default=100000)
+    ap.add_argument('--n', default='100000,1000000', help='point counts, comma-separated')
     ap.add_argument('--genus', default='2,3,4,8,16,32,64,128,256')
     ap.add_argument('--timeout', type=int, default=600)
     a = ap.parse_args()
     bench = os.path.join(a.build_dir, 'bench', 'triangulation_bench')
     header = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'include', 'hdt.h')
     create_max = int(re.search(r'#define HDT_CREATE_GENUS_MAX (\d+)', open(header).read()).group(1))
-    print(f'| g | dummies | area bound | ratio | first create ms, CPU / wall | cached create ms, CPU | peak MiB | µs/pt at {a.n:.0e} |')
-    print('|---:|---:|---:|---:|---:|---:|---:|---:|')
+    ns = [int(x) for x in a.n.split(',')]
+    columns = ' | '.join(f'µs/pt at {n:.0e}' for n in ns)
+    print(f'| g | dummies | area bound | ratio | first create ms, CPU / wall | cached create ms, CPU | peak MiB | {columns} |')
+    print('|---:|---:|---:|---:|---:|---:|---:|' + '---:|' * len(ns))
+    dashes = ' | '.join('-' for _ in ns)
     for g in (int(x) for x in a.genus.split(',')):
         b = area_bound(g)
         if g > create_max:
-            print(f'| {g} | - | {b} | - | refused: above HDT_CREATE_GENUS_MAX = {create_max} | - | - | - |')
+            print(f'| {g} | - | {b} | - | refused: above HDT_CREATE_GENUS_MAX = {create_max} | - | - | {dashes} |')
             continue
-        r = run(bench, g, a.n, a.timeout)
+        r = run(bench, g, ns[0], a.timeout)
         if 'error' in r:
             why = 'refused: above HDT_CREATE_GENUS_MAX' if 'HDT_CREATE_GENUS_MAX' in r['error'] else r['error']
-            print(f'| {g} | - | {b} | - | {why} | - | - | - |')
+            print(f'| {g} | - | {b} | - | {why} | - | - | {dashes} |')
             continue
+        per_point = [f'{float(r["cpu_us_per_pt"]):.2f}']
+        for n in ns[1:]:
+            more = run(bench, g, n, a.timeout)
+            per_point.append(more['error'] if 'error' in more else f'{float(more["cpu_us_per_pt"]):.2f}')
         d = int(r['dummies'])
         print(f'| {g} | {d} | {b} | {d / b:.2f} | {float(r["create_cpu_ms"]):.0f} / {float(r["create_ms"]):.0f} | '
-              f'{float(r["cached_cpu_ms"]):.1f} | {int(r["peak_kib"]) / 1024:.0f} | {float(r["cpu_us_per_pt"]):.2f} |')
+              f'{float(r["cached_cpu_ms"]):.1f} | {int(r["peak_kib"]) / 1024:.0f} | {" | ".join(per_point)} |', flush=True)
 
 
 if __name__ == '__main__':
