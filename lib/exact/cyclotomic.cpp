@@ -194,6 +194,15 @@ Cyclotomic CyclotomicField::mul(const Cyclotomic &a, const Cyclotomic &b) const 
   return normalised(std::move(c), a.exponent_ + b.exponent_);
 }
 
+Cyclotomic CyclotomicField::mul_zeta_power(const Cyclotomic &a, long k) const {
+  if (k < 0 || k >= n_) throw std::invalid_argument("mul_zeta_power: k must be in [0, n)");
+  if (a.is_zero()) return zero();
+  std::vector<Integer> c(a.coefficients_.size() + std::size_t(k));  // zeros, unallocated
+  for (std::size_t i = 0; i < a.coefficients_.size(); ++i) c[i + std::size_t(k)] = a.coefficients_[i];
+  reduce(c);
+  return normalised(std::move(c), a.exponent_);
+}
+
 Cyclotomic CyclotomicField::mul_2exp(const Cyclotomic &a, int e) const {
   Cyclotomic r = a;
   if (!r.is_zero()) r.exponent_ += e;

@@ -55,6 +55,10 @@ class CyclotomicField {
   Cyclotomic neg(const Cyclotomic &a) const;
   Cyclotomic mul(const Cyclotomic &a, const Cyclotomic &b) const;
   Cyclotomic mul_2exp(const Cyclotomic &a, int e) const;
+  // a zeta^k for 0 <= k < n: a shift and k steps of the reduction, each a
+  // pass over Phi_n's nonzero coefficients; far cheaper than mul for small
+  // k (rotating a point by a multiple of 2 pi/n).
+  Cyclotomic mul_zeta_power(const Cyclotomic &a, long k) const;
 
  private:
   Cyclotomic normalised(std::vector<Integer> c, int exponent) const;

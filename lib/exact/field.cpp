@@ -106,7 +106,7 @@ const Field::Evaluator<T> &Field::evaluator() const {
 }
 
 template <class T>
-int Field::sign_at(const FieldElement &a) const {
+void Field::evaluate(const FieldElement &a, T *value_out, T *bound_out, int *exponent) const {
   const Evaluator<T> &ev = evaluator<T>();
   T U, Um, V, Vm;
   ev.evaluate(a.u, U, Um);
@@ -125,9 +125,17 @@ int Field::sign_at(const FieldElement &a) const {
   const T value = U + ev.sigma * V;
   // Rounding of the coefficients, the cosines (argument rounding included),
   // sigma, the products and the sums: far below (d + 64) units per unit of
-  // magnitude (sigma < 1, counted as 2).
-  const T bound = (Um + T(2) * Vm) * (T(double(ev.cosines.size() + 64)) * ev.unit);
-  using std::isfinite;
+  // magnitude (sigma < 1, counted as 2). Both in units of 2^e.
+  *value_out = value;
+  *bound_out = (Um + T(2) * Vm) * (T(double(ev.cosines.size() + 64)) * ev.unit);
+  *exponent = e;
+}
+
+template <class T>
+int Field::sign_at(const FieldElement &a) const {
+  T value, bound;
+  int e;
+  evaluate(a, &value, &bound, &e);
   if constexpr (std::is_same_v<T, double>)
     if (!std::isfinite(value) || !std::isfinite(bound)) return 2;
   if (value > bound) return 1;
@@ -163,6 +171,20 @@ int Field::sign(const FieldElement &a) const {
   s = sign_at<mp_real<40960>>(a);
   if (s != 2) return s;
   throw std::logic_error("Field::sign: 136000 bits could not decide a non-zero value");
+}
+
+void Field::enclose(const FieldElement &a, double *lo, double *hi) const {
+  if (a.u.is_zero() && a.v.is_zero()) {
+    *lo = *hi = 0;
+    return;
+  }
+  mp_real<40> value, bound;
+  int e;
+  evaluate(a, &value, &bound, &e);
+  // Scaling by 2^e is exact; each conversion rounds to nearest: one step
+  // outward covers it.
+  *lo = std::nextafter(scale2<mp_real<40>>(value - bound, e).convert_to<double>(), -HUGE_VAL);
+  *hi = std::nextafter(scale2<mp_real<40>>(value + bound, e).convert_to<double>(), HUGE_VAL);
 }
 
 double Field::approximate(const FieldElement &a) const {

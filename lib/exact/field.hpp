@@ -49,6 +49,10 @@ class Field {
   int sign(const FieldElement &a) const;
   // Sign of a real element of Q(zeta).
   int sign(const Cyclotomic &a) const;
+  // An interval of doubles [*lo, *hi] that holds the real element a, from
+  // one evaluation in about 133 bits (certified: for tests that would
+  // rather not form exact products; wide or infinite when a is huge).
+  void enclose(const FieldElement &a, double *lo, double *hi) const;
   // A double approximation (for tests and heuristics only).
   double approximate(const FieldElement &a) const;
 
@@ -60,6 +64,10 @@ class Field {
   // u^2 - v^2 sigma^2 = 0: only possible with both parts non-zero when sigma
   // lies in Q(zeta); then u + v sigma is 0 or 2u.
   bool norm_vanishes(const FieldElement &a) const;
+  // a's value at the precision of T and a bound on its error, both in
+  // units of 2^*exponent.
+  template <class T>
+  void evaluate(const FieldElement &a, T *value, T *bound, int *exponent) const;
   // Sign at one rung, or 2 when the rung cannot decide.
   template <class T>
   int sign_at(const FieldElement &a) const;

@@ -320,10 +320,11 @@ void register_q0_sites(surface::Surface &surface, double *x, double *y) {
   if (surface.add_site(surface::exact_vertex(surface.field(), 0), &v, &v_rounded) != 0)
     throw std::logic_error("Q0 sites: the surface has sites already");
   x[0] = v_rounded.re, y[0] = v_rounded.im;
+  const std::vector<surface::ExactSite> midpoints = surface::exact_side_midpoints(surface.field(), 2 * g);
   for (int k = 0; k < 2 * g; ++k) {
     const group::Complex<MidReal> m = surface::polygon_side_midpoint<MidReal>(g, k);
     const group::Complex<double> m_rounded = surface::side_midpoint(surface.presentation(), k);
-    surface.add_site(surface::exact_side_midpoint(surface.field(), k), &m, &m_rounded);
+    surface.add_site(midpoints[std::size_t(k)], &m, &m_rounded);
     x[1 + k] = m_rounded.re, y[1 + k] = m_rounded.im;
   }
 }

@@ -61,6 +61,25 @@ START_TEST(site_coordinates_match_multiprecision_formulas) {
 }
 END_TEST
 
+// The rotation sequence gives each midpoint exactly as its own two products
+// do: every one at small genus (Phi_8g = x^4g + 1 or not: 2, 3, 5, 6, 8), a
+// few at 127 (Phi_1016 has 127 nonzero coefficients of 505) and 128.
+START_TEST(side_midpoints_from_rotations_are_the_products) {
+  for (int g : {2, 3, 5, 6, 8, 127, 128}) {
+    const exact::Field &F = exact::field_of_genus(g);
+    const std::vector<surface::ExactSite> all = surface::exact_side_midpoints(F, 4 * g);
+    ck_assert_uint_eq(all.size(), 4 * std::size_t(g));
+    auto equal = [&](const exact::FieldElement &a, const exact::FieldElement &b) { return F.is_zero(F.sub(a, b)); };
+    for (int k = 0; k < 4 * g; ++k) {
+      if (g > 8 && k != 0 && k != 1 && k != g - 1 && k != g && k != 2 * g + 1 && k != 4 * g - 1) continue;
+      const surface::ExactSite one = surface::exact_side_midpoint(F, k);
+      ck_assert_msg(equal(all[k].X, one.X) && equal(all[k].Y, one.Y) && equal(all[k].Z, one.Z), "g=%d k=%d", g, k);
+    }
+  }
+  ck_assert_uint_eq(surface::exact_side_midpoints(exact::field_of_genus(4), 3).size(), 3);
+}
+END_TEST
+
 START_TEST(polygon_points_are_exactly_cocircular_and_on_sides) {
   for (int g = 2; g <= 5; ++g) {
     surface::Surface M(g);
@@ -162,6 +181,46 @@ START_TEST(sites_reject_points_outside_the_disk) {
     thrown = true;
   }
   ck_assert(thrown);
+  // sigma e^{i pi/8} / sigma: on the circle, where no enclosure can tell and
+  // the exact test refuses the tie.
+  predicates::ExactSite on = surface::exact_vertex(F, 0);
+  on.Z = F.sigma();
+  thrown = false;
+  try {
+    kernel.surface().add_site(on);
+  } catch (const std::domain_error &) {
+    thrown = true;
+  }
+  ck_assert(thrown);
+}
+END_TEST
+
+// Field::enclose holds the value computed independently in 200 bits (the
+// polygon's formulas in MPFR) and is a few ulps wide: the side midpoints'
+// coordinates X = Re(m) sigma, Y = Im(m) sigma, and sigma itself.
+START_TEST(enclosures_hold_the_multiprecision_values) {
+  using T = exact::mp_real<60>;
+  for (int g : {2, 3, 5, 127}) {
+    const exact::Field &F = exact::field_of_genus(g);
+    const T sigma = sqrt(cos(exact::pi<T>() / T(2 * g)));
+    const std::vector<surface::ExactSite> m = surface::exact_side_midpoints(F, 4 * g);
+    for (int k = 0; k < 4 * g; k += (g > 5 ? 17 : 1)) {
+      const auto ref = surface::polygon_side_midpoint<T>(g, k);
+      const T values[3] = {ref.re * sigma, ref.im * sigma, sigma};
+      const exact::FieldElement *elements[3] = {&m[k].X, &m[k].Y, &m[k].Z};
+      for (int c = 0; c < 3; ++c) {
+        double lo, hi;
+        F.enclose(*elements[c], &lo, &hi);
+        // An exact zero (a midpoint on an axis) is [0, 0]; the reference
+        // is zero up to its own rounding there.
+        const bool zero = lo == 0 && hi == 0 && abs(values[c]) < T(1e-50);
+        ck_assert_msg(zero || (T(lo) <= values[c] && values[c] <= T(hi)), "g=%d k=%d coordinate %d outside [%a, %a]", g,
+                      k, c, lo, hi);
+        ck_assert_msg(hi - lo <= 1e-14 * std::max(1.0, std::abs(lo)) || (lo <= 0 && hi >= 0 && hi - lo <= 1e-14),
+                      "g=%d k=%d coordinate %d: [%a, %a] too wide", g, k, c, lo, hi);
+      }
+    }
+  }
 }
 END_TEST
 
@@ -202,10 +261,12 @@ END_TEST
 int main(void) {
   return run_suite("sites", 300, [](TCase *tc) {
     tcase_add_test(tc, site_coordinates_match_multiprecision_formulas);
+    tcase_add_test(tc, side_midpoints_from_rotations_are_the_products);
     tcase_add_test(tc, polygon_points_are_exactly_cocircular_and_on_sides);
     tcase_add_test(tc, paired_points_have_one_representative);
     tcase_add_test(tc, rotated_rational_points_are_cocircular);
     tcase_add_test(tc, sites_reject_points_outside_the_disk);
+    tcase_add_test(tc, enclosures_hold_the_multiprecision_values);
     tcase_add_test(tc, large_circumdisk_matches_the_systole_threshold);
   });
 }
