@@ -124,13 +124,19 @@ HDT_INLINE bool centre_of(const Point &p0, const Point &p1, const Point &p2, boo
   return true;
 }
 
-// centre_of, or the multiprecision fallback.
-HDT_INLINE Point face_centre(const Triangulation &tri, const Face &f, const Point p[3], double *radius) {
-  Point c;
-  if (centre_of(p[0], p[1], p[2], rounded_corners(tri, f), &c, radius)) return c;
+// The multiprecision circle, for the rare faces double cannot resolve
+// (centre_of false); the radius into *radius when not null.
+Point precise_centre(const Triangulation &tri, const Face &f, double *radius) {
   const Circle precise = precise_circumcircle(tri, f);
   if (radius) *radius = precise.radius;
   return precise.centre;
+}
+
+// centre_of, or the fallback.
+HDT_INLINE Point face_centre(const Triangulation &tri, const Face &f, const Point p[3], double *radius) {
+  Point c;
+  if (centre_of(p[0], p[1], p[2], rounded_corners(tri, f), &c, radius)) return c;
+  return precise_centre(tri, f, radius);
 }
 
 // The same, for the centre cache: *kept is the radius when asked (or from
@@ -145,9 +151,7 @@ HDT_INLINE Point face_centre_kept(const Triangulation &tri, const Face &f, const
     if (!radius) *kept = -s2;
     return c;
   }
-  const Circle precise = precise_circumcircle(tri, f);
-  *kept = precise.radius;
-  return precise.centre;
+  return precise_centre(tri, f, kept);
 }
 
 // 2 asinh(x) = log1p(2 x^2 + 2 x sqrt(1 + x^2)) for x^2 = q: one square
