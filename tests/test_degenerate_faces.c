@@ -53,6 +53,18 @@ static void check_circles(hdt_triangulation *t) {
   s = hdt_quality(t, &min_angle, &max_ratio, &max_radius, &min_edge);
   ck_assert_msg(s == HDT_OK, "hdt_quality: %s (%s)", hdt_status_string(s), hdt_last_error_message());
   ck_assert(min_angle >= 0 && min_angle < 1.0471975511965979 /* pi/3 */ && max_radius < quarter_sys && min_edge >= 0);
+  /* The cells compute the centres through the handle's cache, by a path of
+     their own (the radius kept for later); the Voronoi vertices then read
+     them from there: the same bytes as computed directly above. */
+  size_t n = 0;
+  ck_assert_int_eq(hdt_voronoi_cells(t, NULL, NULL, 0, &n), HDT_OK);
+  size_t *offsets = malloc((hdt_vertex_id_bound(t) + 1) * sizeof *offsets);
+  double *cells = malloc(16 * n), *again = malloc(16 * f), *radii_again = malloc(8 * f);
+  s = hdt_voronoi_cells(t, offsets, cells, n, &n);
+  ck_assert_msg(s == HDT_OK, "hdt_voronoi_cells: %s (%s)", hdt_status_string(s), hdt_last_error_message());
+  ck_assert_int_eq(hdt_voronoi_vertices(t, again, radii_again, f, &count), HDT_OK);
+  ck_assert(memcmp(again, centres, 16 * f) == 0 && memcmp(radii_again, radii, 8 * f) == 0);
+  free(offsets), free(cells), free(again), free(radii_again);
   free(centres), free(radii), free(corners), free(edges), free(vertices), free(translations);
 }
 
