@@ -513,7 +513,8 @@ HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, doub
    vertices 1.4 to 2.4 times hdt_faces in time, where hdt_vertex_star for
    every vertex takes 7 to 14 (docs/dual.md). The handle keeps the call's
    scratch (8 bytes an entry) until hdt_destroy; HDT_ENOMEM, nothing
-   written but *count, when it cannot be had. */
+   written but *count, when it cannot be had (and nothing either on
+   HDT_EINTERNAL: every star is checked before the writing). */
 HDT_API hdt_status hdt_vertex_stars(const hdt_triangulation *t, size_t *offsets, uint32_t *faces, uint8_t *corners,
                                     int32_t *translations, size_t capacity, size_t *count) HDT_NOEXCEPT;
 

@@ -246,18 +246,15 @@ HDT_API hdt_status hdt_voronoi_cells(const hdt_triangulation *t, size_t *offsets
     const Triangulation &tri = of(t);
     if (!list_fits(3 * tri.faces().size(), capacity, count, "cell corners")) return HDT_OK;
     if (!xy) throw ApiError(HDT_EINVAL, "xy must not be NULL when capacity > 0");
-    // The rows (with every matrix the centres and the cells need), then
-    // each face's centre once, in face order, through the handle's centre
-    // cache as hdt_voronoi_cell (the same bits; kept for the next call and
-    // the other Voronoi outputs), into the handle's scratch; the writing
-    // last, once nothing can fail.
-    hdt::triangulation::AllStars &rows = t->rows;
-    rows.build(tri, true);
-    hdt::triangulation::CentreCache &cache = t->centres;
-    cache.reserve(tri);
+    // The rows (with every matrix the centres and the cells need) and,
+    // in the same pass over the faces, each face's centre through the
+    // handle's centre cache as hdt_voronoi_cell (the same bits; kept for
+    // the next call and the other Voronoi outputs), into the handle's
+    // scratch; the writing last, once nothing can fail.
     std::vector<Point> &centre = t->cell;
     centre.resize(tri.faces().size());
-    hdt::triangulation::face_centres(tri, centre.data(), &cache);
+    t->rows.build_cells(tri, t->centres, centre.data());
+    const hdt::triangulation::AllStars &rows = t->rows;
     rows.write_cells(tri, offsets, xy, centre.data());
     return HDT_OK;
   });

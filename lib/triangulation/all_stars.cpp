@@ -57,24 +57,32 @@ inline void ranks(const uint32_t fc[16], std::size_t d, const uint32_t x[16], in
 
 }  // namespace
 
+// Faces ahead of the scatter to fetch their vertices' row entries for: it
+// writes by vertex id, which does not follow the faces' order.
+constexpr std::size_t kAhead = 16;
+
 template <class U>
-void AllStars::build_rows(const Triangulation &tri, bool matrices, Rows<U> &rows) {
+void AllStars::build_rows(const Triangulation &tri, bool matrices, CentreCache *cache, Point *centre, Rows<U> &rows) {
   constexpr U top = U(1) << (std::numeric_limits<U>::digits - 1);
   const std::vector<Face> &F = tri.faces();
   const std::vector<Vertex> &V = tri.vertices();
   group::TranslationTable &T = tri.table();
-  const std::size_t n = V.size();
+  const std::size_t n = V.size(), nf = F.size();
   // Counts at v + 2: after the prefix sums start[v + 1] is where v's row
   // begins, and the scatter moves it to where it ends, which is start[v + 1]
   // as it should be.
   rows.start.assign(n + 2, 0);
   moved_.clear();
-  for (std::size_t f = 0; f < F.size(); ++f) {
+  U *start = rows.start.data();
+  for (std::size_t f = 0; f < nf; ++f) {
     const Face &A = F[f];
     for (int c = 0; c < 3; ++c) {
       if (A.v[c] >= n) throw std::logic_error("all stars: face " + std::to_string(f) + " names no vertex");
-      ++rows.start[A.v[c] + 2];
+      ++start[A.v[c] + 2];
     }
+    // The cells' centres in the same pass over the faces (through the
+    // cache, as hdt_voronoi_cell: the same bits).
+    if (centre) centre[f] = cache->centre(tri, uint32_t(f));
     if ((A.t[0] | A.t[1] | A.t[2]) == 0) continue;
     // A translated corner (few: the faces across F_g's sides): vertex_star's
     // translation, computed now, where it may add ids; with matrices, the
@@ -93,79 +101,56 @@ void AllStars::build_rows(const Triangulation &tri, bool matrices, Rows<U> &rows
   if (matrices)
     for (const Vertex &u : V)
       if (u.alive() && u.home != 0) T.moebius(u.home);
-  for (std::size_t v = 2; v < n + 2; ++v) rows.start[v] += rows.start[v - 1];
+  std::size_t longest = 0;
+  for (std::size_t v = 2; v < n + 2; ++v) {
+    longest = std::max<std::size_t>(longest, start[v]);
+    start[v] += start[v - 1];
+  }
+  if (longest >= 16) rows.long_row.resize(2 * longest);
   // Kept from call to call (its pages stay mapped); grown when too small.
   if (rows.capacity < entries_) {
-    rows.entry.reset(new typename Rows<U>::Entry[entries_]);
+    rows.u.reset(new U[2 * entries_]);
     rows.capacity = entries_;
   }
-  // The scatter, in face order.
-  auto *entry = rows.entry.get();
+  // The scatter, in face order, the entries it writes fetched some faces
+  // ahead (the row ends it reads there are in a 4-byte array, mostly in
+  // cache).
+  U *u = rows.u.get();
   std::size_t m = 0;
   uint64_t moved_k = moved_.empty() ? UINT64_MAX : moved_[0].first;  // the next translated corner's
-  for (std::size_t f = 0; f < F.size(); ++f) {
+  for (std::size_t f = 0; f < nf; ++f) {
     const Face &A = F[f];
+    if (f + kAhead < nf)
+      for (int c = 0; c < 3; ++c) __builtin_prefetch(u + 2 * std::size_t(start[F[f + kAhead].v[c] + 1]), 1);
     for (int c = 0; c < 3; ++c) {
       const U k = U(3 * f + c);
       U flag = 0;
       if (k == moved_k) flag = top, moved_k = ++m < moved_.size() ? moved_[m].first : UINT64_MAX;
-      entry[rows.start[A.v[c] + 1]++] = {U(k | flag), U(A.n[c == 2 ? 0 : c + 1])};
+      U *e = u + 2 * std::size_t(start[A.v[c] + 1]++);
+      e[0] = U(k | flag), e[1] = U(A.n[c == 2 ? 0 : c + 1]);
     }
   }
   rows.start.pop_back();
 }
 
-void AllStars::build(const Triangulation &tri, bool matrices) {
-  entries_ = 3 * tri.faces().size();
-  // Corner indices and the flag in 32 bits while they fit.
-  wide_ = entries_ >= (std::size_t(1) << 31);
-  if (wide_) {
-    small_ = {};
-    build_rows(tri, matrices, large_);
-  } else {
-    large_ = {};
-    build_rows(tri, matrices, small_);
-  }
-}
-
-template <class U, class Emit>
-void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *offsets, const Point *prefetch,
-                    Emit &&emit) const {
+template <class U>
+void AllStars::order_rows(const Triangulation &tri, Rows<U> &rows) {
   constexpr U top = U(1) << (std::numeric_limits<U>::digits - 1);
   const std::vector<Vertex> &V = tri.vertices();
-  const auto *entry = rows.entry.get();
+  U *u = rows.u.get();
+  const U *start = rows.start.data();
   const std::size_t n = V.size();
   const auto broken = [](std::size_t v) {
     return std::logic_error("all stars: the star of vertex " + std::to_string(v) + " is broken");
   };
   for (std::size_t v = 0; v < n; ++v) {
-    const U b = rows.start[v], e = rows.start[v + 1];
-    if (offsets) offsets[v] = b;
+    const std::size_t b = start[v], d = start[v + 1] - b;
     if (!V[v].alive()) {
-      if (b != e) throw broken(v);
+      if (d != 0) throw broken(v);
       continue;
     }
-    const TranslationId home = V[v].home;
-    const std::size_t d = e - b;
-    const auto *row = entry + b;
-    const auto face = [&](std::size_t i) { return uint32_t((row[i].k & ~top) / 3); };
-    // Entry i (of face f) as the j-th of the star.
-    const auto put = [&](std::size_t j, std::size_t i, uint32_t f) {
-      U k = row[i].k;
-      TranslationId t = home;
-      if (k & top) {
-        k &= ~top;
-        const auto it = std::lower_bound(moved_.begin(), moved_.end(), std::pair<uint64_t, TranslationId>{k, 0},
-                                         [](const auto &x, const auto &y) { return x.first < y.first; });
-        t = it->second;
-      }
-      emit(std::size_t(b + j), f, int(k - 3 * U(f)), t);
-    };
-    // The centres of the rows a few vertices on: the cells read them in
-    // the vertices' order, scattered over the faces.
-    if (prefetch)
-      for (std::size_t i = 0, a = std::size_t(b) + 64; i < d && a < entries_; ++i, ++a)
-        __builtin_prefetch(prefetch + (entry[a].k & ~top) / 3);
+    const U *row = u + 2 * b;  // k at row[2i], the next face at row[2i + 1]
+    U *out = u + b;            // may overlap the row itself (the first rows): read whole first
     // In star order: from the vertex's stored face, the entry of the face
     // the previous one leads to. A row lists its faces in increasing order
     // (the scatter ran in face order), so in a small row (nearly all) the
@@ -178,10 +163,14 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
     if (d > 0 && d < 16) {
       // The successors' ranks in lanes 0..d-1, the stored face's in lane d.
       uint32_t fc[16], x[16];
+      U k[16];
       int32_t succ[16];
-      for (std::size_t i = 0; i < d; ++i) fc[i] = face(i), x[i] = uint32_t(row[i].next);
+      // The lanes ranks reads beyond the row: a fixed-size fill (four
+      // vector stores; a fill to d became a call to memset per row).
+      for (std::size_t i = 0; i < 16; ++i) x[i] = kNone;
+      for (std::size_t i = 0; i < d; ++i)
+        k[i] = row[2 * i], fc[i] = uint32_t((k[i] & ~top) / 3), x[i] = uint32_t(row[2 * i + 1]);
       x[d] = first, fc[d] = kNone;  // (a rank of d, a face not in the row, then fails the check)
-      for (std::size_t i = d + 1; i < (d < 8 ? 8 : 16); ++i) x[i] = kNone;  // the lanes ranks reads
       ranks(fc, d, x, succ);
       // Checked at the end: each face reached is the one sought (a face
       // not in the row gets the rank of another), and every entry used
@@ -192,21 +181,77 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
       for (std::size_t j = 0; j < d; ++j) {
         wrong |= fc[i] ^ f;
         used |= 1u << i;
-        put(j, i, f);
+        out[j] = k[i];  // (the row is read whole: out may overlap it)
         f = x[i];
         i = succ[i];
       }
       if (wrong != 0 || used != (1u << d) - 1 || f != first) throw broken(v);
       continue;
     }
+    if (d == 0) throw broken(v);
+    // A long row: copied (it may overlap where it is written), then walked.
+    U *copy = rows.long_row.data();
+    std::copy(row, row + 2 * d, copy);
     for (std::size_t j = 0; j < d; ++j) {
       std::size_t i = 0;
-      while (i < d && face(i) != f) ++i;
+      while (i < d && uint32_t((copy[2 * i] & ~top) / 3) != f) ++i;
       if (i == d) throw broken(v);
-      put(j, i, f);
-      f = uint32_t(row[i].next);
+      out[j] = copy[2 * i];
+      f = uint32_t(copy[2 * i + 1]);
     }
-    if (d == 0 || f != first) throw broken(v);
+    if (f != first) throw broken(v);
+  }
+}
+
+void AllStars::build(const Triangulation &tri, bool matrices, bool wide) { build(tri, matrices, nullptr, nullptr, wide); }
+
+void AllStars::build_cells(const Triangulation &tri, CentreCache &cache, Point *centre, bool wide) {
+  cache.reserve(tri);
+  build(tri, true, &cache, centre, wide);
+}
+
+void AllStars::build(const Triangulation &tri, bool matrices, CentreCache *cache, Point *centre, bool wide) {
+  entries_ = 3 * tri.faces().size();
+  // Corner indices and the flag in 32 bits while they fit.
+  wide_ = wide || entries_ >= (std::size_t(1) << 31);
+  if (wide_) {
+    small_ = {};
+    build_rows(tri, matrices, cache, centre, large_);
+    order_rows(tri, large_);
+  } else {
+    large_ = {};
+    build_rows(tri, matrices, cache, centre, small_);
+    order_rows(tri, small_);
+  }
+}
+
+template <class U, class Emit>
+void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *offsets, const Point *prefetch,
+                    Emit &&emit) const {
+  constexpr U top = U(1) << (std::numeric_limits<U>::digits - 1);
+  const std::vector<Vertex> &V = tri.vertices();
+  const U *order = rows.u.get();
+  const std::size_t n = V.size();
+  constexpr std::size_t ahead = 64;  // entries
+  for (std::size_t v = 0; v < n; ++v) {
+    const std::size_t b = rows.start[v], e = rows.start[v + 1];
+    if (offsets) offsets[v] = b;
+    const TranslationId home = V[v].home;
+    for (std::size_t j = b; j < e; ++j) {
+      // The centres of the entries some way on: the cells read them in
+      // the vertices' order, scattered over the faces.
+      if (prefetch && j + ahead < entries_) __builtin_prefetch(prefetch + (order[j + ahead] & ~top) / 3);
+      U k = order[j];
+      TranslationId t = home;
+      if (k & top) {
+        k &= ~top;
+        const auto it = std::lower_bound(moved_.begin(), moved_.end(), std::pair<uint64_t, TranslationId>{k, 0},
+                                         [](const auto &x, const auto &y) { return x.first < y.first; });
+        t = it->second;
+      }
+      const uint32_t f = uint32_t(k / 3);
+      emit(j, f, int(k - 3 * U(f)), t);
+    }
   }
   if (offsets) offsets[n] = rows.start[n];
 }
@@ -223,6 +268,12 @@ void AllStars::write(const Triangulation &tri, std::size_t *offsets, uint32_t *f
     dispatch(tri, offsets, nullptr, [](std::size_t, uint32_t, int, TranslationId) {});
     return;
   }
+  if (faces && corners && translations) {  // the usual call: no test per entry
+    dispatch(tri, offsets, nullptr, [&](std::size_t j, uint32_t f, int c, TranslationId t) {
+      faces[j] = f, corners[j] = uint8_t(c), translations[j] = t;
+    });
+    return;
+  }
   dispatch(tri, offsets, nullptr, [&](std::size_t j, uint32_t f, int c, TranslationId t) {
     if (faces) faces[j] = f;
     if (corners) corners[j] = uint8_t(c);
@@ -233,7 +284,7 @@ void AllStars::write(const Triangulation &tri, std::size_t *offsets, uint32_t *f
 void AllStars::write_cells(const Triangulation &tri, std::size_t *offsets, double *xy, const Point *centre) const {
   group::TranslationTable &T = tri.table();
   // hdt_voronoi_cell's expression, for the same bits. The centres are read
-  // in the rows' order, scattered: each() prefetches them a few rows on.
+  // in the rows' order, scattered: each() prefetches them some entries on.
   dispatch(tri, offsets, centre, [&](std::size_t j, uint32_t f, int, TranslationId t) {
     const Point p = t == 0 ? centre[f] : T.moebius(t).apply(centre[f]);
     xy[2 * j] = p.re, xy[2 * j + 1] = p.im;

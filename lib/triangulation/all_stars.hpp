@@ -20,12 +20,20 @@ namespace hdt::triangulation {
 
 class AllStars {
  public:
-  // Everything that may fail: memory, and the translation ids (and, with
+  // Everything that may fail: memory, the translation ids (and, with
   // matrices, their matrices and the corners' matrices, as
-  // warm_corner_matrices(tri, false)) the stars need. Throws std::bad_alloc, or
+  // warm_corner_matrices(tri, false)) the stars need, and the check of
+  // every star (each row ordered here, so that a broken one is found
+  // before anything is written). Throws std::bad_alloc, or
   // std::logic_error on a broken invariant; the triangulation is unchanged
-  // (its table may have gained ids, as with any query).
-  void build(const Triangulation &tri, bool matrices);
+  // (its table may have gained ids, as with any query). wide: 64-bit
+  // entries even when 32 bits hold them (for the tests of that path).
+  void build(const Triangulation &tri, bool matrices, bool wide = false);
+  // The same with matrices, for the cells, and each face's circumcentre
+  // into centre[f] (one per face) through the cache, in the same pass over
+  // the faces (reserved here; its misses computed and kept, as
+  // hdt_voronoi_cell does).
+  void build_cells(const Triangulation &tri, CentreCache &cache, Point *centre, bool wide = false);
   std::size_t entries() const { return entries_; }  // 3F
   // Then the outputs, which cannot fail. offsets: id bound + 1 entries
   // (may be null); the others 1 per entry, each may be null.
@@ -38,29 +46,33 @@ class AllStars {
  private:
   template <class U>
   struct Rows;
+  void build(const Triangulation &tri, bool matrices, CentreCache *cache, Point *centre, bool wide);
   template <class U>
-  void build_rows(const Triangulation &tri, bool matrices, Rows<U> &rows);
+  void build_rows(const Triangulation &tri, bool matrices, CentreCache *cache, Point *centre, Rows<U> &rows);
+  template <class U>
+  void order_rows(const Triangulation &tri, Rows<U> &rows);
   // For each live vertex by id, in star order: emit(entry, face, corner,
   // translation); offsets written when not null. prefetch (may be null):
-  // per-face data emit reads, fetched a few rows ahead.
+  // per-face data emit reads, fetched some entries ahead.
   template <class U, class Emit>
   void each(const Triangulation &tri, const Rows<U> &rows, std::size_t *offsets, const Point *prefetch,
             Emit &&emit) const;
   template <class Emit>
   void dispatch(const Triangulation &tri, std::size_t *offsets, const Point *prefetch, Emit &&emit) const;
 
-  // Per entry, its corner k = 3f + c and the next face about the vertex
-  // (counterclockwise); a row in face order. The top bit of k marks a
+  // The scatter leaves per entry i its corner k = 3f + c at u[2i] and the
+  // next face about the vertex (counterclockwise) at u[2i + 1], a row in
+  // face order; ordering the rows then puts each row's corners, in star
+  // order, at u[start[v]] .. (a row read whole before it is written, and
+  // written below where the rows after it lie). The top bit of k marks a
   // corner whose translation is not the vertex's home, listed in moved_
   // (by k). 32-bit while 3F < 2^31.
   template <class U>
   struct Rows {
-    struct Entry {
-      U k, next;
-    };
-    std::vector<U> start;            // id bound + 1
-    std::unique_ptr<Entry[]> entry;  // 3F used, uninitialised until scattered
-    std::size_t capacity = 0;        // entries allocated
+    std::vector<U> start;        // id bound + 1
+    std::unique_ptr<U[]> u;      // 2 per entry, uninitialised until scattered
+    std::size_t capacity = 0;    // entries allocated
+    std::vector<U> long_row;     // a row of 16 entries or more, copied while ordered
   };
   Rows<uint32_t> small_;
   Rows<uint64_t> large_;
