@@ -99,13 +99,21 @@ HDT_API hdt_status hdt_edges(const hdt_triangulation *t, uint32_t *vertices, int
     // A corner is at the identity when its translation and its vertex's
     // home are: with no home other than the identity (points given in F_g)
     // the faces alone tell.
+    // With lengths, the corner translations' matrices too, in the same
+    // pass over the faces (not a pass of their own).
     std::vector<std::pair<std::size_t, int32_t>> moved;
-    if (translations) {
+    if (translations || lengths) {
+      hdt::group::TranslationTable &T = tri.table();
       bool homes = false;
-      for (const auto &u : tri.vertices()) homes |= u.alive() && u.home != 0;
+      if (translations)
+        for (const auto &u : tri.vertices()) homes |= u.alive() && u.home != 0;
       std::size_t k = 0;
       for (uint32_t f = 0; f < all.size(); ++f) {
         const Face &A = all[f];
+        if (lengths && (A.t[0] | A.t[1] | A.t[2]) != 0)
+          for (int i = 0; i < 3; ++i)
+            if (A.t[i] != 0) T.moebius(A.t[i]);
+        if (!translations) continue;
         for (int i = 0; i < 3; ++i) {
           if (!edge_listed_with(A, f, i)) continue;
           const int a = hdt::triangulation::next(i), b = hdt::triangulation::prev(i);
@@ -116,9 +124,8 @@ HDT_API hdt_status hdt_edges(const hdt_triangulation *t, uint32_t *vertices, int
           ++k;
         }
       }
-      if (k != *count) throw std::logic_error("hdt_edges: the edge count is not 3F/2");
+      if (translations && k != *count) throw std::logic_error("hdt_edges: the edge count is not 3F/2");
     }
-    if (lengths) hdt::triangulation::warm_corner_matrices(tri, false);
     // Then the writing, which cannot fail.
     if (vertices || faces || lengths) hdt::triangulation::write_edges(tri, *count, vertices, faces, lengths);
     if (translations) {
@@ -166,9 +173,9 @@ HDT_API hdt_status hdt_voronoi_edges(const hdt_triangulation *t, double *xy, siz
     const auto &all = tri.faces();
     if (!list_fits(all.size() / 2 * 3, capacity, count, "edges")) return HDT_OK;
     if (!xy) throw ApiError(HDT_EINVAL, "xy must not be NULL when capacity > 0");
-    hdt::triangulation::warm_corner_matrices(tri, true);
-    // Every centre into scratch first (a face's centre may need new
-    // matrices: nothing is written before they are made), then the writing.
+    // Every centre into scratch first, with the matrices the writing needs
+    // (the neighbour translations'; the corners' the centres make): nothing
+    // is written before they are made. Then the writing.
     // The scratch is the handle's (kept: no allocation, no fresh pages on
     // later calls), the centres read from the handle's cache where
     // hdt_voronoi_cell made one. A compact array, not the cache itself: the
@@ -177,7 +184,7 @@ HDT_API hdt_status hdt_voronoi_edges(const hdt_triangulation *t, double *xy, siz
     std::vector<Point> &centre = t->cell;
     centre.resize(all.size());
     hdt::triangulation::CentreCache &cache = t->centres;
-    hdt::triangulation::face_centres(tri, centre.data(), cache.ready(tri) ? &cache : nullptr);
+    hdt::triangulation::face_centres(tri, centre.data(), cache.ready(tri) ? &cache : nullptr, true);
     // hdt_edges' order: edge i of face f when f < its neighbour there (k
     // stops at the count: a broken invariant must not write past it).
     std::size_t k = 0;

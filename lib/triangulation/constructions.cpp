@@ -262,19 +262,29 @@ void voronoi_vertices(const Triangulation &tri, double *xy, double *radii, Centr
   }
 }
 
-void face_centres(const Triangulation &tri, Point *out, CentreCache *cache) {
+void face_centres(const Triangulation &tri, Point *out, CentreCache *cache, bool across) {
   const std::size_t F = tri.faces().size();
+  group::TranslationTable &T = tri.table();
+  const auto warm = [&](const Face &A) {
+    if (across && (A.nt[0] | A.nt[1] | A.nt[2]) != 0)
+      for (int i = 0; i < 3; ++i)
+        if (A.nt[i] != 0) T.moebius(A.nt[i]);
+  };
   if (!cache) {
     for (std::size_t f = 0; f < F; ++f) {
       fetch_ahead(tri, f);
       const Face &A = tri.faces()[f];
+      warm(A);
       Point p[3];
       corners(tri, A, p);
       out[f] = face_centre(tri, A, p, nullptr);
     }
     return;
   }
-  for (std::size_t f = 0; f < F; ++f) out[f] = cached_centre(tri, uint32_t(f), nullptr, cache);
+  for (std::size_t f = 0; f < F; ++f) {
+    warm(tri.faces()[f]);
+    out[f] = cached_centre(tri, uint32_t(f), nullptr, cache);
+  }
 }
 
 void write_edges(const Triangulation &tri, std::size_t count, uint32_t *vertices, uint32_t *faces, double *lengths) {

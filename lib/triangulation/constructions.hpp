@@ -119,7 +119,10 @@ void warm_corner_matrices(const Triangulation &tri, bool across);
 void face_points(const Triangulation &tri, double *xy);  // 6 per face
 // 2 and 1 per face, either null; through the cache when one is given (ready()).
 void voronoi_vertices(const Triangulation &tri, double *xy, double *radii, CentreCache *cache);
-void face_centres(const Triangulation &tri, Point *out, CentreCache *cache);  // 1 per face, the same
+// 1 per face, the same; may make the corners' matrices, and with across
+// those of the neighbour translations too (warm_corner_matrices(tri, true)
+// in the same pass).
+void face_centres(const Triangulation &tri, Point *out, CentreCache *cache, bool across = false);
 // hdt_edges' vertices, faces and lengths (each may be null), count = 3F/2.
 void write_edges(const Triangulation &tri, std::size_t count, uint32_t *vertices, uint32_t *faces, double *lengths);
 
