@@ -263,7 +263,11 @@ void voronoi_vertices(const Triangulation &tri, double *xy, double *radii, Centr
 }
 
 void face_centres(const Triangulation &tri, Point *out, CentreCache *cache, bool across) {
-  const std::size_t F = tri.faces().size();
+  face_centres(tri, out, cache, across, 0, tri.faces().size());
+}
+
+void face_centres(const Triangulation &tri, Point *out, CentreCache *cache, bool across, std::size_t begin,
+                  std::size_t end) {
   group::TranslationTable &T = tri.table();
   const auto warm = [&](const Face &A) {
     if (across && (A.nt[0] | A.nt[1] | A.nt[2]) != 0)
@@ -271,7 +275,7 @@ void face_centres(const Triangulation &tri, Point *out, CentreCache *cache, bool
         if (A.nt[i] != 0) T.moebius(A.nt[i]);
   };
   if (!cache) {
-    for (std::size_t f = 0; f < F; ++f) {
+    for (std::size_t f = begin; f < end; ++f) {
       fetch_ahead(tri, f);
       const Face &A = tri.faces()[f];
       warm(A);
@@ -281,7 +285,7 @@ void face_centres(const Triangulation &tri, Point *out, CentreCache *cache, bool
     }
     return;
   }
-  for (std::size_t f = 0; f < F; ++f) {
+  for (std::size_t f = begin; f < end; ++f) {
     warm(tri.faces()[f]);
     out[f] = cached_centre(tri, uint32_t(f), nullptr, cache);
   }

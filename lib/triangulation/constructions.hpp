@@ -123,6 +123,9 @@ void voronoi_vertices(const Triangulation &tri, double *xy, double *radii, Centr
 // those of the neighbour translations too (warm_corner_matrices(tri, true)
 // in the same pass).
 void face_centres(const Triangulation &tri, Point *out, CentreCache *cache, bool across = false);
+// The same for the faces begin .. end - 1 only (out still indexed by face).
+void face_centres(const Triangulation &tri, Point *out, CentreCache *cache, bool across, std::size_t begin,
+                  std::size_t end);
 // hdt_edges' vertices, faces and lengths (each may be null), count = 3F/2.
 void write_edges(const Triangulation &tri, std::size_t count, uint32_t *vertices, uint32_t *faces, double *lengths);
 
