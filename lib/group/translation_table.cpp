@@ -85,9 +85,7 @@ TranslationId TranslationTable::intern(const Word &w) {
 }
 
 TranslationId TranslationTable::compose_cached(TranslationId a, TranslationId b) {
-  const uint64_t key = (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
-  auto it = products_.find(key);
-  if (it != products_.end()) return it->second;
+  if (const TranslationId known = products_.find(a, b); known >= 0) return known;
   double p1, p2, error;
   product_centre(a, b, &p1, &p2, &error);
   TranslationId id = centres_.find(p1, p2, error);
@@ -98,7 +96,7 @@ TranslationId TranslationTable::compose_cached(TranslationId a, TranslationId b)
     id = intern(w);
     centres_.add(id, p1, p2, error);
   }
-  products_.emplace(key, id);
+  products_.add(a, b, id);
   return id;
 }
 

@@ -24,6 +24,7 @@
 #include "group/lorentz.hpp"
 #include "group/moebius.hpp"
 #include "group/paged_vector.hpp"
+#include "group/product_cache.hpp"
 #include "group/presentation.hpp"
 
 namespace hdt::group {
@@ -102,7 +103,7 @@ class TranslationTable {
   mutable std::unordered_map<TranslationId, Word> neighbour_words_;  // the words of N asked for
   PagedVector<Matrices> matrices_;
   std::unordered_map<Word, TranslationId, WordHash> ids_;  // ids from |N| on
-  std::unordered_map<uint64_t, TranslationId> products_;
+  ProductCache products_;
   std::vector<TranslationId> inverses_;  // -1: not known yet; as long as the largest id met
   CentreIndex centres_;  // the ids whose matrices are computed, and products named by word
 };
