@@ -6,6 +6,7 @@
 
 #include "group/canonical.hpp"
 #include "group/dehn.hpp"
+#include "group/moebius_centre.hpp"
 #include "group/neighbours.hpp"
 #include "group/word_matrix.hpp"
 
@@ -48,14 +49,21 @@ TranslationId TranslationTable::add_canonical(const Word &canonical) {
 const TranslationTable::Matrices &TranslationTable::compute_matrices(TranslationId id) {
   const Word &w = word(id);  // checks the id
   Matrices &m = matrices_.at(std::size_t(id));
-  accurate_matrices(presentation_, w, &m.moebius, &m.lorentz, &m.moebius_low, &m.moebius_error);
+  accurate_matrices(presentation_, w, &m.moebius, nullptr, &m.moebius_low, &m.moebius_error);
   m.known = true;
-  // Column 0 is the centre h(O), each entry within 2^-66 L_00 before its
-  // rounding (u relative).
-  const Lorentz<double> &L = m.lorentz;
-  centres_.add(id, L.m[1][0], L.m[2][0],
-               0x1p-53 * std::max(std::abs(L.m[1][0]), std::abs(L.m[2][0])) + 0x1p-64 * L.m[0][0]);
+  double p1, p2, error;
+  centre_of(m.moebius, false, &p1, &p2, &error);
+  centres_.add(id, p1, p2, error);
   return m;
+}
+
+const Lorentz<double> &TranslationTable::compute_lorentz(TranslationId id) {
+  Matrices &m = matrices_.at(std::size_t(id));  // known: lorentz() asked matrices() first
+  Moebius<double> moebius, low;
+  double error;
+  accurate_matrices(presentation_, word(id), &moebius, &m.lorentz, &low, &error);
+  m.lorentz_known = true;
+  return m.lorentz;
 }
 
 TranslationId TranslationTable::intern(const Word &w) {
@@ -101,31 +109,15 @@ TranslationId TranslationTable::compose_cached(TranslationId a, TranslationId b)
 }
 
 void TranslationTable::product_centre(TranslationId a, TranslationId b, double *p1, double *p2, double *error) {
-  // (a b)(O) = L_a (L_b e_0). Entries of L_a, L_b within u |L_ij| + 2^-66 L_00
-  // (u = 2^-53, accurate_matrices); each coordinate sums three products:
-  // within (2u + 3u) S_i (1 + 6u) of S_i = sum_j |L_a,ij| |L_b,j0|, plus the
-  // absolute parts, at most 2^-66 (3 A_00 B_00 + 3 A_00 B_00) (1 + 2^-60)
-  // (|L_ij| <= L_00 for Lorentz matrices): 6u S_i + 2^-62 A_00 B_00 covers it.
-  const Lorentz<double> &A = lorentz(a);
-  const Lorentz<double> &B = lorentz(b);
-  double *coordinate[3] = {nullptr, p1, p2}, size = 0;
-  for (int i = 1; i < 3; ++i) {
-    *coordinate[i] = A.m[i][0] * B.m[0][0] + A.m[i][1] * B.m[1][0] + A.m[i][2] * B.m[2][0];
-    size = std::max(size, std::abs(A.m[i][0] * B.m[0][0]) + std::abs(A.m[i][1] * B.m[1][0]) +
-                              std::abs(A.m[i][2] * B.m[2][0]));
-  }
-  *error = 6 * 0x1p-53 * size + 0x1p-62 * A.m[0][0] * B.m[0][0];
+  const Moebius<double> &A = moebius(a);
+  product_centre_of(A, moebius(b), p1, p2, error);
 }
 
 TranslationId TranslationTable::inverse_interned(TranslationId a) {
   if (std::size_t(a) >= inverses_.size()) inverses_.resize(std::size_t(a) + 1, -1);
   if (inverses_.at(a) < 0) {
-    // The centre of a^-1 is L_a^-1 e_0 = (L_00, -L_01, -L_02) (L^-1 = J L^T J,
-    // J = diag(1, -1, -1)): entries of L_a, each within u relative plus
-    // 2^-66 L_00.
-    const Lorentz<double> &L = lorentz(a);
-    const double p1 = -L.m[0][1], p2 = -L.m[0][2];
-    const double error = 0x1p-53 * std::max(std::abs(p1), std::abs(p2)) + 0x1p-64 * L.m[0][0];
+    double p1, p2, error;
+    centre_of(moebius(a), true, &p1, &p2, &error);
     TranslationId b = centres_.find(p1, p2, error);
     if (b < 0) {
       b = intern(presentation_.inverse(word(a)));

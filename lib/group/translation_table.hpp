@@ -64,9 +64,16 @@ class TranslationTable {
   const Word &word(TranslationId id) const;
   // Matrices accurate to the last bit (accurate_matrices: Lorentz entries
   // within u |L_ij| + 2^-66 L_00), computed on first use (building them for
-  // all of N up front would cost seconds at large genus).
+  // all of N up front would cost seconds at large genus). The Lorentz matrix
+  // only serves the surface's sites under a translation: it is computed
+  // apart, when first asked for (its multiprecision entries cost more than
+  // the Moebius product, which every new id needs).
   const Moebius<double> &moebius(TranslationId id) { return matrices(id).moebius; }
-  const Lorentz<double> &lorentz(TranslationId id) { return matrices(id).lorentz; }
+  const Lorentz<double> &lorentz(TranslationId id) {
+    const Matrices &m = matrices(id);
+    if (m.lorentz_known) return m.lorentz;
+    return compute_lorentz(id);
+  }
   // The Moebius matrix to about twice double precision, for the
   // double-double stage: each part of a, b is moebius + moebius_low within
   // 2^-106 of itself plus moebius_error (|a| + |b|).
@@ -79,7 +86,7 @@ class TranslationTable {
     Lorentz<double> lorentz;
     Moebius<double> moebius_low;
     double moebius_error = 0;
-    bool known = false;
+    bool known = false, lorentz_known = false;
   };
   const Matrices &matrices(TranslationId id) {
     const Matrices &m = matrices_.get(std::size_t(id));
@@ -93,8 +100,9 @@ class TranslationTable {
   TranslationId compose_cached(TranslationId a, TranslationId b);
   TranslationId inverse_interned(TranslationId a);
   const Matrices &compute_matrices(TranslationId id);
-  // The centre of a * b from the factors' matrices, and its error in each
-  // coordinate.
+  const Lorentz<double> &compute_lorentz(TranslationId id);
+  // The centre of a * b from the factors' Moebius matrices, and its error in
+  // each coordinate.
   void product_centre(TranslationId a, TranslationId b, double *p1, double *p2, double *error);
 
   Presentation presentation_;

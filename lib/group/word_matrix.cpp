@@ -615,6 +615,7 @@ void accurate_matrices(const Presentation &p, const Word &w, Moebius<double> *mo
     *moebius = Moebius<double>{{split(m.a.re, &moebius_low->a.re), split(m.a.im, &moebius_low->a.im)},
                                {split(m.b.re, &moebius_low->b.re), split(m.b.im, &moebius_low->b.im)}};
     *moebius_error = error;
+    if (!lorentz) return 0;
     const Lorentz<T> L = Lorentz<T>::from_moebius(m);
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) lorentz->m[i][j] = to_double(L.m[i][j]);

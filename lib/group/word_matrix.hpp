@@ -49,6 +49,8 @@ double moebius_precision_bits(const Presentation &p, std::size_t m, double targe
 // (within 2^-106 of the product's value), which is within moebius_error
 // (|a| + |b|) of the exact one (the bound computed along the product, at most
 // 2^-72, usually far less: about 2^-100 for the words of N at genus 128).
+// lorentz may be null: the multiprecision Lorentz matrix costs more than the
+// rest together.
 void accurate_matrices(const Presentation &p, const Word &w, Moebius<double> *moebius, Lorentz<double> *lorentz,
                        Moebius<double> *moebius_low, double *moebius_error);
 
