@@ -173,18 +173,29 @@ int Field::sign(const FieldElement &a) const {
   throw std::logic_error("Field::sign: 136000 bits could not decide a non-zero value");
 }
 
-void Field::enclose(const FieldElement &a, double *lo, double *hi) const {
+void Field::evaluate_133(const FieldElement &a, mp_real<40> *value, mp_real<40> *bound) const {
   if (a.u.is_zero() && a.v.is_zero()) {
-    *lo = *hi = 0;
+    *value = *bound = 0;
     return;
   }
-  mp_real<40> value, bound;
   int e;
-  evaluate(a, &value, &bound, &e);
-  // Scaling by 2^e is exact; each conversion rounds to nearest: one step
-  // outward covers it.
-  *lo = std::nextafter(scale2<mp_real<40>>(value - bound, e).convert_to<double>(), -HUGE_VAL);
-  *hi = std::nextafter(scale2<mp_real<40>>(value + bound, e).convert_to<double>(), HUGE_VAL);
+  evaluate(a, value, bound, &e);
+  *value = scale2(*value, e);  // exact
+  *bound = scale2(*bound, e);
+}
+
+void Field::enclose(const FieldElement &a, double *lo, double *hi) const {
+  mp_real<40> value, bound;
+  evaluate_133(a, &value, &bound);
+  // Each conversion rounds to nearest: one step outward covers it (an exact
+  // zero stays [0, 0]).
+  if (bound == 0) {
+    *lo = *hi = value.convert_to<double>();
+    if (value != 0) *lo = std::nextafter(*lo, -HUGE_VAL), *hi = std::nextafter(*hi, HUGE_VAL);
+    return;
+  }
+  *lo = std::nextafter((value - bound).convert_to<double>(), -HUGE_VAL);
+  *hi = std::nextafter((value + bound).convert_to<double>(), HUGE_VAL);
 }
 
 double Field::approximate(const FieldElement &a) const {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "exact/cyclotomic.hpp"
+#include "exact/multiprecision.hpp"
 
 namespace hdt::exact {
 
@@ -49,9 +50,11 @@ class Field {
   int sign(const FieldElement &a) const;
   // Sign of a real element of Q(zeta).
   int sign(const Cyclotomic &a) const;
-  // An interval of doubles [*lo, *hi] that holds the real element a, from
-  // one evaluation in about 133 bits (certified: for tests that would
-  // rather not form exact products; wide or infinite when a is huge).
+  // The real element a in about 133 bits (*value) and a bound on that
+  // value's error (*bound; 0 for a zero element), certified as sign()'s
+  // evaluation: for computations that would rather not form exact products.
+  void evaluate_133(const FieldElement &a, mp_real<40> *value, mp_real<40> *bound) const;
+  // An interval of doubles [*lo, *hi] that holds a, from that evaluation.
   void enclose(const FieldElement &a, double *lo, double *hi) const;
   // A double approximation (for tests and heuristics only).
   double approximate(const FieldElement &a) const;

@@ -6,6 +6,7 @@
 
 #include "exact/multiprecision.hpp"
 #include "predicates/kernel.hpp"
+#include "predicates/stage_double.hpp"
 #include "surface/exact_polygon.hpp"
 #include "surface/polygon.hpp"
 #include "predicates/representative.hpp"
@@ -77,6 +78,43 @@ START_TEST(side_midpoints_from_rotations_are_the_products) {
     }
   }
   ck_assert_uint_eq(surface::exact_side_midpoints(exact::field_of_genus(4), 3).size(), 3);
+}
+END_TEST
+
+// The double stage's hyperboloid vector of a site (from 133-bit evaluations
+// with certified bounds when they suffice, else from exact products) is
+// within 4u of each entry of the vector computed in 200 bits from the
+// polygon's formulas: the vertices and side midpoints at genus 2, 16 and
+// 127, and a site 2^-70 from the circle (where the evaluations cannot tell).
+START_TEST(site_vectors_within_four_units) {
+  using T = exact::mp_real<60>;
+  const double u = std::ldexp(1.0, -53);
+  for (int g : {2, 16, 127}) {
+    surface::Surface M(g);
+    const exact::Field &F = M.field();
+    std::vector<std::array<T, 2>> z;
+    const std::vector<surface::ExactSite> m = surface::exact_side_midpoints(F, 4 * g);
+    for (int k = 0; k < 4 * g; k += (g > 16 ? 7 : 1)) {
+      M.add_site(surface::exact_vertex(F, k));
+      const auto v = surface::polygon_vertex<T>(g, k);
+      z.push_back({v.re, v.im});
+      M.add_site(m[std::size_t(k)]);
+      const auto w = surface::polygon_side_midpoint<T>(g, k);
+      z.push_back({w.re, w.im});
+    }
+    const exact::FieldElement one = F.from_double(1), tiny = F.from_double(std::ldexp(1.0, -70));
+    M.add_site({F.sub(one, tiny), F.zero(), one});
+    z.push_back({T(1) - ldexp(T(1), -70), T(0)});
+    predicates::DoubleStage D(M);
+    for (std::size_t s = 0; s < z.size(); ++s) {
+      const std::array<double, 3> &n = D.site_vector(int32_t(s));
+      const T r2 = z[s][0] * z[s][0] + z[s][1] * z[s][1], w = 1 - r2;
+      const T ref[3] = {(1 + r2) / w, 2 * z[s][0] / w, 2 * z[s][1] / w};
+      for (int i = 0; i < 3; ++i)
+        ck_assert_msg(abs(T(n[i]) - ref[i]) <= T(4 * u) * abs(ref[i]) + T(1e-50), "g=%d site %zu entry %d: %.17g, %.17g",
+                      g, s, i, n[i], ref[i].convert_to<double>());
+    }
+  }
 }
 END_TEST
 
@@ -262,6 +300,7 @@ int main(void) {
   return run_suite("sites", 300, [](TCase *tc) {
     tcase_add_test(tc, site_coordinates_match_multiprecision_formulas);
     tcase_add_test(tc, side_midpoints_from_rotations_are_the_products);
+    tcase_add_test(tc, site_vectors_within_four_units);
     tcase_add_test(tc, polygon_points_are_exactly_cocircular_and_on_sides);
     tcase_add_test(tc, paired_points_have_one_representative);
     tcase_add_test(tc, rotated_rational_points_are_cocircular);
