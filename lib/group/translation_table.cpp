@@ -58,12 +58,11 @@ const TranslationTable::Matrices &TranslationTable::compute_matrices(Translation
 }
 
 const Lorentz<double> &TranslationTable::compute_lorentz(TranslationId id) {
-  Matrices &m = matrices_.at(std::size_t(id));  // known: lorentz() asked matrices() first
   Moebius<double> moebius, low;
   double error;
-  accurate_matrices(presentation_, word(id), &moebius, &m.lorentz, &low, &error);
-  m.lorentz_known = true;
-  return m.lorentz;
+  Lorentz<double> L;
+  accurate_matrices(presentation_, word(id), &moebius, &L, &low, &error);  // word() checks the id
+  return lorentz_.emplace(id, L).first->second;
 }
 
 TranslationId TranslationTable::intern(const Word &w) {

@@ -70,9 +70,8 @@ class TranslationTable {
   // the Moebius product, which every new id needs).
   const Moebius<double> &moebius(TranslationId id) { return matrices(id).moebius; }
   const Lorentz<double> &lorentz(TranslationId id) {
-    const Matrices &m = matrices(id);
-    if (m.lorentz_known) return m.lorentz;
-    return compute_lorentz(id);
+    const auto it = lorentz_.find(id);
+    return it != lorentz_.end() ? it->second : compute_lorentz(id);
   }
   // The Moebius matrix to about twice double precision, for the
   // double-double stage: each part of a, b is moebius + moebius_low within
@@ -83,10 +82,9 @@ class TranslationTable {
  private:
   struct Matrices {
     Moebius<double> moebius;
-    Lorentz<double> lorentz;
     Moebius<double> moebius_low;
     double moebius_error = 0;
-    bool known = false, lorentz_known = false;
+    bool known = false;
   };
   const Matrices &matrices(TranslationId id) {
     const Matrices &m = matrices_.get(std::size_t(id));
@@ -110,6 +108,10 @@ class TranslationTable {
   std::vector<Word> extra_words_;  // ids from |N| on
   mutable std::unordered_map<TranslationId, Word> neighbour_words_;  // the words of N asked for
   PagedVector<Matrices> matrices_;
+  // The Lorentz matrices asked for (a few thousand ids at genus 128), apart
+  // from matrices_: a slot per id there would hold 72 bytes for every id
+  // met, 14 MB at genus 128 with 10^5 points.
+  std::unordered_map<TranslationId, Lorentz<double>> lorentz_;
   std::unordered_map<Word, TranslationId, WordHash> ids_;  // ids from |N| on
   ProductCache products_;
   std::vector<TranslationId> inverses_;  // -1: not known yet; as long as the largest id met
