@@ -95,7 +95,7 @@ HDT_API int hdt_abi_version(void) HDT_NOEXCEPT;
    it), the largest at which a test builds and certifies the dummy points.
    The first triangulation of a genus in a process builds them: measured as
    above, 0.3 to 0.4 s of CPU at genus 64, 0.6 to 0.9 s at 127 and 128,
-   1.7 s and 250 MiB (10^5 points included) at 256; later ones copy
+   1.8 s and 220 MiB (10^5 points included) at 256; later ones copy
    them (15 ms at 128, 37 ms at 256). May grow in later versions. */
 #define HDT_CREATE_GENUS_MAX 256
 
