@@ -22,9 +22,8 @@ bool vector_from_evaluations(const exact::Field &field, const surface::ExactSite
   field.evaluate_133(e.Z, &z, &ez);
   // |x| + ex bounds |X|, and a product of two values with errors ea, eb
   // errs by at most |a| eb + |b| ea + ea eb, before rounding; the 133-bit
-  // roundings of the few operations below add at most 2^-128 relative of
-  // each term's size (their sum S below), which the factor 1 + 2^-100
-  // covers with room.
+  // roundings of the few operations below add at most a few 2^-133 of the
+  // terms' sizes (their sum S below), which `rounding`, 2^-126 S, covers.
   const R ax = abs(x), ay = abs(y), az = abs(z);
   const R exx = 2 * ax * ex + ex * ex, eyy = 2 * ay * ey + ey * ey, ezz = 2 * az * ez + ez * ez;
   const R xx = x * x, yy = y * y, zz = z * z;
