@@ -184,20 +184,6 @@ void Field::evaluate_133(const FieldElement &a, mp_real<40> *value, mp_real<40> 
   *bound = scale2(*bound, e);
 }
 
-void Field::enclose(const FieldElement &a, double *lo, double *hi) const {
-  mp_real<40> value, bound;
-  evaluate_133(a, &value, &bound);
-  // Each conversion rounds to nearest: one step outward covers it (an exact
-  // zero stays [0, 0]).
-  if (bound == 0) {
-    *lo = *hi = value.convert_to<double>();
-    if (value != 0) *lo = std::nextafter(*lo, -HUGE_VAL), *hi = std::nextafter(*hi, HUGE_VAL);
-    return;
-  }
-  *lo = std::nextafter((value - bound).convert_to<double>(), -HUGE_VAL);
-  *hi = std::nextafter((value + bound).convert_to<double>(), HUGE_VAL);
-}
-
 double Field::approximate(const FieldElement &a) const {
   using T = mp_real<40>;
   const Evaluator<T> &ev = evaluator<T>();

@@ -54,8 +54,6 @@ class Field {
   // value's error (*bound; 0 for a zero element), certified as sign()'s
   // evaluation: for computations that would rather not form exact products.
   void evaluate_133(const FieldElement &a, mp_real<40> *value, mp_real<40> *bound) const;
-  // An interval of doubles [*lo, *hi] that holds a, from that evaluation.
-  void enclose(const FieldElement &a, double *lo, double *hi) const;
   // A double approximation (for tests and heuristics only).
   double approximate(const FieldElement &a) const;
 

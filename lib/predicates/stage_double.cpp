@@ -6,77 +6,13 @@
 
 namespace hdt::predicates {
 
-namespace {
-
-// A site's hyperboloid vector from 133-bit evaluations of X, Y and Z with
-// their error bounds, when those make each entry's error below 2^-60 of
-// it; rounded to double, each entry is then within u (1 + 2^-7) of the
-// exact one, inside site_vector's 4u. False (nothing written) otherwise:
-// a site very near the circle or an element too large. The exact products
-// this spares were 16% of the first hdt_create at genus 127.
-bool vector_from_evaluations(const exact::Field &field, const surface::ExactSite &e, std::array<double, 3> *n) {
-  using R = exact::mp_real<40>;
-  R x, y, z, ex, ey, ez;
-  field.evaluate_133(e.X, &x, &ex);
-  field.evaluate_133(e.Y, &y, &ey);
-  field.evaluate_133(e.Z, &z, &ez);
-  // |x| + ex bounds |X|, and a product of two values with errors ea, eb
-  // errs by at most |a| eb + |b| ea + ea eb, before rounding; the 133-bit
-  // roundings of the few operations below add at most a few 2^-133 of the
-  // terms' sizes (their sum S below), which `rounding`, 2^-126 S, covers.
-  const R ax = abs(x), ay = abs(y), az = abs(z);
-  const R exx = 2 * ax * ex + ex * ex, eyy = 2 * ay * ey + ey * ey, ezz = 2 * az * ez + ez * ez;
-  const R xx = x * x, yy = y * y, zz = z * z;
-  const R S = xx + yy + zz + exx + eyy + ezz;
-  const R rounding = S * ldexp(R(1), -126);
-  const R w = zz - xx - yy, n0 = zz + xx + yy, n1 = 2 * x * z, n2 = 2 * y * z;
-  const R ew = exx + eyy + ezz + rounding, e0 = ew;
-  // (A coordinate known to be exactly 0 gives a product exactly 0: a
-  // midpoint on an axis keeps this path.)
-  const R e1 = 2 * (ax * ez + az * ex + ex * ez) + (n1 == 0 ? R(0) : rounding);
-  const R e2 = 2 * (ay * ez + az * ey + ey * ez) + (n2 == 0 ? R(0) : rounding);
-  // N_i = num_i / w: relative error at most rel(num_i) + rel(w) (1 + ...),
-  // certified below 2^-60 when each part is below 2^-62.
-  const R limit = ldexp(R(1), -62);
-  if (!(w > 0) || !(ew < limit * w)) return false;
-  const R parts[3][2] = {{n0, e0}, {n1, e1}, {n2, e2}};
-  for (int i = 0; i < 3; ++i) {
-    const R &num = parts[i][0], &err = parts[i][1];
-    if (!(err <= limit * abs(num)) && !(num == 0 && err == 0)) return false;
-    (*n)[i] = R(num / w).convert_to<double>();
-  }
-  return true;
-}
-
-}  // namespace
-
-const std::array<double, 3> &DoubleStage::site_vector(int32_t site) {
-  const exact::Field &field = surface_.field();
-  while (site_vectors_.size() <= std::size_t(site)) {
-    const surface::ExactSite &e = surface_.site(int32_t(site_vectors_.size())).exact;
-    if (std::array<double, 3> n; vector_from_evaluations(field, e, &n)) {
-      site_vectors_.push_back(n);
-      continue;
-    }
-    // N = (Z^2 + X^2 + Y^2, 2XZ, 2YZ) / w, w = Z^2 - X^2 - Y^2, each part
-    // exact before rounding.
-    const exact::FieldElement zz = field.mul(e.Z, e.Z);
-    const exact::FieldElement r2 = field.add(field.mul(e.X, e.X), field.mul(e.Y, e.Y));
-    const exact::FieldElement two_z = field.add(e.Z, e.Z);
-    const double den = field.approximate(field.sub(zz, r2));
-    site_vectors_.push_back({field.approximate(field.add(zz, r2)) / den, field.approximate(field.mul(e.X, two_z)) / den,
-                             field.approximate(field.mul(e.Y, two_z)) / den});
-  }
-  return site_vectors_[std::size_t(site)];
-}
-
 FilteredPoint DoubleStage::compute_point(const TranslatedPoint &p) {
   if (p.site < 0 && p.translation == 0) return filtered_point(p.x, p.y);
   if (p.site < 0) return filtered_point(p.x, p.y, surface_.table().moebius(p.translation));
   const group::Lorentz<double> &L = surface_.table().lorentz(p.translation);
   // A site's hyperboloid vector is stored rounded (4u per entry): apply L
   // (u per entry) with three more roundings.
-  const std::array<double, 3> &n = site_vector(p.site);
+  const std::array<double, 3> &n = surface_.site(p.site).vector;
   FilteredPoint r;
   double worst = 0;
   for (int i = 0; i < 3; ++i) {

@@ -93,15 +93,11 @@ class DoubleStage {
   // The refined stages' formula (stage_refined.hpp) with U = u.
   Sign large_circumdisk(const FilteredPoint &a, const FilteredPoint &b, const FilteredPoint &c) const;
 
-  // A site's hyperboloid vector, each entry within 4u relative.
-  const std::array<double, 3> &site_vector(int32_t site);
-
  private:
   FilteredPoint compute_point(const TranslatedPoint &p);
 
   surface::Surface &surface_;
   PointCache<FilteredPoint, 10> cache_;  // 57 KiB: see PointCache
-  std::vector<std::array<double, 3>> site_vectors_;  // by site id, filled up to the last one asked for
 };
 
 }  // namespace hdt::predicates

@@ -61,32 +61,20 @@ const std::vector<int> &Surface::sides_near(double angle) const {
   return sides_by_sector_[std::size_t(((j % sectors) + sectors) % sectors)];
 }
 
-bool Surface::surely_inside_the_disk(const ExactSite &site) const {
-  // Z^2 > X^2 + Y^2 from enclosures of X, Y and Z > 0; each double product
-  // or sum errs by at most 2^-53 relative, which the factors 1 -+ 2^-50
-  // cover.
-  double x[2], y[2], z[2];
-  field_.enclose(site.X, &x[0], &x[1]);
-  field_.enclose(site.Y, &y[0], &y[1]);
-  field_.enclose(site.Z, &z[0], &z[1]);
-  if (!(z[0] > 0)) return false;
-  const double xm = std::max(std::abs(x[0]), std::abs(x[1])), ym = std::max(std::abs(y[0]), std::abs(y[1]));
-  return z[0] * z[0] * (1 - 0x1p-50) > (xm * xm + ym * ym) * (1 + 0x1p-50);
-}
-
 int32_t Surface::add_site(const ExactSite &site, const group::Complex<SiteReal> *approximation,
                           const group::Complex<double> *rounded) {
-  if (field_.sign(site.Z) <= 0) throw std::domain_error("add_site: Z must be positive");
-  if (!surely_inside_the_disk(site)) {
-    const FieldElement zz = field_.mul(site.Z, site.Z);
-    const FieldElement w = field_.sub(zz, field_.add(field_.mul(site.X, site.X), field_.mul(site.Y, site.Y)));
-    if (field_.sign(w) <= 0) throw std::domain_error("add_site: the point is not inside the open unit disk");
-  }
-  // X, Y and Z rounded, then divided: within 3u |.| of exact, and a
-  // correctly rounded value (within u |.|) is no further from these than
-  // 4u |.|.
-  const double z = field_.approximate(site.Z);
-  Site data{site, field_.approximate(site.X) / z, field_.approximate(site.Y) / z, false, {}};
+  const SiteEvaluation e = evaluate_site(field_, site);
+  if (!(e.z > e.ez) && field_.sign(site.Z) <= 0) throw std::domain_error("add_site: Z must be positive");
+  Site data{site, 0, 0, {}, false, {}};
+  // The evaluations certify the vector, and with it that the site is inside
+  // the disk, except very near the circle: only there are the exact
+  // products (dense at large genus) formed.
+  if (!certified_site_vector(e, &data.vector)) data.vector = exact_site_vector(field_, site);
+  // X, Y and Z rounded (the values Field::approximate rounds), then divided:
+  // within 3u |.| of exact, and a correctly rounded value (within u |.|) is
+  // no further from these than 4u |.|.
+  const double z = e.z.convert_to<double>();
+  data.x = e.x.convert_to<double>() / z, data.y = e.y.convert_to<double>() / z;
   if (rounded) {
     const double bound = 4 * 0x1p-53 * std::max(std::abs(data.x), std::abs(data.y)) + 0x1p-100;
     if (!(std::abs(rounded->re - data.x) <= bound && std::abs(rounded->im - data.y) <= bound))

@@ -26,28 +26,11 @@
 #include "group/moebius.hpp"
 #include "group/presentation.hpp"
 #include "group/translation_table.hpp"
+#include "surface/site.hpp"
 
 namespace hdt::surface {
 
 using group::TranslationId;
-
-// A point of the disk with exact algebraic coordinates: z = (X + iY) / Z
-// with X, Y, Z in K_g and Z > 0 (the points of Q0, rotated images of
-// rational points).
-struct ExactSite {
-  exact::FieldElement X, Y, Z;
-};
-
-// The reals in which a site's coordinates may be known within 2^-128.
-using SiteReal = exact::mp_real<40>;
-
-// A registered site.
-struct Site {
-  ExactSite exact;
-  double x, y;  // the coordinates rounded to double (correctly when registered so)
-  bool has_approximation;                // whether `approximation` is set:
-  group::Complex<SiteReal> approximation;  // the coordinates within 2^-128
-};
 
 class Surface {
  public:
@@ -117,11 +100,6 @@ class Surface {
   std::size_t site_count() const { return sites_.size(); }
 
  private:
-  // Z^2 > X^2 + Y^2 certified from 133-bit enclosures; false when they
-  // cannot tell (add_site then forms the exact products, dense at large
-  // genus: 12% of the first hdt_create at genus 127).
-  bool surely_inside_the_disk(const ExactSite &site) const;
-
   group::Presentation presentation_;
   const exact::Field &field_;
   group::TranslationTable table_;

@@ -81,8 +81,8 @@ START_TEST(side_midpoints_from_rotations_are_the_products) {
 }
 END_TEST
 
-// The double stage's hyperboloid vector of a site (from 133-bit evaluations
-// with certified bounds when they suffice, else from exact products) is
+// A site's hyperboloid vector (from 133-bit evaluations with certified
+// bounds when they suffice, else from exact products) is
 // within 4u of each entry of the vector computed in 200 bits from the
 // polygon's formulas: the vertices and side midpoints at genus 2, 16 and
 // 127, and a site 2^-70 from the circle (where the evaluations cannot tell).
@@ -105,9 +105,8 @@ START_TEST(site_vectors_within_four_units) {
     const exact::FieldElement one = F.from_double(1), tiny = F.from_double(std::ldexp(1.0, -70));
     M.add_site({F.sub(one, tiny), F.zero(), one});
     z.push_back({T(1) - ldexp(T(1), -70), T(0)});
-    predicates::DoubleStage D(M);
     for (std::size_t s = 0; s < z.size(); ++s) {
-      const std::array<double, 3> &n = D.site_vector(int32_t(s));
+      const std::array<double, 3> &n = M.site(int32_t(s)).vector;
       const T r2 = z[s][0] * z[s][0] + z[s][1] * z[s][1], w = 1 - r2;
       const T ref[3] = {(1 + r2) / w, 2 * z[s][0] / w, 2 * z[s][1] / w};
       for (int i = 0; i < 3; ++i)
@@ -219,7 +218,7 @@ START_TEST(sites_reject_points_outside_the_disk) {
     thrown = true;
   }
   ck_assert(thrown);
-  // sigma e^{i pi/8} / sigma: on the circle, where no enclosure can tell and
+  // sigma e^{i pi/8} / sigma: on the circle, where no evaluation can tell and
   // the exact test refuses the tie.
   predicates::ExactSite on = surface::exact_vertex(F, 0);
   on.Z = F.sigma();
@@ -233,10 +232,11 @@ START_TEST(sites_reject_points_outside_the_disk) {
 }
 END_TEST
 
-// Field::enclose holds the value computed independently in 200 bits (the
-// polygon's formulas in MPFR) and is a few ulps wide: the side midpoints'
-// coordinates X = Re(m) sigma, Y = Im(m) sigma, and sigma itself.
-START_TEST(enclosures_hold_the_multiprecision_values) {
+// Field::evaluate_133's bound holds the value computed independently in 200
+// bits (the polygon's formulas in MPFR) and is tiny: the side midpoints'
+// coordinates X = Re(m) sigma, Y = Im(m) sigma, and sigma itself. The
+// site vectors' certificate rests on it.
+START_TEST(evaluation_bounds_hold_the_multiprecision_values) {
   using T = exact::mp_real<60>;
   for (int g : {2, 3, 5, 127}) {
     const exact::Field &F = exact::field_of_genus(g);
@@ -247,15 +247,15 @@ START_TEST(enclosures_hold_the_multiprecision_values) {
       const T values[3] = {ref.re * sigma, ref.im * sigma, sigma};
       const exact::FieldElement *elements[3] = {&m[k].X, &m[k].Y, &m[k].Z};
       for (int c = 0; c < 3; ++c) {
-        double lo, hi;
-        F.enclose(*elements[c], &lo, &hi);
-        // An exact zero (a midpoint on an axis) is [0, 0]; the reference
-        // is zero up to its own rounding there.
-        const bool zero = lo == 0 && hi == 0 && abs(values[c]) < T(1e-50);
-        ck_assert_msg(zero || (T(lo) <= values[c] && values[c] <= T(hi)), "g=%d k=%d coordinate %d outside [%a, %a]", g,
-                      k, c, lo, hi);
-        ck_assert_msg(hi - lo <= 1e-14 * std::max(1.0, std::abs(lo)) || (lo <= 0 && hi >= 0 && hi - lo <= 1e-14),
-                      "g=%d k=%d coordinate %d: [%a, %a] too wide", g, k, c, lo, hi);
+        exact::mp_real<40> value, bound;
+        F.evaluate_133(*elements[c], &value, &bound);
+        // An exact zero (a midpoint on an axis) evaluates to 0 with bound 0;
+        // the reference is zero up to its own rounding there.
+        const bool zero = value == 0 && bound == 0 && abs(values[c]) < T(1e-50);
+        ck_assert_msg(zero || abs(T(value) - values[c]) <= T(bound), "g=%d k=%d coordinate %d outside its bound", g, k,
+                      c);
+        ck_assert_msg(bound <= ldexp(exact::mp_real<40>(1), -100) * (abs(value) > 1 ? abs(value) : exact::mp_real<40>(1)),
+                      "g=%d k=%d coordinate %d: bound %g too wide", g, k, c, bound.convert_to<double>());
       }
     }
   }
@@ -305,7 +305,7 @@ int main(void) {
     tcase_add_test(tc, paired_points_have_one_representative);
     tcase_add_test(tc, rotated_rational_points_are_cocircular);
     tcase_add_test(tc, sites_reject_points_outside_the_disk);
-    tcase_add_test(tc, enclosures_hold_the_multiprecision_values);
+    tcase_add_test(tc, evaluation_bounds_hold_the_multiprecision_values);
     tcase_add_test(tc, large_circumdisk_matches_the_systole_threshold);
   });
 }
