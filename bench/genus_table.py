@@ -6,6 +6,10 @@ bench/triangulation_bench (CPU times; peak resident size from the kernel).
 
     python3 bench/genus_table.py --build-dir build [--n 100000,1000000] [--genus 2,3,4,8,16,32,64,128,256]
 
+--genus takes ranges too: `--genus 2-256 --n 10` sweeps every genus (about
+an hour here) and ends with the worst dummy ratio from genus 4 on and the
+slowest first creation up to genus 128 and beyond.
+
 The creation times and the peak memory come from the run with the first n;
 each further n is one more fresh process for its µs/pt column.
 
@@ -48,6 +52,15 @@ def run(bench, g, n, timeout):
     return dict(kv.split('=', 1) for kv in m.group(1).split())
 
 
+def genera(spec):
+    """'2,4,8-10' -> [2, 4, 8, 9, 10]."""
+    out = []
+    for item in spec.split(','):
+        lo, _, hi = item.partition('-')
+        out.extend(range(int(lo), int(hi or lo) + 1))
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--build-dir', default='build')
@@ -63,7 +76,8 @@ def main():
     print(f'| g | dummies | area bound | ratio | first create ms, CPU / wall | cached create ms, CPU | peak MiB | {columns} |')
     print('|---:|---:|---:|---:|---:|---:|---:|' + '---:|' * len(ns))
     dashes = ' | '.join('-' for _ in ns)
-    for g in (int(x) for x in a.genus.split(',')):
+    worst_ratio, slowest = (0, 0), {128: (0, 0), 'beyond': (0, 0)}
+    for g in genera(a.genus):
         b = area_bound(g)
         if g > create_max:
             print(f'| {g} | - | {b} | - | refused: above HDT_CREATE_GENUS_MAX = {create_max} | - | - | {dashes} |')
@@ -78,8 +92,18 @@ def main():
             more = run(bench, g, n, a.timeout)
             per_point.append(more['error'] if 'error' in more else f'{float(more["cpu_us_per_pt"]):.2f}')
         d = int(r['dummies'])
+        create = float(r['create_cpu_ms'])
+        if g >= 4: worst_ratio = max(worst_ratio, (d / b, g))
+        key = 128 if g <= 128 else 'beyond'
+        slowest[key] = max(slowest[key], (create, g))
         print(f'| {g} | {d} | {b} | {d / b:.2f} | {float(r["create_cpu_ms"]):.0f} / {float(r["create_ms"]):.0f} | '
               f'{float(r["cached_cpu_ms"]):.1f} | {int(r["peak_kib"]) / 1024:.0f} | {" | ".join(per_point)} |', flush=True)
+    print()
+    if worst_ratio[1]:
+        print(f'Worst dummies / area bound from genus 4 on: {worst_ratio[0]:.3f} (genus {worst_ratio[1]}).')
+    for key, where in ((128, 'up to genus 128'), ('beyond', 'above genus 128')):
+        if slowest[key][1]:
+            print(f'Slowest first hdt_create {where}, CPU: {slowest[key][0]:.0f} ms (genus {slowest[key][1]}).')
 
 
 if __name__ == '__main__':
