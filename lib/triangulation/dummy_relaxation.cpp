@@ -261,9 +261,11 @@ class DummyRelaxation {
     auto it = std::find_if(list.begin(), list.end(),
                            [&](const Transition &x) { return x.w == w && x.a == a && x.b == b; });
     if (it == list.end()) {
-      // Old neighbours pile up as merges change the stars: past 32 (a star
-      // has about 7 corners, each met in up to 3 frames) the list restarts.
-      if (list.size() >= 32) list.clear();
+      // Old neighbours pile up as merges change the stars: past 64 the list
+      // restarts. (A star has about 7 corners, each met in up to 3 frames;
+      // at 32 half of the matrices at genus 128 were recomputed after a
+      // restart, and 128 saves no more than the longer scans cost.)
+      if (list.size() >= 64) list.clear();
       using Matrix = std::array<std::array<DD, 3>, 3>;
       auto product = [](const Matrix &X, const Matrix &Y) {
         Matrix Z;
