@@ -28,8 +28,8 @@ struct hdt_triangulation {
   mutable hdt::triangulation::CentreCache centres;
   mutable std::vector<hdt::triangulation::StarEntry> star;
   mutable std::vector<hdt::triangulation::Point> cell;
-  // hdt_vertex_stars' and hdt_voronoi_cells' rows (8 bytes an entry, 24 a
-  // face), kept: a later call writes into pages already mapped.
+  // hdt_vertex_stars' and hdt_voronoi_cells' rows (about 92 bytes a
+  // vertex), kept: a later call writes into pages already mapped.
   mutable hdt::triangulation::AllStars rows;
 };
 

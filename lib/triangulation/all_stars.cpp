@@ -1,7 +1,7 @@
-// Every star at once: count the corners per vertex, scatter each corner
-// into its vertex's row (with the next face about the vertex, read off the
-// corner's own face), then order each row by following those links from
-// the vertex's stored face, as vertex_star walks.
+// Every star at once: one pass over the faces puts each corner into its
+// vertex's slots (with the next face about the vertex, read off the
+// corner's own face), then each row is ordered by following those links
+// from the vertex's stored face, as vertex_star walks.
 #include "triangulation/all_stars.hpp"
 
 #include <algorithm>
@@ -57,8 +57,8 @@ inline void ranks(const uint32_t fc[16], std::size_t d, const uint32_t x[16], in
 
 }  // namespace
 
-// Faces ahead of the scatter to fetch their vertices' row entries for: it
-// writes by vertex id, which does not follow the faces' order.
+// Faces ahead of the scatter to fetch their vertices' counts and slots
+// for: it writes by vertex id, which does not follow the faces' order.
 constexpr std::size_t kAhead = 16;
 
 template <class U>
@@ -68,22 +68,33 @@ void AllStars::build_rows(const Triangulation &tri, bool matrices, CentreCache *
   const std::vector<Vertex> &V = tri.vertices();
   group::TranslationTable &T = tri.table();
   const std::size_t n = V.size(), nf = F.size();
-  // Counts at v + 2: after the prefix sums start[v + 1] is where v's row
-  // begins, and the scatter moves it to where it ends, which is start[v + 1]
-  // as it should be.
-  rows.start.assign(n + 2, 0);
+  // The degrees (count[n] ends up the entry count after the ordering, which
+  // turns the counts into the rows' starts).
+  rows.count.assign(n + 1, 0);
   moved_.clear();
-  U *start = rows.start.data();
+  rows.overflow.clear();
+  // Kept from call to call (its pages stay mapped); grown when too small.
+  // A vertex's slots are one cache line (for 32 bits), aligned.
+  if (rows.slot_capacity < n) {
+    rows.slot_store.reset(new U[2 * kSlots * (n + 1)]);
+    rows.slot_capacity = n;
+    const std::size_t line = 2 * kSlots * sizeof(U);
+    const std::size_t skip = (line - reinterpret_cast<std::uintptr_t>(rows.slot_store.get()) % line) % line;
+    rows.slots = rows.slot_store.get() + skip / sizeof(U);
+  }
+  U *slots = rows.slots;
+  U *count = rows.count.data();
   bool block_missing = false;
   for (std::size_t f = 0; f < nf; ++f) {
     const Face &A = F[f];
-    for (int c = 0; c < 3; ++c) {
-      if (A.v[c] >= n) throw std::logic_error("all stars: face " + std::to_string(f) + " names no vertex");
-      ++start[A.v[c] + 2];
-    }
+    if (f + kAhead < nf)
+      for (int c = 0; c < 3; ++c) {
+        const uint32_t w = F[f + kAhead].v[c];
+        if (w < n) __builtin_prefetch(slots + 2 * kSlots * std::size_t(w), 1), __builtin_prefetch(count + w, 1);
+      }
     // The cells' centres in the same pass over the faces, through the
     // cache as hdt_voronoi_cell (the same bits): a hit here; the misses by
-    // blocks of faces just counted, still in cache (a call a face to
+    // blocks of faces just passed, still in cache (a call a face to
     // compute one cost 40 instructions a face more).
     if (centre) {
       if (cache->holds(tri, uint32_t(f))) centre[f] = cache->centre_held(uint32_t(f), nullptr);
@@ -93,74 +104,84 @@ void AllStars::build_rows(const Triangulation &tri, bool matrices, CentreCache *
         block_missing = false;
       }
     }
-    if ((A.t[0] | A.t[1] | A.t[2]) == 0) continue;
-    // A translated corner (few: the faces across F_g's sides): vertex_star's
-    // translation, computed now, where it may add ids; with matrices, the
-    // corner's matrix too, as warm_corner_matrices would.
+    if ((A.t[0] | A.t[1] | A.t[2]) != 0) {
+      // A translated corner (few: the faces across F_g's sides): vertex_star's
+      // translation, computed now, where it may add ids; with matrices, the
+      // corner's matrix too, as warm_corner_matrices would.
+      for (int c = 0; c < 3; ++c) {
+        if (A.t[c] == 0 || A.v[c] >= n) continue;
+        const TranslationId home = V[A.v[c]].home;
+        const TranslationId t = T.inverse(T.compose(A.t[c], T.inverse(home)));
+        moved_.push_back({3 * f + c, t});
+        if (matrices) {
+          T.moebius(A.t[c]);
+          if (t != 0) T.moebius(t);
+        }
+      }
+    }
+    // Each corner into its vertex's next slot, in face order: its corner
+    // index k = 3f + c and the next face about the vertex.
     for (int c = 0; c < 3; ++c) {
-      if (A.t[c] == 0) continue;
-      const TranslationId home = V[A.v[c]].home;
-      const TranslationId t = T.inverse(T.compose(A.t[c], T.inverse(home)));
-      moved_.push_back({3 * f + c, t});
-      if (matrices) {
-        T.moebius(A.t[c]);
-        if (t != 0) T.moebius(t);
+      const uint32_t w = A.v[c];
+      if (w >= n) throw std::logic_error("all stars: face " + std::to_string(f) + " names no vertex");
+      const U k = U(3 * f + c) | (A.t[c] != 0 ? top : U(0));
+      const U next = U(A.n[c == 2 ? 0 : c + 1]);
+      const U d = count[w]++;
+      if (d < kSlots) {
+        U *e = slots + 2 * (kSlots * std::size_t(w) + d);
+        e[0] = k, e[1] = next;
+      } else {
+        rows.overflow.push_back({w, k, next});
       }
     }
   }
   if (matrices)
     for (const Vertex &u : V)
       if (u.alive() && u.home != 0) T.moebius(u.home);
-  std::size_t longest = 0;
-  for (std::size_t v = 2; v < n + 2; ++v) {
-    longest = std::max<std::size_t>(longest, start[v]);
-    start[v] += start[v - 1];
+  // The overflow by vertex, each vertex's entries still in face order.
+  std::stable_sort(rows.overflow.begin(), rows.overflow.end(),
+                   [](const Overflow<U> &x, const Overflow<U> &y) { return x.v < y.v; });
+  if (rows.order_capacity < entries_) {
+    rows.order.reset(new U[entries_]);
+    rows.order_capacity = entries_;
   }
-  if (longest >= 16) rows.long_row.resize(2 * longest);
-  // Kept from call to call (its pages stay mapped); grown when too small.
-  if (rows.capacity < entries_) {
-    rows.u.reset(new U[2 * entries_]);
-    rows.capacity = entries_;
-  }
-  // The scatter, in face order, the entries it writes fetched some faces
-  // ahead (the row ends it reads there are in a 4-byte array, mostly in
-  // cache).
-  U *u = rows.u.get();
-  std::size_t m = 0;
-  uint64_t moved_k = moved_.empty() ? UINT64_MAX : moved_[0].first;  // the next translated corner's
-  for (std::size_t f = 0; f < nf; ++f) {
-    const Face &A = F[f];
-    if (f + kAhead < nf)
-      for (int c = 0; c < 3; ++c) __builtin_prefetch(u + 2 * std::size_t(start[F[f + kAhead].v[c] + 1]), 1);
-    for (int c = 0; c < 3; ++c) {
-      const U k = U(3 * f + c);
-      U flag = 0;
-      if (k == moved_k) flag = top, moved_k = ++m < moved_.size() ? moved_[m].first : UINT64_MAX;
-      U *e = u + 2 * std::size_t(start[A.v[c] + 1]++);
-      e[0] = U(k | flag), e[1] = U(A.n[c == 2 ? 0 : c + 1]);
-    }
-  }
-  rows.start.pop_back();
 }
 
 template <class U>
 void AllStars::order_rows(const Triangulation &tri, Rows<U> &rows) {
   constexpr U top = U(1) << (std::numeric_limits<U>::digits - 1);
   const std::vector<Vertex> &V = tri.vertices();
-  U *u = rows.u.get();
-  const U *start = rows.start.data();
+  U *count = rows.count.data();
+  const U *slots = rows.slots;
+  U *order = rows.order.get();
   const std::size_t n = V.size();
   const auto broken = [](std::size_t v) {
     return std::logic_error("all stars: the star of vertex " + std::to_string(v) + " is broken");
   };
+  std::size_t m = 0, spill = 0;  // entries ordered; overflow entries used
+  std::vector<U> &long_row = rows.long_row;
   for (std::size_t v = 0; v < n; ++v) {
-    const std::size_t b = start[v], d = start[v + 1] - b;
+    const std::size_t d = count[v];
+    count[v] = U(m);  // now the row's start
     if (!V[v].alive()) {
       if (d != 0) throw broken(v);
       continue;
     }
-    const U *row = u + 2 * b;  // k at row[2i], the next face at row[2i + 1]
-    U *out = u + b;            // may overlap the row itself (the first rows): read whole first
+    if (d == 0 || m + d > entries_) throw broken(v);
+    // The row: the vertex's slots, then its overflow entries (k at
+    // row[2i], the next face at row[2i + 1]), in face order.
+    const U *row = slots + 2 * kSlots * v;
+    if (d > kSlots) {
+      long_row.resize(2 * d);
+      std::copy(row, row + 2 * kSlots, long_row.begin());
+      for (std::size_t i = kSlots; i < d; ++i, ++spill) {
+        if (spill == rows.overflow.size() || rows.overflow[spill].v != v) throw broken(v);
+        long_row[2 * i] = rows.overflow[spill].k, long_row[2 * i + 1] = rows.overflow[spill].next;
+      }
+      row = long_row.data();
+    }
+    U *out = order + m;
+    m += d;
     // In star order: from the vertex's stored face, the entry of the face
     // the previous one leads to. A row lists its faces in increasing order
     // (the scatter ran in face order), so in a small row (nearly all) the
@@ -170,7 +191,7 @@ void AllStars::order_rows(const Triangulation &tri, Rows<U> &rows) {
     // mask catches an entry met twice.
     const uint32_t first = V[v].face;
     uint32_t f = first;
-    if (d > 0 && d < 16) {
+    if (d < 16) {
       // The successors' ranks in lanes 0..d-1, the stored face's in lane d.
       uint32_t fc[16], x[16];
       U k[16];
@@ -191,26 +212,26 @@ void AllStars::order_rows(const Triangulation &tri, Rows<U> &rows) {
       for (std::size_t j = 0; j < d; ++j) {
         wrong |= fc[i] ^ f;
         used |= 1u << i;
-        out[j] = k[i];  // (the row is read whole: out may overlap it)
+        out[j] = k[i];
         f = x[i];
         i = succ[i];
       }
       if (wrong != 0 || used != (1u << d) - 1 || f != first) throw broken(v);
       continue;
     }
-    if (d == 0) throw broken(v);
-    // A long row: copied (it may overlap where it is written), then walked.
-    U *copy = rows.long_row.data();
-    std::copy(row, row + 2 * d, copy);
+    // A long row: walked by search.
     for (std::size_t j = 0; j < d; ++j) {
       std::size_t i = 0;
-      while (i < d && uint32_t((copy[2 * i] & ~top) / 3) != f) ++i;
+      while (i < d && uint32_t((row[2 * i] & ~top) / 3) != f) ++i;
       if (i == d) throw broken(v);
-      out[j] = copy[2 * i];
-      f = uint32_t(copy[2 * i + 1]);
+      out[j] = row[2 * i];
+      f = uint32_t(row[2 * i + 1]);
     }
     if (f != first) throw broken(v);
   }
+  // Every corner in a row (each face names live vertices only).
+  if (m != entries_ || spill != rows.overflow.size()) throw broken(n);
+  count[n] = U(m);
 }
 
 void AllStars::build(const Triangulation &tri, bool matrices, bool wide) { build(tri, matrices, nullptr, nullptr, wide); }
@@ -240,11 +261,12 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
                     Emit &&emit) const {
   constexpr U top = U(1) << (std::numeric_limits<U>::digits - 1);
   const std::vector<Vertex> &V = tri.vertices();
-  const U *order = rows.u.get();
+  const U *order = rows.order.get();
+  const U *start = rows.count.data();
   const std::size_t n = V.size();
   constexpr std::size_t ahead = 64;  // entries
   for (std::size_t v = 0; v < n; ++v) {
-    const std::size_t b = rows.start[v], e = rows.start[v + 1];
+    const std::size_t b = start[v], e = start[v + 1];
     if (offsets) offsets[v] = b;
     const TranslationId home = V[v].home;
     for (std::size_t j = b; j < e; ++j) {
@@ -263,7 +285,7 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
       emit(j, f, int(k - 3 * U(f)), t);
     }
   }
-  if (offsets) offsets[n] = rows.start[n];
+  if (offsets) offsets[n] = start[n];
 }
 
 template <class Emit>

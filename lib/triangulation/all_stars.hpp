@@ -2,9 +2,9 @@
 // entries of vertex v are [offset(v), offset(v + 1)), each exactly what
 // vertex_star(v) gives (same first face, same order, same translations).
 // Built in face order, not by walking each star: a walk jumps through
-// memory (a cache miss per face at 10^6 vertices), while counting the
-// corners per vertex, scattering them into their vertex's row and ordering
-// each row (a handful of entries, in cache) reads the faces in order.
+// memory (a cache miss per face at 10^6 vertices), while scattering the
+// corners into fixed slots per vertex and ordering each row (a handful of
+// entries, in cache) reads the faces once, in order.
 #pragma once
 
 #include <cstddef>
@@ -60,19 +60,30 @@ class AllStars {
   template <class Emit>
   void dispatch(const Triangulation &tri, std::size_t *offsets, const Point *prefetch, Emit &&emit) const;
 
-  // The scatter leaves per entry i its corner k = 3f + c at u[2i] and the
-  // next face about the vertex (counterclockwise) at u[2i + 1], a row in
-  // face order; ordering the rows then puts each row's corners, in star
-  // order, at u[start[v]] .. (a row read whole before it is written, and
-  // written below where the rows after it lie). The top bit of k marks a
-  // corner whose translation is not the vertex's home, listed in moved_
-  // (by k). 32-bit while 3F < 2^31.
+  // The scatter puts each corner, in face order, into its vertex's next
+  // slot: its corner index k = 3f + c (the top bit set when its translation
+  // is not the vertex's home, listed in moved_ by k) and the next face about
+  // the vertex (counterclockwise). kSlots slots a vertex (one cache line
+  // for 32 bits; most vertices have 4 to 8 faces), the entries beyond in
+  // overflow. Ordering the rows then puts each row's corners, in star
+  // order, at order[start(v)] .., and turns count into the starts. 32-bit
+  // while 3F < 2^31.
+  static constexpr std::size_t kSlots = 8;
+  template <class U>
+  struct Overflow {
+    uint32_t v;
+    U k, next;
+  };
   template <class U>
   struct Rows {
-    std::vector<U> start;        // id bound + 1
-    std::unique_ptr<U[]> u;      // 2 per entry, uninitialised until scattered
-    std::size_t capacity = 0;    // entries allocated
-    std::vector<U> long_row;     // a row of 16 entries or more, copied while ordered
+    std::vector<U> count;             // id bound + 1: degrees, then where each row starts
+    std::unique_ptr<U[]> slot_store;  // 2 kSlots per vertex, uninitialised until scattered
+    U *slots = nullptr;               // slot_store aligned to a cache line
+    std::size_t slot_capacity = 0;    // vertices allocated
+    std::vector<Overflow<U>> overflow;
+    std::unique_ptr<U[]> order;  // 1 per entry
+    std::size_t order_capacity = 0;
+    std::vector<U> long_row;  // a row of more than kSlots entries, gathered to be ordered
   };
   Rows<uint32_t> small_;
   Rows<uint64_t> large_;
