@@ -6,13 +6,15 @@
  * `calls - 1` more. Then the cost of saving and loading that triangulation
  * next to hdt_insert_many of its points.
  *
- *   dual_bench [--n 1000000] [--genus 2] [--calls 4]
+ *   dual_bench [--n 1000000] [--genus 2] [--calls 4] [--rounds 0]
  *
  * Prints one line per output: milliseconds and the ratio to hdt_faces
  * (vertex ids and translations), first call and best later call; then
  * hdt_voronoi_vertices, hdt_voronoi_edges and hdt_voronoi_cells again, now that
  * hdt_voronoi_cell has filled the handle's centre cache (not with
- * --calls 1); then
+ * --calls 1); then, with --rounds R, R rounds of hdt_faces,
+ * hdt_vertex_stars and hdt_voronoi_cells in turn (best and median of
+ * each; --calls 0 leaves out everything else); then
  * hdt_insert_many, hdt_save and hdt_load (first and best) in ms. With
  * --calls 1 each function runs once, for callgrind --toggle-collect.
  * docs/dual.md and docs/format.md quote it. */
@@ -76,6 +78,37 @@ static void all_cells(void) { size_t n; check(hdt_voronoi_cells(T, B.offsets, B.
 
 static int calls = 4;
 
+static int cmp_double(const void *a, const void *b) {
+  const double x = *(const double *)a, y = *(const double *)b;
+  return x < y ? -1 : x > y;
+}
+
+/* --rounds R: R rounds of hdt_faces, hdt_vertex_stars and hdt_voronoi_cells
+   one after the other, so that the three see the same load (on a shared
+   machine the load moves between the separate timings above); the best
+   and the median round of each, and their ratios to hdt_faces'. */
+static void interleaved(int rounds) {
+  void (*f[3])(void) = {faces, all_stars, all_cells};
+  const char *name[3] = {"hdt_faces", "hdt_vertex_stars", "hdt_voronoi_cells"};
+  double *ms = malloc(3 * (size_t)rounds * sizeof *ms);
+  for (int r = 0; r < rounds; ++r)
+    for (int k = 0; k < 3; ++k) {
+      const double t0 = bench_now_ms();
+      f[k]();
+      ms[k * rounds + r] = bench_now_ms() - t0;
+    }
+  double best[3], median[3];
+  for (int k = 0; k < 3; ++k) {
+    qsort(ms + k * rounds, (size_t)rounds, sizeof *ms, cmp_double);
+    best[k] = ms[k * rounds], median[k] = ms[k * rounds + rounds / 2];
+  }
+  printf("  %d interleaved rounds (best, median):\n", rounds);
+  for (int k = 0; k < 3; ++k)
+    printf("  %-32s best %9.1f ms %5.2f x hdt_faces   median %9.1f ms %5.2f x hdt_faces\n", name[k], best[k],
+           best[k] / best[0], median[k], median[k] / median[0]);
+  free(ms);
+}
+
 /* The first call (it may compute translation products, matrices or cached
    circumcentres), then the best of the others (0 with --calls 1). */
 static void time_calls(void (*f)(void), double *first, double *best) {
@@ -100,12 +133,14 @@ static void load(void) {
 
 int main(int argc, char **argv) {
   size_t n = 1000000;
-  int genus = 2;
+  int genus = 2, rounds = 0;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!strcmp(argv[i], "--n")) n = strtoull(argv[i + 1], NULL, 10);
     else if (!strcmp(argv[i], "--genus")) genus = atoi(argv[i + 1]);
     else if (!strcmp(argv[i], "--calls")) calls = atoi(argv[i + 1]);
+    else if (!strcmp(argv[i], "--rounds")) rounds = atoi(argv[i + 1]);
   }
+  const int only_rounds = calls == 0 && rounds > 0;
   if (calls < 1) calls = 1;
   double *xy = malloc(2 * n * sizeof *xy);
   bench_points_in_polygon(genus, n, 1, xy);
@@ -147,7 +182,7 @@ int main(int argc, char **argv) {
               {"hdt_vertex_star, every vertex", stars},
               {"hdt_voronoi_cell, every vertex", cells}};
   double base_first = 0, base_best = 0;
-  for (size_t k = 0; k < sizeof runs / sizeof runs[0]; ++k) {
+  for (size_t k = 0; !only_rounds && k < sizeof runs / sizeof runs[0]; ++k) {
     double first, best;
     time_calls(runs[k].f, &first, &best);
     if (k == 0) base_first = first, base_best = best;
@@ -162,11 +197,20 @@ int main(int argc, char **argv) {
     void (*f)(void);
   } cached[] = {{"hdt_voronoi_vertices, cache full", voronoi_vertices}, {"hdt_voronoi_edges, cache full", voronoi_edges},
               {"hdt_voronoi_cells, cache full", all_cells}};
-  for (size_t k = 0; calls > 1 && k < sizeof cached / sizeof cached[0]; ++k) {
+  for (size_t k = 0; !only_rounds && calls > 1 && k < sizeof cached / sizeof cached[0]; ++k) {
     double first, best;
     time_calls(cached[k].f, &first, &best);
     printf("  %-32s first %9.1f ms %5.2f x hdt_faces   later %9.1f ms %5.2f x hdt_faces\n", cached[k].name, first,
            first / base_first, best, base_best > 0 ? best / base_best : 0.0);
+  }
+  if (rounds > 0) {
+    faces(), all_stars(), all_cells(); /* later calls only (the centre cache full, as in the table) */
+    interleaved(rounds);
+  }
+  if (only_rounds) {
+    free(B.ids), free(B.offsets), free(B.u32a), free(B.u32b), free(B.i32a), free(B.u8), free(B.d1), free(B.d2);
+    hdt_destroy(T);
+    return 0;
   }
   check(hdt_save(T, NULL, 0, &saved_size), "hdt_save");
   saved = malloc(saved_size);

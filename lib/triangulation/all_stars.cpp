@@ -10,52 +10,12 @@
 #include <stdexcept>
 #include <string>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace hdt::triangulation {
 
-namespace {
-
-// The ranks of values among a row's d faces fc[0..d) (how many faces lie
-// below each): out[i] for x[i], i up to 8 when d < 8, else up to 16 (x
-// set there). All at once, a vector comparison of every x with each face
-// in turn, where the compiler has vector extensions (a fifth of the
-// instructions of one rank at a time), else by loops. Compared as signed
-// after flipping the top bit, which SSE2 compares directly.
-#if defined(__GNUC__)
-template <int L>  // 4 L values
-inline void ranks_of(const uint32_t fc[16], std::size_t d, const uint32_t x[16], int32_t out[16]) {
-  typedef uint32_t u4 __attribute__((vector_size(16)));
-  typedef int32_t v4 __attribute__((vector_size(16)));
-  const u4 flip = {0x80000000u, 0x80000000u, 0x80000000u, 0x80000000u};
-  v4 xv[L], acc[L] = {};
-  for (int q = 0; q < L; ++q) {
-    u4 w;
-    std::memcpy(&w, x + 4 * q, sizeof w);
-    xv[q] = v4(w ^ flip);
-  }
-  for (std::size_t j = 0; j < d; ++j) {
-    const int32_t y = int32_t(fc[j] ^ 0x80000000u);
-    const v4 yv = {y, y, y, y};
-    for (int q = 0; q < L; ++q) acc[q] -= yv < xv[q];  // the comparison gives -1 where the face is below
-  }
-  std::memcpy(out, acc, sizeof acc);
-}
-#endif
-
-inline void ranks(const uint32_t fc[16], std::size_t d, const uint32_t x[16], int32_t out[16]) {
-#if defined(__GNUC__)
-  // Eight values (nearly every row) need half the comparisons.
-  if (d < 8) ranks_of<2>(fc, d, x, out);
-  else ranks_of<4>(fc, d, x, out);
-#else
-  for (std::size_t i = 0; i <= d; ++i) {  // the lanes the caller reads
-    int32_t r = 0;
-    for (std::size_t j = 0; j < d; ++j) r += fc[j] < x[i];
-    out[i] = r;
-  }
-#endif
-}
-
-}  // namespace
 
 // Faces ahead of the scatter to fetch their vertices' counts and slots
 // for: it writes by vertex id, which does not follow the faces' order.
@@ -76,7 +36,7 @@ void AllStars::build_rows(const Triangulation &tri, bool matrices, CentreCache *
   // Kept from call to call (its pages stay mapped); grown when too small.
   // A vertex's slots are one cache line (for 32 bits), aligned.
   if (rows.slot_capacity < n) {
-    rows.slot_store.reset(new U[2 * kSlots * (n + 1)]);
+    rows.slot_store.reset(new U[2 * kSlots * (n + 1)]());  // (zeros: the ordering reads whole lines)
     rows.slot_capacity = n;
     const std::size_t line = 2 * kSlots * sizeof(U);
     const std::size_t skip = (line - reinterpret_cast<std::uintptr_t>(rows.slot_store.get()) % line) % line;
@@ -112,7 +72,7 @@ void AllStars::build_rows(const Triangulation &tri, bool matrices, CentreCache *
         if (A.t[c] == 0 || A.v[c] >= n) continue;
         const TranslationId home = V[A.v[c]].home;
         const TranslationId t = T.inverse(T.compose(A.t[c], T.inverse(home)));
-        moved_.push_back({3 * f + c, t});
+        moved_.push_back({4 * f + c, t});
         if (matrices) {
           T.moebius(A.t[c]);
           if (t != 0) T.moebius(t);
@@ -120,11 +80,11 @@ void AllStars::build_rows(const Triangulation &tri, bool matrices, CentreCache *
       }
     }
     // Each corner into its vertex's next slot, in face order: its corner
-    // index k = 3f + c and the next face about the vertex.
+    // index k = 4f + c and the next face about the vertex.
     for (int c = 0; c < 3; ++c) {
       const uint32_t w = A.v[c];
       if (w >= n) throw std::logic_error("all stars: face " + std::to_string(f) + " names no vertex");
-      const U k = U(3 * f + c) | (A.t[c] != 0 ? top : U(0));
+      const U k = U(4 * f + c) | (A.t[c] != 0 ? top : U(0));
       const U next = U(A.n[c == 2 ? 0 : c + 1]);
       const U d = count[w]++;
       if (d < kSlots) {
@@ -183,46 +143,51 @@ void AllStars::order_rows(const Triangulation &tri, Rows<U> &rows) {
     U *out = order + m;
     m += d;
     // In star order: from the vertex's stored face, the entry of the face
-    // the previous one leads to. A row lists its faces in increasing order
-    // (the scatter ran in face order), so in a small row (nearly all) the
-    // entry of face x is at the rank of x, the count of the row's faces
-    // below it: a sum of comparisons, without a branch, computed for every
-    // entry before the walk, which is then a chain of byte loads. A used
-    // mask catches an entry met twice.
+    // the previous one leads to, found by comparing the face with the
+    // row's (at most 8: two vector comparisons). A face not in the row
+    // gives lane 8, and an entry met twice shows in the used mask.
     const uint32_t first = V[v].face;
     uint32_t f = first;
-    if (d < 16) {
-      // The successors' ranks in lanes 0..d-1, the stored face's in lane d.
-      uint32_t fc[16], x[16];
-      U k[16];
-      int32_t succ[16];
-      // The lanes ranks reads beyond the row: a fixed-size fill (four
-      // vector stores; a fill to d became a call to memset per row).
-      for (std::size_t i = 0; i < 16; ++i) x[i] = kNone;
-      for (std::size_t i = 0; i < d; ++i)
-        k[i] = row[2 * i], fc[i] = uint32_t((k[i] & ~top) / 3), x[i] = uint32_t(row[2 * i + 1]);
-      x[d] = first, fc[d] = kNone;  // (a rank of d, a face not in the row, then fails the check)
-      ranks(fc, d, x, succ);
-      // Checked at the end: each face reached is the one sought (a face
-      // not in the row gets the rank of another), and every entry used
-      // once.
-      int32_t i = succ[d];
+#if defined(__SSE2__)
+    if constexpr (sizeof(U) == 4) if (d <= kSlots) {
+      // The row's k and next faces apart, the faces k >> 2 (without the
+      // flag); lanes d .. 7 (not written by the scatter) made no face.
+      const __m128i *r = reinterpret_cast<const __m128i *>(row);
+      const __m128 r0 = _mm_castsi128_ps(_mm_loadu_si128(r)), r1 = _mm_castsi128_ps(_mm_loadu_si128(r + 1)),
+                   r2 = _mm_castsi128_ps(_mm_loadu_si128(r + 2)), r3 = _mm_castsi128_ps(_mm_loadu_si128(r + 3));
+      alignas(16) uint32_t k[12], x[12];
+      const __m128i k0 = _mm_castps_si128(_mm_shuffle_ps(r0, r1, _MM_SHUFFLE(2, 0, 2, 0))),
+                    k1 = _mm_castps_si128(_mm_shuffle_ps(r2, r3, _MM_SHUFFLE(2, 0, 2, 0)));
+      _mm_store_si128(reinterpret_cast<__m128i *>(k), k0), _mm_store_si128(reinterpret_cast<__m128i *>(k + 4), k1);
+      _mm_store_si128(reinterpret_cast<__m128i *>(x), _mm_castps_si128(_mm_shuffle_ps(r0, r1, _MM_SHUFFLE(3, 1, 3, 1))));
+      _mm_store_si128(reinterpret_cast<__m128i *>(x + 4), _mm_castps_si128(_mm_shuffle_ps(r2, r3, _MM_SHUFFLE(3, 1, 3, 1))));
+      k[8] = 0, x[8] = kNone;
+      const __m128i low = _mm_set1_epi32(0x7fffffff), lane = _mm_set_epi32(3, 2, 1, 0);
+      const __m128i dv = _mm_set1_epi32(int32_t(d));
+      // Lane i < d keeps its face; the others become kNone, which no face is.
+      const __m128i fc0 = _mm_or_si128(_mm_srli_epi32(_mm_and_si128(k0, low), 2),
+                                       _mm_xor_si128(_mm_cmplt_epi32(lane, dv), _mm_set1_epi32(-1)));
+      const __m128i fc1 =
+          _mm_or_si128(_mm_srli_epi32(_mm_and_si128(k1, low), 2),
+                       _mm_xor_si128(_mm_cmplt_epi32(_mm_add_epi32(lane, _mm_set1_epi32(4)), dv), _mm_set1_epi32(-1)));
       unsigned used = 0;
-      uint32_t wrong = 0;
       for (std::size_t j = 0; j < d; ++j) {
-        wrong |= fc[i] ^ f;
+        const __m128i fv = _mm_set1_epi32(int32_t(f));
+        const unsigned hit = unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(fc0, fv)))) |
+                             unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(fc1, fv)))) << 4 | 0x100u;
+        const unsigned i = unsigned(__builtin_ctz(hit));
         used |= 1u << i;
-        out[j] = k[i];
+        out[j] = U(k[i]);
         f = x[i];
-        i = succ[i];
       }
-      if (wrong != 0 || used != (1u << d) - 1 || f != first) throw broken(v);
+      if (used != (1u << d) - 1 || f != first) throw broken(v);
       continue;
     }
-    // A long row: walked by search.
+#endif
+    // Else (a long row, 64-bit entries, no SSE2): searched entry by entry.
     for (std::size_t j = 0; j < d; ++j) {
       std::size_t i = 0;
-      while (i < d && uint32_t((row[2 * i] & ~top) / 3) != f) ++i;
+      while (i < d && uint32_t((row[2 * i] & ~top) >> 2) != f) ++i;
       if (i == d) throw broken(v);
       out[j] = row[2 * i];
       f = uint32_t(row[2 * i + 1]);
@@ -244,7 +209,7 @@ void AllStars::build_cells(const Triangulation &tri, CentreCache &cache, Point *
 void AllStars::build(const Triangulation &tri, bool matrices, CentreCache *cache, Point *centre, bool wide) {
   entries_ = 3 * tri.faces().size();
   // Corner indices and the flag in 32 bits while they fit.
-  wide_ = wide || entries_ >= (std::size_t(1) << 31);
+  wide_ = wide || tri.faces().size() >= (std::size_t(1) << 29);
   if (wide_) {
     small_ = {};
     build_rows(tri, matrices, cache, centre, large_);
@@ -272,7 +237,7 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
     for (std::size_t j = b; j < e; ++j) {
       // The centres of the entries some way on: the cells read them in
       // the vertices' order, scattered over the faces.
-      if (prefetch && j + ahead < entries_) __builtin_prefetch(prefetch + (order[j + ahead] & ~top) / 3);
+      if (prefetch && j + ahead < entries_) __builtin_prefetch(prefetch + ((order[j + ahead] & ~top) >> 2));
       U k = order[j];
       TranslationId t = home;
       if (k & top) {
@@ -281,8 +246,7 @@ void AllStars::each(const Triangulation &tri, const Rows<U> &rows, std::size_t *
                                          [](const auto &x, const auto &y) { return x.first < y.first; });
         t = it->second;
       }
-      const uint32_t f = uint32_t(k / 3);
-      emit(j, f, int(k - 3 * U(f)), t);
+      emit(j, uint32_t(k >> 2), int(k & 3), t);
     }
   }
   if (offsets) offsets[n] = start[n];
