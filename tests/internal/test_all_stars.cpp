@@ -1,8 +1,9 @@
 // AllStars, the rows behind hdt_vertex_stars and hdt_voronoi_cells, below
-// the C API: its 64-bit path (taken by itself only from 3F >= 2^31, 4 GB of
+// the C API: its 64-bit path (taken by itself only from F >= 2^29, 24 GB of
 // faces) forced on small triangulations, each row against vertex_star's
 // walk and the 32-bit path byte for byte; and a broken star found by
 // build(), before anything is written.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -105,6 +106,14 @@ std::size_t longest_row(const Triangulation &t) {
   return d;
 }
 
+// Whether some live vertex has exactly d faces.
+bool has_degree(const Triangulation &t, std::size_t d) {
+  std::vector<std::size_t> degree(t.vertices().size());
+  for (const Face &f : t.faces())
+    for (uint32_t v : f.v) ++degree[v];
+  return std::find(degree.begin(), degree.end(), d) != degree.end();
+}
+
 START_TEST(wide_rows_genus_2) {
   // The dummy points alone, then the origin and 40 points on a circle
   // about it (a row of 16 entries and more takes another path), then
@@ -116,6 +125,9 @@ START_TEST(wide_rows_genus_2) {
   ck_assert_uint_ge(longest_row(t), 40);
   check_both_paths(t);
   fill(t, 600, 0.6, 1);
+  // Rows that fill the 8 slots a vertex has, and rows one longer (the
+  // first entry in the overflow list), among the rows compared.
+  ck_assert(has_degree(t, 8) && has_degree(t, 9));
   check_both_paths(t);
 }
 END_TEST
