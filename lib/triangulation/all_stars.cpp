@@ -16,7 +16,6 @@
 
 namespace hdt::triangulation {
 
-
 // Faces ahead of the scatter to fetch their vertices' counts and slots
 // for: it writes by vertex id, which does not follow the faces' order.
 constexpr std::size_t kAhead = 16;
@@ -184,11 +183,15 @@ void AllStars::order_rows(const Triangulation &tri, Rows<U> &rows) {
       continue;
     }
 #endif
-    // Else (a long row, 64-bit entries, no SSE2): searched entry by entry.
+    // Else (a long row, 64-bit entries, no SSE2): searched entry by entry,
+    // each marked when met (a walk that came back to its start too soon
+    // would otherwise end there after d steps, its other entries unmet).
+    std::vector<uint8_t> &met = rows.met;
+    met.assign(d, 0);
     for (std::size_t j = 0; j < d; ++j) {
       std::size_t i = 0;
       while (i < d && uint32_t((row[2 * i] & ~top) >> 2) != f) ++i;
-      if (i == d) throw broken(v);
+      if (i == d || met[i]++) throw broken(v);
       out[j] = row[2 * i];
       f = uint32_t(row[2 * i + 1]);
     }

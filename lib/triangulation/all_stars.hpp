@@ -84,6 +84,7 @@ class AllStars {
     std::unique_ptr<U[]> order;  // 1 per entry
     std::size_t order_capacity = 0;
     std::vector<U> long_row;  // a row of more than kSlots entries, gathered to be ordered
+    std::vector<uint8_t> met;  // the entries of a row ordered one by one, met so far
   };
   Rows<uint32_t> small_;
   Rows<uint64_t> large_;

@@ -170,6 +170,35 @@ START_TEST(broken_star_found_before_writing) {
 }
 END_TEST
 
+// A star whose second face leads back to the first: a walk of an even
+// number of steps then ends where it began, half the entries unmet; build()
+// throws on either path (the 64-bit one orders entry by entry).
+START_TEST(star_closing_too_soon_found) {
+  for (bool wide : {false, true}) {
+    Triangulation t(2);
+    fill(t, 200, 0.6, 5);
+    std::vector<StarEntry> star;
+    uint32_t v = 0;
+    for (; v < t.vertices().size(); ++v) {
+      if (!t.vertices()[v].alive()) continue;
+      vertex_star(t, v, &star);
+      if (star.size() % 2 == 0 && star.size() >= 4) break;
+    }
+    ck_assert_uint_lt(v, t.vertices().size());
+    Face &g = const_cast<std::vector<Face> &>(t.faces())[star[1].face];
+    g.n[next(star[1].corner)] = star[0].face;
+    AllStars rows;
+    bool threw = false;
+    try {
+      rows.build(t, false, wide);
+    } catch (const std::logic_error &) {
+      threw = true;
+    }
+    ck_assert(threw);
+  }
+}
+END_TEST
+
 }  // namespace
 
 int main() {
@@ -177,5 +206,6 @@ int main() {
     tcase_add_test(tc, wide_rows_genus_2);
     tcase_add_test(tc, wide_rows_spread);
     tcase_add_test(tc, broken_star_found_before_writing);
+    tcase_add_test(tc, star_closing_too_soon_found);
   });
 }
