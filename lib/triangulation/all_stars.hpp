@@ -61,13 +61,13 @@ class AllStars {
   void dispatch(const Triangulation &tri, std::size_t *offsets, const Point *prefetch, Emit &&emit) const;
 
   // The scatter puts each corner, in face order, into its vertex's next
-  // slot: its corner index k = 3f + c (the top bit set when its translation
+  // slot: its corner index k = 4f + c (the top bit set when its translation
   // is not the vertex's home, listed in moved_ by k) and the next face about
   // the vertex (counterclockwise). kSlots slots a vertex (one cache line
   // for 32 bits; most vertices have 4 to 8 faces), the entries beyond in
   // overflow. Ordering the rows then puts each row's corners, in star
   // order, at order[start(v)] .., and turns count into the starts. 32-bit
-  // while 3F < 2^31.
+  // while F < 2^29.
   static constexpr std::size_t kSlots = 8;
   template <class U>
   struct Overflow {
