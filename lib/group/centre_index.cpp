@@ -29,43 +29,51 @@ bool CentreIndex::cell_of(double p1, double p2, int64_t *i, int64_t *j) const {
   return true;
 }
 
+void CentreIndex::grow() {
+  std::vector<Slot> old(slots_.size() < 512 ? 1024 : 2 * slots_.size(), Slot{0, 0, 0, 0, -1});
+  old.swap(slots_);
+  shift_ = 64;
+  for (std::size_t n = slots_.size(); n > 1; n >>= 1) --shift_;
+  for (const Slot &s : old)
+    if (s.id >= 0) slots_[slot_of(s.key)] = s;
+}
+
 void CentreIndex::add(int32_t id, double p1, double p2, double error) {
   if (id < 0 || !(error >= 0 && error <= max_error_)) return;
   int64_t i, j;
   if (!cell_of(p1, p2, &i, &j)) return;
-  Entry &e = entries_.at(std::size_t(id));
-  if (e.error >= 0) {
-    if (e.error <= error) return;
-    int64_t oi = 0, oj = 0;
-    if (cell_of(e.p1, e.p2, &oi, &oj)) cells_.erase(key(oi, oj));
+  float rounded = float(error);  // up, so that it still bounds the error
+  if (double(rounded) < error) rounded = std::nextafter(rounded, HUGE_VALF);
+  if (2 * (size_ + 1) > slots_.size()) grow();
+  const uint64_t k = key(i, j);
+  Slot &s = slots_[slot_of(k)];
+  if (s.id < 0) {
+    s = Slot{k, p1, p2, rounded, id};
+    ++size_;
+    return;
   }
   // Another element in the cell would be closer than 0.8 K to this one: not
   // possible for correct centres, so a clash leaves the index as it was.
-  auto [it, inserted] = cells_.emplace(key(i, j), id);
-  if (!inserted && it->second != id) {
-    e.error = -1;
-    return;
-  }
-  e = Entry{p1, p2, error};
+  if (s.id == id && rounded < s.error) s.p1 = p1, s.p2 = p2, s.error = rounded;
 }
 
 int32_t CentreIndex::find(double p1, double p2, double error) const {
-  if (!(error >= 0 && error <= max_error_)) return -1;
+  if (!(error >= 0 && error <= max_error_) || slots_.empty()) return -1;
   // An indexed centre of the same element is within error + its own error
   // (<= 2 max_error = K/8, a quarter cell) in each coordinate: in one of the
   // cells this square meets (rounding is monotone, so the computed corners
   // still bracket it). For a different element both differences cannot be
   // within that sum: they would put the exact centres less than
-  // 2 sqrt2 K/8 < K apart.
-  const double reach = error + max_error_;
+  // 2 sqrt2 K/8 < K apart. (Stored errors are rounded up to float: 2^-20
+  // of max_error covers that.)
+  const double reach = error + max_error_ * (1 + 0x1p-20);
   int64_t i0, j0, i1, j1;
   if (!cell_of(p1 - reach, p2 - reach, &i0, &j0) || !cell_of(p1 + reach, p2 + reach, &i1, &j1)) return -1;
   for (int64_t i = i0; i <= i1; ++i)
     for (int64_t j = j0; j <= j1; ++j) {
-      auto it = cells_.find(key(i, j));
-      if (it == cells_.end()) continue;
-      const Entry &e = entries_.get(std::size_t(it->second));
-      if (std::abs(p1 - e.p1) <= error + e.error && std::abs(p2 - e.p2) <= error + e.error) return it->second;
+      const Slot &s = slots_[slot_of(key(i, j))];
+      if (s.id < 0) continue;
+      if (std::abs(p1 - s.p1) <= error + s.error && std::abs(p2 - s.p2) <= error + s.error) return s.id;
     }
   return -1;
 }

@@ -16,13 +16,22 @@
 // The translation table uses it to name a product or an inverse from the
 // double matrices it already has, instead of canonicalising a word (some
 // 400,000 instructions at genus 32, where nearly every new product lies in N).
+//
+// The cells are a flat open-addressing table whose slots hold the centre
+// itself: a query costs one or two cache lines per cell. (A hash map of
+// cells to ids and a per-id entry beside it cost a division and four
+// pointer chases per cell: at genus 128 and 10^6 points its lookups took
+// about 8% of insertion's time, as perf samples.) A cell may keep an older,
+// less accurate centre of its element when a better one falls in the next
+// cell: both are centres of the same element within their errors, so either
+// names it.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
-#include "group/paged_vector.hpp"
+#include "group/presentation.hpp"
 #include "group/presentation.hpp"
 
 namespace hdt::group {
@@ -34,23 +43,37 @@ class CentreIndex {
   // The largest error, in each of P1 and P2, of a centre given to add or find.
   double max_error() const { return max_error_; }
   // Records (p1, p2), within error in each coordinate, as the centre of id
-  // (a more accurate centre replaces a less accurate one). Ignored when the
-  // error exceeds max_error() or the centre is beyond the index's range.
+  // (a more accurate centre replaces a less accurate one in its cell).
+  // Ignored when the error exceeds max_error() or the centre is beyond the
+  // index's range.
   void add(int32_t id, double p1, double p2, double error);
   // The indexed id whose centre (p1, p2) is, within error <= max_error(),
   // or -1 when no indexed element has that centre.
   int32_t find(double p1, double p2, double error) const;
 
  private:
-  struct Entry {
-    double p1 = 0, p2 = 0, error = -1;  // error < 0: not indexed
+  // A cell and the centre it holds (id < 0: an empty slot). 32 bytes.
+  struct Slot {
+    uint64_t key;
+    double p1, p2;
+    float error;  // rounded up from the double bound
+    int32_t id;
   };
   bool cell_of(double p1, double p2, int64_t *i, int64_t *j) const;
   static uint64_t key(int64_t i, int64_t j) { return (uint64_t(i) << 32) ^ uint64_t(uint32_t(j)); }
+  // The slot of cell key (linear probing): its own, or the empty one where
+  // it would go.
+  std::size_t slot_of(uint64_t k) const {
+    std::size_t s = std::size_t((k * 0x9E3779B97F4A7C15ull) >> shift_);
+    while (slots_[s].id >= 0 && slots_[s].key != k) s = (s + 1) & (slots_.size() - 1);
+    return s;
+  }
+  void grow();
 
   double cell_, max_error_;
-  PagedVector<Entry> entries_;  // by id
-  std::unordered_map<uint64_t, int32_t> cells_;
+  std::vector<Slot> slots_;  // a power of two, at most half full
+  std::size_t size_ = 0;
+  int shift_ = 64;
 };
 
 }  // namespace hdt::group
