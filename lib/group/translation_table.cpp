@@ -46,15 +46,17 @@ TranslationId TranslationTable::add_canonical(const Word &canonical) {
   return id;
 }
 
-const TranslationTable::Matrices &TranslationTable::compute_matrices(TranslationId id) {
+const Moebius<double> &TranslationTable::compute_matrices(TranslationId id) {
   const Word &w = word(id);  // checks the id
-  Matrices &m = matrices_.at(std::size_t(id));
-  accurate_matrices(presentation_, w, &m.moebius, nullptr, &m.moebius_low, &m.moebius_error);
-  m.known = true;
+  Moebius<double> m;
+  Low &low = low_.at(std::size_t(id));
+  accurate_matrices(presentation_, w, &m, nullptr, &low.moebius_low, &low.moebius_error);
+  Hot &hot = moebius_.at(std::size_t(id));
+  hot.m = m;
   double p1, p2, error;
-  centre_of(m.moebius, false, &p1, &p2, &error);
+  centre_of(m, false, &p1, &p2, &error);
   centres_.add(id, p1, p2, error);
-  return m;
+  return hot.m;
 }
 
 const Lorentz<double> &TranslationTable::compute_lorentz(TranslationId id) {

@@ -68,7 +68,11 @@ class TranslationTable {
   // only serves the surface's sites under a translation: it is computed
   // apart, when first asked for (its multiprecision entries cost more than
   // the Moebius product, which every new id needs).
-  const Moebius<double> &moebius(TranslationId id) { return matrices(id).moebius; }
+  const Moebius<double> &moebius(TranslationId id) {
+    const Moebius<double> &m = moebius_.get(std::size_t(id)).m;
+    if (m.a.re != 0 || m.a.im != 0) return m;  // |a| >= 1 once computed
+    return compute_matrices(id);
+  }
   const Lorentz<double> &lorentz(TranslationId id) {
     const auto it = lorentz_.find(id);
     return it != lorentz_.end() ? it->second : compute_lorentz(id);
@@ -76,28 +80,34 @@ class TranslationTable {
   // The Moebius matrix to about twice double precision, for the
   // double-double stage: each part of a, b is moebius + moebius_low within
   // 2^-106 of itself plus moebius_error (|a| + |b|).
-  const Moebius<double> &moebius_low(TranslationId id) { return matrices(id).moebius_low; }
-  double moebius_error(TranslationId id) { return matrices(id).moebius_error; }
+  const Moebius<double> &moebius_low(TranslationId id) {
+    moebius(id);
+    return low_.get(std::size_t(id)).moebius_low;
+  }
+  double moebius_error(TranslationId id) {
+    moebius(id);
+    return low_.get(std::size_t(id)).moebius_error;
+  }
 
  private:
-  struct Matrices {
-    Moebius<double> moebius;
+  // The double matrix, which every translated point of the double stage
+  // reads, in a 32-byte slot of its own (one cache line, where the three
+  // matrices together took 80 bytes and often two lines); a = 0 until
+  // computed. The double-double parts beside it, read far less often.
+  struct alignas(32) Hot {
+    Moebius<double> m{{0, 0}, {0, 0}};
+  };
+  struct Low {
     Moebius<double> moebius_low;
     double moebius_error = 0;
-    bool known = false;
   };
-  const Matrices &matrices(TranslationId id) {
-    const Matrices &m = matrices_.get(std::size_t(id));
-    if (m.known) return m;
-    return compute_matrices(id);
-  }
   struct WordHash {
     std::size_t operator()(const Word &w) const noexcept;
   };
   TranslationId add_canonical(const Word &canonical);
   TranslationId compose_cached(TranslationId a, TranslationId b);
   TranslationId inverse_interned(TranslationId a);
-  const Matrices &compute_matrices(TranslationId id);
+  const Moebius<double> &compute_matrices(TranslationId id);
   const Lorentz<double> &compute_lorentz(TranslationId id);
   // The centre of a * b from the factors' Moebius matrices, and its error in
   // each coordinate.
@@ -107,9 +117,10 @@ class TranslationTable {
   std::size_t neighbour_count_ = 0;
   std::vector<Word> extra_words_;  // ids from |N| on
   mutable std::unordered_map<TranslationId, Word> neighbour_words_;  // the words of N asked for
-  PagedVector<Matrices> matrices_;
+  PagedVector<Hot> moebius_;
+  PagedVector<Low> low_;
   // The Lorentz matrices asked for (a few thousand ids at genus 128), apart
-  // from matrices_: a slot per id there would hold 72 bytes for every id
+  // from moebius_ and low_: a slot per id there would hold 72 bytes for every id
   // met, 14 MB at genus 128 with 10^5 points.
   std::unordered_map<TranslationId, Lorentz<double>> lorentz_;
   std::unordered_map<Word, TranslationId, WordHash> ids_;  // ids from |N| on
