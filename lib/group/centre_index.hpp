@@ -21,7 +21,7 @@
 // itself: a query costs one or two cache lines per cell. (A hash map of
 // cells to ids and a per-id entry beside it cost a division and four
 // pointer chases per cell: at genus 128 and 10^6 points its lookups took
-// about 8% of insertion's time, as perf samples.) A cell may keep an older,
+// about 3% of insertion's time in perf samples.) A cell may keep an older,
 // less accurate centre of its element when a better one falls in the next
 // cell: both are centres of the same element within their errors, so either
 // names it.
