@@ -32,7 +32,6 @@
 #include <vector>
 
 #include "group/presentation.hpp"
-#include "group/presentation.hpp"
 
 namespace hdt::group {
 
