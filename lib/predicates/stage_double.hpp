@@ -13,6 +13,7 @@
 #include "predicates/stage_disk.hpp"
 #include "predicates/translated_point.hpp"
 #include "surface/surface.hpp"
+#include "surface/systole.hpp"
 
 namespace hdt::predicates {
 
@@ -31,7 +32,8 @@ inline Difference difference(const FilteredPoint &a, const FilteredPoint &b) {
 
 class DoubleStage {
  public:
-  explicit DoubleStage(surface::Surface &surface) : surface_(surface) {}
+  explicit DoubleStage(surface::Surface &surface)
+      : surface_(surface), quarter_systole_cosh2_(surface::quarter_systole_cosh2<double>(surface.genus())) {}
 
   // The double point of p (cached); a site's rounding error is folded into
   // the error bound. By value: a later call may reuse the slot.
@@ -97,6 +99,7 @@ class DoubleStage {
   FilteredPoint compute_point(const TranslatedPoint &p);
 
   surface::Surface &surface_;
+  double quarter_systole_cosh2_;  // within 4u of exact (cos rounded, one sum)
   PointCache<FilteredPoint, 10> cache_;  // 57 KiB: see PointCache
 };
 
