@@ -38,6 +38,58 @@ Moebius<T> generator(const Presentation &p, Letter k) {
   return Moebius<T>{{A, T(0)}, {modulus * cos(angle), modulus * sin(angle)}};
 }
 
+// cos(a pi/2g) for a = 0..g in the multiprecision type T, each within one
+// ulp of T (cos(g pi/2g) = 0 exactly). Why not a cos per angle: at 2560
+// digits mpfr_cos was 10% of a first hdt_create at genus 120, since every
+// new rung's generator set takes g + 1 of them. Here one sin_cos gives
+// z = e^{i pi/2g} and the powers z^a follow by complex products, 32 bits
+// above T's precision: each product adds at most 3 units of 2^-prec to the
+// error of z^a (|z^a| = 1), z's own error is at most 2 units, so z^a is
+// within 6a <= 2^13 units for a <= g <= 1024, 2^-19 ulp of T before the
+// final rounding to T.
+template <class T>
+std::vector<T> quarter_turn_cosines(int g) {
+  std::vector<T> c(std::size_t(g) + 1);
+  const mpfr_prec_t prec = mpfr_get_prec(c[0].backend().data()) + 32;
+  mpfr_t angle, cz, sz, re, im, next;
+  for (mpfr_ptr x : {angle, cz, sz, re, im, next}) mpfr_init2(x, prec);
+  mpfr_const_pi(angle, MPFR_RNDN);
+  mpfr_div_ui(angle, angle, 2 * static_cast<unsigned long>(g), MPFR_RNDN);
+  mpfr_sin_cos(sz, cz, angle, MPFR_RNDN);
+  mpfr_set_ui(re, 1, MPFR_RNDN);
+  mpfr_set_ui(im, 0, MPFR_RNDN);
+  c[0] = T(1);
+  for (int a = 1; a < g; ++a) {
+    // (re + i im) (cz + i sz), each part rounded once.
+    mpfr_fmms(next, re, cz, im, sz, MPFR_RNDN);
+    mpfr_fmma(im, re, sz, im, cz, MPFR_RNDN);
+    mpfr_swap(re, next);
+    mpfr_set(c[a].backend().data(), re, MPFR_RNDN);
+  }
+  c[g] = T(0);
+  for (mpfr_ptr x : {angle, cz, sz, re, im, next}) mpfr_clear(x);
+  return c;
+}
+
+// The Lorentz matrix of g_{k + qg} from that of g_k, 0 <= k < g: B turns by
+// q quarter turns, which negates or swaps its parts, and every entry of
+// Lorentz::from_moebius (A real) is then the same rounded expression up to
+// sign. With b = (c, s): m01 = 2Ac, m02 = 2As, m11 = A^2 + D, m22 = A^2 - D,
+// m12 = m21 = E for D = c^2 - s^2 and E = cs + sc; a quarter turn
+// (c, s) -> (-s, c) negates D and E.
+template <class T>
+Lorentz<T> quarter_turned(const Lorentz<T> &L, int q) {
+  const auto &m = L.m;
+  const T &N = m[0][0], &X = m[0][1], &Y = m[0][2], &P = m[1][1], &Q = m[2][2], &E = m[1][2];
+  Lorentz<T> r;
+  switch (q) {
+    case 1: r.m = {{{N, -Y, X}, {-Y, Q, -E}, {X, -E, P}}}; break;
+    case 2: r.m = {{{N, -X, -Y}, {-X, P, E}, {-Y, E, Q}}}; break;
+    default: r.m = {{{N, Y, -X}, {Y, Q, -E}, {-X, -E, P}}}; break;
+  }
+  return r;
+}
+
 // The 4g generators of one genus, as Moebius and Lorentz matrices, computed
 // once so that word products cost only multiplications.
 template <class T>
@@ -47,20 +99,16 @@ class GeneratorSet {
     if constexpr (std::is_same_v<T, double>) {
       for (Letter k = 0; k < p.letter_count(); ++k) moebius_.push_back(generator<T>(p, k));
     } else {
-      // In multiprecision the trigonometry is most of the cost (15% of a
-      // first hdt_create at genus 32): A and |B| once, and cos(a pi/2g)
-      // for a = 0..g only; every angle k pi/2g folds onto one of them with
-      // a sign, sin(a pi/2g) = cos((g - a) pi/2g), as in surface/polygon.cpp.
-      // The folded arguments are at most pi/2, so each value is at least as
-      // accurate as generator<T>'s.
-      using std::cos;
+      // In multiprecision the trigonometry is most of the cost: A and |B|
+      // once, and cos(a pi/2g) for a = 0..g only (quarter_turn_cosines);
+      // every angle k pi/2g folds onto one of them with a sign,
+      // sin(a pi/2g) = cos((g - a) pi/2g), as in surface/polygon.cpp.
       using std::sqrt;
       const int g = p.genus();
-      const T pi = exact::pi<T>();
       const T A = half_trace<T>(g);
       const T modulus = sqrt(A * A - T(1));
-      std::vector<T> c(std::size_t(g) + 1);
-      for (int a = 0; a <= g; ++a) c[a] = a == g ? T(0) : modulus * cos(pi * T(a) / T(2 * g));
+      std::vector<T> c = quarter_turn_cosines<T>(g);
+      for (T &x : c) x *= modulus;
       for (Letter k = 0; k < p.letter_count(); ++k) {
         // k pi/2g = q pi/2 + a pi/2g, 0 <= a < g; the quadrant q gives the signs.
         const int q = k / g, a = k % g;
@@ -75,7 +123,15 @@ class GeneratorSet {
         moebius_.push_back(Moebius<T>{{A, T(0)}, b});
       }
     }
-    for (const Moebius<T> &m : moebius_) lorentz_.push_back(Lorentz<T>::from_moebius(m));
+    if constexpr (std::is_same_v<T, double>) {
+      for (const Moebius<T> &m : moebius_) lorentz_.push_back(Lorentz<T>::from_moebius(m));
+    } else {
+      // from_moebius for the first quadrant only (a quarter of a 2560-digit
+      // set's cost): the others are its matrices turned, value for value.
+      const int g = p.genus();
+      for (Letter k = 0; k < g; ++k) lorentz_.push_back(Lorentz<T>::from_moebius(moebius_[k]));
+      for (Letter k = g; k < p.letter_count(); ++k) lorentz_.push_back(quarter_turned(lorentz_[k % g], k / g));
+    }
     // e^{i k pi/2g} = B_k / |B|, for rotated_products.hpp.
     const T inverse_modulus = T(1) / moebius_[0].b.re;  // B_0 = |B|
     for (const Moebius<T> &m : moebius_) rotation_.push_back({m.b.re * inverse_modulus, m.b.im * inverse_modulus});
