@@ -139,12 +139,18 @@ const std::vector<Lorentz<double>> &rounded_generators(const Presentation &p) {
 struct DoubleGenerators {
   const std::vector<Lorentz<double>> &lorentz;
   double margin;  // A^2 - 1, half the proven gap, rounded down
+  // tanh(l/2) for the generators' translation length l, rounded down: a
+  // point P with |(u, v)| < inradius_slope t is nearer O than every side line.
+  double inradius_slope;
 };
 
 DoubleGenerators double_generators(const Presentation &p) {
   const std::vector<Lorentz<double>> &L = rounded_generators(p);
   // L[0][0][0] = cosh of the translation length = 2A^2 - 1 with A = cot(pi/4g).
-  return {L, ((L[0].m[0][0] + 1) / 2 - 1) * (1 - 0x1p-40)};
+  // tanh(l/2) = sqrt((C - 1) / (C + 1)) for C = cosh l, within one ulp in
+  // L: a few roundings, far below the slack.
+  const double C = L[0].m[0][0];
+  return {L, ((C + 1) / 2 - 1) * (1 - 0x1p-40), std::sqrt((C - 1) / (C + 1)) * (1 - 0x1p-40)};
 }
 
 constexpr double kUnit = 0x1p-53;  // unit roundoff of double
@@ -200,12 +206,66 @@ constexpr Letter kUndecided = -2;  // a test was left open
 // The least letter k whose side line separates O from the point x. A test
 // the double bound leaves open goes to decide(k), which returns its sign or
 // 0 to leave it open.
+//
+// Why not a scan of all 4g sides (a third of the canonical words' cost at
+// genus 120): with C = cosh and S = sinh of a generator's translation length
+// and P = (t, r cos phi, r sin phi), side k's test is
+// S r cos(k pi/2g - phi) - t (C - 1), positive on an arc of directions
+// around phi narrower than pi. So the separating letters are a cyclic run,
+// and unless it holds 0 (tested first) its least letter is where the run
+// begins: found by bisection below a letter of the run, the side facing P.
+// Each test is still certified; the direction, when P's error bound
+// certifies it, only chooses which letters are tested. When it does not, or
+// a test is left open, the scan decides as before.
 template <class Decide>
 Letter least_separating_letter(const DoubleGenerators &d, const DoublePoint &x, Decide &&decide) {
   const Letter count = Letter(d.lorentz.size());
-  for (Letter k = 0; k < count; ++k) {
-    int sign = certified_side(d, k, x);
-    if (sign == 0) sign = decide(k);
+  auto test = [&](Letter k) {
+    const int sign = certified_side(d, k, x);
+    return sign != 0 ? sign : decide(k);
+  };
+  const int first = test(0);
+  if (first == 0) return kUndecided;
+  if (first > 0) return 0;
+  // The run is centred on phi: if it holds a letter, it holds the one nearest
+  // phi. P's error bound gives phi to within 2 (E_u + E_v) / r; when that is
+  // below a quarter of the letters' spacing, the nearest letter is `facing`
+  // or one of its neighbours, and if none of them separates, none does.
+  const double r = std::hypot(x.P[1], x.P[2]), spread = x.E[1] + x.E[2];
+  // Near O (the last step of every word) the direction is noise, but P is
+  // inside the inscribed circle of F_g.
+  if (std::hypot(std::abs(x.P[1]) + x.E[1], std::abs(x.P[2]) + x.E[2]) * (1 + 0x1p-40) <
+      d.inradius_slope * (x.P[0] - x.E[0]))
+    return kNoLetter;
+  const bool direction_known = 8 * spread * count < r;
+  if (direction_known) {
+    const double turns = std::atan2(x.P[2], x.P[1]) / (2 * M_PI);  // in [-1/2, 1/2]
+    const Letter facing = Letter(std::lround(turns * count + count)) % count;
+    Letter inside = kNoLetter;
+    bool open = false;
+    for (Letter k : {facing, Letter((facing + 1) % count), Letter((facing + count - 1) % count)}) {
+      const int sign = k == 0 ? first : test(k);
+      open = sign == 0;
+      if (sign != -1) {
+        inside = sign > 0 ? k : kNoLetter;
+        break;
+      }
+    }
+    if (!open && inside == kNoLetter) return kNoLetter;
+    // The run holds `inside` but not 0, and at most count/2 letters, so it
+    // begins in (outside, inside] for the outside below: bisect, keeping
+    // `outside` out of the run and `inside` in it.
+    Letter outside = std::max<Letter>(0, inside - count / 2);
+    while (!open && inside - outside > 1) {
+      const Letter k = outside + (inside - outside) / 2;
+      const int sign = test(k);
+      open = sign == 0;
+      (sign > 0 ? inside : outside) = k;
+    }
+    if (!open) return inside;
+  }
+  for (Letter k = 1; k < count; ++k) {
+    const int sign = test(k);
     if (sign == 0) return kUndecided;
     if (sign > 0) return k;
   }
