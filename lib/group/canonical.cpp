@@ -364,6 +364,103 @@ bool peel_segment(const Presentation &p, const DoubleGenerators &d, const Word &
   }
 }
 
+// ---------------------------------------------------------------------------
+// Multiprecision with an error bound from the points' distances
+//
+// peel_segment's precision is chosen before the first product, from the
+// word's length alone: each letter may multiply the error by the norm of a
+// generator. For the words a triangulation meets that is far too much: the
+// tiles around a corner of F_g have words of up to 2g letters whose points
+// all stay near O, and at genus 120 they took the 2560-digit rung. Here the
+// bound follows the points instead. A Lorentz matrix R has operator norm
+// e^{d(O, R O)}, and if R maps the true point P_a to P_i, then
+// d(O, R O) <= d(O, P_i) + d(O, P_a), so ||R|| <= 2 t_i 2 t_a (e^d <= 2 cosh d).
+// An error e_j made at step j reaches step i through such an R, so the
+// error of step i is at most 2 t_i K_i with K_i = sum_{j<i} 2 t_{j+1} |e_j|:
+// it grows with the points' sizes, not with the number of letters. True t's
+// are bounded from computed ones (see step()).
+
+// A point P = (word)(O) in the multiprecision type T with a bound `error`
+// on the Euclidean norm of its distance to the true point.
+template <class T>
+class TrackedPoint {
+ public:
+  // size: an upper bound on every generator's entries (C = cosh l, up).
+  explicit TrackedPoint(double size) : size_(size) {}
+
+  // P <- L P for the multiprecision matrix L of a generator. False when the
+  // bound no longer certifies anything (the caller falls back).
+  bool step(const Lorentz<T> &L) {
+    const double norm = euclidean_norm();
+    P_ = L.apply(P_);
+    // The new error: L's entries within 2^10 units of T of the true ones
+    // (a generous bound on the few roundings of GeneratorSet), and the
+    // product's three roundings per row: in 2-norm at most 3 (2^10 + 3) u C |P|.
+    const double made = 3 * (0x1p10 + 3) * unit_ * size_ * norm * (1 + 0x1p-40);
+    // t_new <= 2 C t_old a priori (one letter moves P by the translation
+    // length); then twice: error <= 2 tau (K + 2 tau made), tau = t~ + error.
+    const double t = std::abs(to_double(P_.t)) * (1 + 0x1p-40);
+    double tau = 2 * size_ * tau_;
+    for (int pass = 0; pass < 2; ++pass) error_ = 2 * tau * (K_ + 2 * tau * made) * (1 + 0x1p-40), tau = t + error_;
+    tau_ = tau;
+    K_ = (K_ + 2 * tau_ * made) * (1 + 0x1p-40);
+    return std::isfinite(tau_) && error_ < 0x1p-20 * t;
+  }
+
+  // P rounded to a DoublePoint whose bound also holds `error`.
+  DoublePoint rounded() const {
+    DoublePoint x = rounded_point(P_);
+    const double carried = std::ldexp(error_ * (1 + 0x1p-40), -x.scale);
+    for (int i = 0; i < 3; ++i) x.E[i] = kUnit * std::abs(x.P[i]) + carried + kTiny;
+    return x;
+  }
+
+ private:
+  static double to_double(const T &x) { return x.template convert_to<double>(); }
+  double euclidean_norm() const {
+    const double t = to_double(P_.t), u = to_double(P_.u), v = to_double(P_.v);
+    return std::sqrt(t * t + u * u + v * v) * (1 + 0x1p-40);
+  }
+
+  HyperboloidPoint<T> P_{};
+  double size_;
+  const double unit_ = std::ldexp(1.0, -int(mpfr_get_prec(T(0).backend().data())));
+  double tau_ = 1;    // upper bound on the true point's t
+  double K_ = 0;      // the sum K_i above
+  double error_ = 0;  // bound on |P~ - P| in 2-norm
+};
+
+// The whole word at the precision of T with the tracked bound: computes
+// h(O) and peels every letter off it, appending them to out. False, with out
+// as it was, when a test or the bound is left open (the caller then takes
+// the precision schedule of peel_segment).
+template <class T>
+bool peel_tracked(const Presentation &p, const DoubleGenerators &d, const Word &w, Word &out, std::size_t bound) {
+  const GeneratorSet<T> &gens = shared_generators<T>(p);
+  const std::size_t start = out.size();
+  auto fail = [&] {
+    out.resize(start);
+    return false;
+  };
+  TrackedPoint<T> P(d.lorentz[0].m[0][0] * (1 + 0x1p-40));
+  for (std::size_t i = w.size(); i-- > 0;)
+    if (!P.step(gens.lorentz(w[i]))) return fail();
+  for (;;) {
+    const DoublePoint x = P.rounded();
+    if (x.scale <= kDoubleScale) {
+      const std::size_t before = out.size();
+      if (peel_in_double(p, d, unscaled(x), out, bound)) return true;
+      out.resize(before);
+    }
+    const Letter k = least_separating_letter(d, x, [](Letter) { return 0; });
+    if (k == kUndecided) return fail();
+    if (k == kNoLetter) return true;
+    if (out.size() >= bound) return fail();
+    out.push_back(k);
+    if (!P.step(gens.lorentz(p.inverse(k)))) return fail();
+  }
+}
+
 }  // namespace
 
 std::size_t canonical_max_length(const Presentation &p) {
@@ -395,6 +492,9 @@ Word canonical_word(const Presentation &p, const Letter *input, std::size_t leng
     // multiprecision when it cannot find even the first letter.
     if (peel_in_double(p, d, double_image(d, w), out, bound)) break;
     if (out.size() == start) {
+      // 40 digits with the tracked bound finish most words; the schedule
+      // of rungs by length is the fallback.
+      if (peel_tracked<exact::mp_real<kPeelDigits10[0]>>(p, d, w, out, bound)) break;
       const Segment s = plan_segment(p, w.size());
       if (s.steps == 0) throw std::logic_error("canonical_word: a peeled word outgrew the precision");
       if (with_rung(s.rung, [&](auto zero) { return peel_segment<decltype(zero)>(p, d, w, s.steps, out, bound); }))
