@@ -11,9 +11,15 @@
 
 namespace hdt::exact {
 
+// The rungs up to 160 digits keep their limbs inside the value (no malloc
+// and free per temporary): the matrices of each new translation id are
+// products on the 40-digit rung, and at genus 128 they met tens of thousands
+// of ids, 3 million GMP allocations in 10^5 insertions. Larger rungs are
+// rare and would make every value kilobytes: on the heap.
 template <unsigned Digits10>
 using mp_real = boost::multiprecision::number<
-    boost::multiprecision::mpfr_float_backend<Digits10>,
+    boost::multiprecision::mpfr_float_backend<Digits10, (Digits10 <= 160 ? boost::multiprecision::allocate_stack
+                                                                          : boost::multiprecision::allocate_dynamic)>,
     boost::multiprecision::et_off>;
 
 // Bits of precision of the rung Digits10.
