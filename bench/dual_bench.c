@@ -6,7 +6,7 @@
  * `calls - 1` more. Then the cost of saving and loading that triangulation
  * next to hdt_insert_many of its points.
  *
- *   dual_bench [--n 1000000] [--genus 2] [--calls 4] [--rounds 0]
+ *   dual_bench [--n 1000000] [--genus 2] [--calls 4] [--rounds 0] [--load-rounds 0]
  *
  * Prints one line per output: milliseconds and the ratio to hdt_faces
  * (vertex ids and translations), first call and best later call; then
@@ -15,8 +15,12 @@
  * --calls 1); then, with --rounds R, R rounds of hdt_faces,
  * hdt_vertex_stars and hdt_voronoi_cells in turn (best and median of
  * each; --calls 0 leaves out everything else); then
- * hdt_insert_many, hdt_save and hdt_load (first and best) in ms. With
- * --calls 1 each function runs once, for callgrind --toggle-collect.
+ * hdt_insert_many, hdt_save and hdt_load (first and best) in ms; then,
+ * with --load-rounds R, R rounds of hdt_insert_many of the points into a
+ * fresh handle followed by hdt_load of the saved bytes (CPU time; best and
+ * median of each and the median of the rounds' ratios load / insert). With
+ * --calls 1 each function runs once, for callgrind --toggle-collect;
+ * --calls 0 with --rounds or --load-rounds runs only the rounds.
  * docs/dual.md and docs/format.md quote it. */
 #define _POSIX_C_SOURCE 200809L
 
@@ -109,6 +113,37 @@ static void interleaved(int rounds) {
   free(ms);
 }
 
+/* --load-rounds R: hdt_insert_many into a fresh handle, then hdt_load of
+   the saved bytes, R times in turn, so that both see the same load of a
+   shared machine; CPU time of the process, the handles' creation and
+   destruction not counted. The median of the per-round ratios is the
+   figure docs/format.md quotes (issue 18: load at most the insertion). */
+static void load_rounds(int rounds, int genus, const double *xy, size_t n, const void *bytes, size_t size) {
+  double *ms = malloc(3 * (size_t)rounds * sizeof *ms);
+  double *insert_ms = ms, *load_ms = ms + rounds, *ratio = ms + 2 * rounds;
+  for (int r = 0; r < rounds; ++r) {
+    hdt_triangulation *t, *l;
+    check(hdt_create(&t, genus), "hdt_create");
+    double t0 = bench_cpu_ms();
+    check(hdt_insert_many(t, xy, n, NULL), "hdt_insert_many");
+    insert_ms[r] = bench_cpu_ms() - t0;
+    hdt_destroy(t);
+    t0 = bench_cpu_ms();
+    check(hdt_load(&l, bytes, size), "hdt_load");
+    load_ms[r] = bench_cpu_ms() - t0;
+    hdt_destroy(l);
+    ratio[r] = load_ms[r] / insert_ms[r];
+    printf("  round %d: hdt_insert_many %.1f ms, hdt_load %.1f ms, load / insert %.3f\n", r + 1, insert_ms[r],
+           load_ms[r], ratio[r]);
+  }
+  for (int k = 0; k < 3; ++k) qsort(ms + k * rounds, (size_t)rounds, sizeof *ms, cmp_double);
+  printf("  %d interleaved load rounds (CPU time): hdt_insert_many best %.1f ms median %.1f ms; hdt_load best %.1f ms "
+         "median %.1f ms; load / insert median %.3f (best / best %.3f)\n",
+         rounds, insert_ms[0], insert_ms[rounds / 2], load_ms[0], load_ms[rounds / 2], ratio[rounds / 2],
+         load_ms[0] / insert_ms[0]);
+  free(ms);
+}
+
 /* The first call (it may compute translation products, matrices or cached
    circumcentres), then the best of the others (0 with --calls 1). */
 static void time_calls(void (*f)(void), double *first, double *best) {
@@ -133,14 +168,15 @@ static void load(void) {
 
 int main(int argc, char **argv) {
   size_t n = 1000000;
-  int genus = 2, rounds = 0;
+  int genus = 2, rounds = 0, load_round_count = 0;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!strcmp(argv[i], "--n")) n = strtoull(argv[i + 1], NULL, 10);
     else if (!strcmp(argv[i], "--genus")) genus = atoi(argv[i + 1]);
     else if (!strcmp(argv[i], "--calls")) calls = atoi(argv[i + 1]);
     else if (!strcmp(argv[i], "--rounds")) rounds = atoi(argv[i + 1]);
+    else if (!strcmp(argv[i], "--load-rounds")) load_round_count = atoi(argv[i + 1]);
   }
-  const int only_rounds = calls == 0 && rounds > 0;
+  const int only_rounds = calls == 0 && (rounds > 0 || load_round_count > 0);
   if (calls < 1) calls = 1;
   double *xy = malloc(2 * n * sizeof *xy);
   bench_points_in_polygon(genus, n, 1, xy);
@@ -149,7 +185,6 @@ int main(int argc, char **argv) {
   check(hdt_insert_many(T, xy, n, NULL), "hdt_insert_many");
   const double insert_ms = bench_now_ms() - insert_t0;
   check(hdt_remove_dummies(T, NULL), "hdt_remove_dummies");
-  free(xy);
   B.V = hdt_vertex_count(T), B.F = hdt_face_count(T), B.E = hdt_edge_count(T), B.bound = hdt_vertex_id_bound(T);
   B.offsets = malloc((B.bound + 1) * sizeof *B.offsets);
   B.ids = malloc(B.V * sizeof *B.ids);
@@ -207,7 +242,8 @@ int main(int argc, char **argv) {
     faces(), all_stars(), all_cells(); /* later calls only (the centre cache full, as in the table) */
     interleaved(rounds);
   }
-  if (only_rounds) {
+  if (only_rounds && load_round_count == 0) {
+    free(xy);
     free(B.ids), free(B.offsets), free(B.u32a), free(B.u32b), free(B.i32a), free(B.u8), free(B.d1), free(B.d2);
     hdt_destroy(T);
     return 0;
@@ -217,11 +253,13 @@ int main(int argc, char **argv) {
   const double save_t0 = bench_now_ms();
   check(hdt_save(T, saved, saved_size, &saved_size), "hdt_save");
   const double save_ms = bench_now_ms() - save_t0;
+  if (load_round_count > 0) load_rounds(load_round_count, genus, xy, n, saved, saved_size);
+  free(xy);
   double load_first, load_best;
-  time_calls(load, &load_first, &load_best);
-  printf("  hdt_insert_many %.1f ms; hdt_save %.1f ms (%zu bytes); hdt_load first %.1f ms (%.2f x insert), later %.1f ms (%.2f x insert)\n",
+  if (!only_rounds) time_calls(load, &load_first, &load_best);
+  if (!only_rounds) printf("  hdt_insert_many %.1f ms; hdt_save %.1f ms (%zu bytes); hdt_load first %.1f ms (%.2f x insert), later %.1f ms (%.2f x insert)\n",
          insert_ms, save_ms, saved_size, load_first, load_first / insert_ms, load_best, load_best / insert_ms);
-  hdt_destroy(loaded);
+  if (loaded) hdt_destroy(loaded);
   free(saved);
   free(B.ids), free(B.offsets), free(B.u32a), free(B.u32b), free(B.i32a), free(B.u8), free(B.d1), free(B.d2);
   hdt_destroy(T);
