@@ -87,9 +87,10 @@ class Triangulation {
 
   // Saving and loading (snapshot.hpp, restore.cpp). restore() checks
   // everything it is given (ranges, the sites, canonical words, then
-  // validate()) and throws SnapshotError naming the part at fault.
+  // validate()) and throws SnapshotError naming the part at fault. It
+  // takes the snapshot's vectors (no copy); s is left unspecified.
   Snapshot snapshot() const;
-  static Triangulation restore(const Snapshot &s);
+  static Triangulation restore(Snapshot &&s);
 
   bool is_dummy(uint32_t v) const { return dummy_[v]; }
   // The surface's site of vertex v, or -1: sites 0 .. 2g are vertices 1 .. 2g+1.
@@ -162,8 +163,9 @@ class Triangulation {
  private:
   struct Empty {};
   Triangulation(int genus, Empty);  // no vertices: the dummy construction's start
-  // restore() without validate(), after the ranges are checked.
-  static Triangulation rebuild(const Snapshot &s);
+  // restore() without validate(), after the ranges are checked; moves the
+  // vertices, flags and faces out of s.
+  static Triangulation rebuild(Snapshot &s);
 
   // Replaces the faces `old` by `created` (given in one common frame),
   // linking them to each other and to the outer faces of `boundary`. The ids
