@@ -510,7 +510,7 @@ HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, doub
    3F); indexed by id so that v's row needs no search, a removed id having
    an empty row. Every face corner is in its vertex's row once: *count =
    3F entries. Capacity in entries; each output may be NULL. At 10^6
-   vertices 1.2 to 1.9 times hdt_faces in time, where hdt_vertex_star for
+   vertices 1.2 to 2.1 times hdt_faces in time, where hdt_vertex_star for
    every vertex takes 7 to 9 (docs/dual.md). The handle keeps the call's
    scratch (about 92 bytes a vertex) until hdt_destroy; HDT_ENOMEM, nothing
    written but *count, when it cannot be had (and nothing either on
