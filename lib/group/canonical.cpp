@@ -296,14 +296,15 @@ bool peel_in_double(const Presentation &p, const DoubleGenerators &d, DoublePoin
 
 // P scaled by the binary exponent of P.t (its largest coordinate) and
 // rounded to double, so that far points neither overflow nor lose the
-// filter. The error bound holds P to within 2^-64 of the true point in each
-// coordinate (the invariant of a segment, see segment_capacity).
+// filter. The error bound also holds `error`, a bound on each coordinate's
+// distance to the true point (by default 2^-64, the invariant of a segment,
+// see segment_capacity).
 template <class T>
-DoublePoint rounded_point(const HyperboloidPoint<T> &P) {
+DoublePoint rounded_point(const HyperboloidPoint<T> &P, double error = 0x1p-64) {
   DoublePoint x;
   x.scale = int(mpfr_get_exp(P.t.backend().data()));
   const T *coordinates[3] = {&P.t, &P.u, &P.v};
-  const double carried = std::ldexp(0x1p-64, -x.scale);
+  const double carried = std::ldexp(error, -x.scale);
   for (int i = 0; i < 3; ++i) {
     long exponent = 0;
     const double mantissa = mpfr_get_d_2exp(&exponent, coordinates[i]->backend().data(), MPFR_RNDN);
@@ -407,13 +408,8 @@ class TrackedPoint {
     return std::isfinite(tau_) && error_ < 0x1p-20 * t;
   }
 
-  // P rounded to a DoublePoint whose bound also holds `error`.
-  DoublePoint rounded() const {
-    DoublePoint x = rounded_point(P_);
-    const double carried = std::ldexp(error_ * (1 + 0x1p-40), -x.scale);
-    for (int i = 0; i < 3; ++i) x.E[i] = kUnit * std::abs(x.P[i]) + carried + kTiny;
-    return x;
-  }
+  // P rounded to a DoublePoint whose bound also holds the tracked error.
+  DoublePoint rounded() const { return rounded_point(P_, error_ * (1 + 0x1p-40)); }
 
  private:
   static double to_double(const T &x) { return x.template convert_to<double>(); }
