@@ -176,15 +176,22 @@ HDT_API hdt_status hdt_voronoi_edges(const hdt_triangulation *t, double *xy, siz
     // Every centre into scratch first, with the matrices the writing needs
     // (the neighbour translations'; the corners' the centres make): nothing
     // is written before they are made. Then the writing.
-    // The scratch is the handle's (kept: no allocation, no fresh pages on
-    // later calls), the centres read from the handle's cache where
-    // hdt_voronoi_cell made one. A compact array, not the cache itself: the
-    // writing reads the neighbours' centres in no order, and 16 bytes a face
-    // cost fewer cache misses than the cache's 48.
-    std::vector<Point> &centre = t->cell;
-    centre.resize(all.size());
+    // Where hdt_voronoi_cell made the handle's cache, into the cache (its
+    // misses computed and kept), and read from its centres (16 bytes a
+    // face: the writing reads the neighbours' centres in no order); else
+    // into the handle's scratch (kept: no allocation, no fresh pages on
+    // later calls).
     hdt::triangulation::CentreCache &cache = t->centres;
-    hdt::triangulation::face_centres(tri, centre.data(), cache.ready(tri) ? &cache : nullptr, true);
+    const Point *centre;
+    if (cache.ready(tri)) {
+      hdt::triangulation::face_centres(tri, nullptr, &cache, true);
+      centre = cache.centres();
+    } else {
+      std::vector<Point> &scratch = t->cell;
+      scratch.resize(all.size());
+      hdt::triangulation::face_centres(tri, scratch.data(), nullptr, true);
+      centre = scratch.data();
+    }
     // hdt_edges' order: edge i of face f when f < its neighbour there (k
     // stops at the count: a broken invariant must not write past it).
     std::size_t k = 0;
@@ -254,15 +261,13 @@ HDT_API hdt_status hdt_voronoi_cells(const hdt_triangulation *t, size_t *offsets
     if (!list_fits(3 * tri.faces().size(), capacity, count, "cell corners")) return HDT_OK;
     if (!xy) throw ApiError(HDT_EINVAL, "xy must not be NULL when capacity > 0");
     // The rows (with every matrix the centres and the cells need) and,
-    // in the same pass over the faces, each face's centre through the
-    // handle's centre cache as hdt_voronoi_cell (the same bits; kept for
-    // the next call and the other Voronoi outputs), into the handle's
-    // scratch; the writing last, once nothing can fail.
-    std::vector<Point> &centre = t->cell;
-    centre.resize(tri.faces().size());
-    t->rows.build_cells(tri, t->centres, centre.data());
+    // in the same pass over the faces, every face's centre in the handle's
+    // centre cache as hdt_voronoi_cell (the same bits; kept for the next
+    // call and the other Voronoi outputs); the writing last, once nothing
+    // can fail, reading the centres from the cache.
+    t->rows.build_cells(tri, t->centres);
     const hdt::triangulation::AllStars &rows = t->rows;
-    rows.write_cells(tri, offsets, xy, centre.data());
+    rows.write_cells(tri, offsets, xy, t->centres.centres());
     return HDT_OK;
   });
 }

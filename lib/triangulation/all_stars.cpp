@@ -21,7 +21,7 @@ namespace hdt::triangulation {
 constexpr std::size_t kAhead = 16;
 
 template <class U>
-void AllStars::build_rows(const Triangulation &tri, bool matrices, CentreCache *cache, Point *centre, Rows<U> &rows) {
+void AllStars::build_rows(const Triangulation &tri, bool matrices, CentreCache *cache, Rows<U> &rows) {
   constexpr U top = U(1) << (std::numeric_limits<U>::digits - 1);
   const std::vector<Face> &F = tri.faces();
   const std::vector<Vertex> &V = tri.vertices();
@@ -55,11 +55,10 @@ void AllStars::build_rows(const Triangulation &tri, bool matrices, CentreCache *
     // cache as hdt_voronoi_cell (the same bits): a hit here; the misses by
     // blocks of faces just passed, still in cache (a call a face to
     // compute one cost 40 instructions a face more).
-    if (centre) {
-      if (cache->holds(tri, uint32_t(f))) centre[f] = cache->centre_held(uint32_t(f), nullptr);
-      else block_missing = true;
+    if (cache) {
+      if (!cache->holds(tri, uint32_t(f))) block_missing = true;
       if (block_missing && ((f + 1) % 256 == 0 || f + 1 == nf)) {
-        face_centres(tri, centre, cache, false, f - f % 256, f + 1);
+        face_centres(tri, nullptr, cache, false, f - f % 256, f + 1);
         block_missing = false;
       }
     }
@@ -205,24 +204,24 @@ void AllStars::order_rows(const Triangulation &tri, Rows<U> &rows) {
   count[n] = U(m);
 }
 
-void AllStars::build(const Triangulation &tri, bool matrices, bool wide) { build(tri, matrices, nullptr, nullptr, wide); }
+void AllStars::build(const Triangulation &tri, bool matrices, bool wide) { build(tri, matrices, nullptr, wide); }
 
-void AllStars::build_cells(const Triangulation &tri, CentreCache &cache, Point *centre, bool wide) {
+void AllStars::build_cells(const Triangulation &tri, CentreCache &cache, bool wide) {
   cache.reserve(tri);
-  build(tri, true, &cache, centre, wide);
+  build(tri, true, &cache, wide);
 }
 
-void AllStars::build(const Triangulation &tri, bool matrices, CentreCache *cache, Point *centre, bool wide) {
+void AllStars::build(const Triangulation &tri, bool matrices, CentreCache *cache, bool wide) {
   entries_ = 3 * tri.faces().size();
   // Corner indices and the flag in 32 bits while they fit.
   wide_ = wide || tri.faces().size() >= (std::size_t(1) << 29);
   if (wide_) {
     small_ = {};
-    build_rows(tri, matrices, cache, centre, large_);
+    build_rows(tri, matrices, cache, large_);
     order_rows(tri, large_);
   } else {
     large_ = {};
-    build_rows(tri, matrices, cache, centre, small_);
+    build_rows(tri, matrices, cache, small_);
     order_rows(tri, small_);
   }
 }

@@ -29,11 +29,11 @@ class AllStars {
   // (its table may have gained ids, as with any query). wide: 64-bit
   // entries even when 32 bits hold them (for the tests of that path).
   void build(const Triangulation &tri, bool matrices, bool wide = false);
-  // The same with matrices, for the cells, and each face's circumcentre
-  // into centre[f] (one per face) through the cache, in the same pass over
-  // the faces (reserved here; its misses computed and kept, as
-  // hdt_voronoi_cell does).
-  void build_cells(const Triangulation &tri, CentreCache &cache, Point *centre, bool wide = false);
+  // The same with matrices, for the cells, and every entry of the cache
+  // made to hold its face's circumcentre, in the same pass over the faces
+  // (reserved here; its misses computed and kept, as hdt_voronoi_cell
+  // does): write_cells then reads cache.centres().
+  void build_cells(const Triangulation &tri, CentreCache &cache, bool wide = false);
   std::size_t entries() const { return entries_; }  // 3F
   // Then the outputs, which cannot fail. offsets: id bound + 1 entries
   // (may be null); the others 1 per entry, each may be null.
@@ -46,9 +46,9 @@ class AllStars {
  private:
   template <class U>
   struct Rows;
-  void build(const Triangulation &tri, bool matrices, CentreCache *cache, Point *centre, bool wide);
+  void build(const Triangulation &tri, bool matrices, CentreCache *cache, bool wide);
   template <class U>
-  void build_rows(const Triangulation &tri, bool matrices, CentreCache *cache, Point *centre, Rows<U> &rows);
+  void build_rows(const Triangulation &tri, bool matrices, CentreCache *cache, Rows<U> &rows);
   template <class U>
   void order_rows(const Triangulation &tri, Rows<U> &rows);
   // For each live vertex by id, in star order: emit(entry, face, corner,

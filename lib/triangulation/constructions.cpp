@@ -287,7 +287,8 @@ void face_centres(const Triangulation &tri, Point *out, CentreCache *cache, bool
   }
   for (std::size_t f = begin; f < end; ++f) {
     warm(tri.faces()[f]);
-    out[f] = cached_centre(tri, uint32_t(f), nullptr, cache);
+    const Point c = cached_centre(tri, uint32_t(f), nullptr, cache);
+    if (out) out[f] = c;
   }
 }
 
@@ -321,27 +322,30 @@ void write_edges(const Triangulation &tri, std::size_t count, uint32_t *vertices
 
 void CentreCache::reserve(const Triangulation &tri) {
   // A never-used entry names vertex kNone, which no face holds.
-  if (entries_.size() < tri.faces().size())
-    entries_.resize(tri.faces().size(),
-                    Entry{{kNone, kNone, kNone}, {}, {}, std::numeric_limits<double>::quiet_NaN()});
+  const std::size_t n = tri.faces().size();
+  if (keys_.size() < n) {
+    centres_.resize(n);
+    radii_.resize(n, std::numeric_limits<double>::quiet_NaN());
+    keys_.resize(n, Key{{kNone, kNone, kNone}, {}});  // last: ready() only once all three fit
+  }
 }
 
 Point CentreCache::compute(const Triangulation &tri, uint32_t f, double *radius) {
   const Face &F = tri.faces()[f];
-  Entry &e = entries_[f];
   Point p[3];
   corners(tri, F, p);
   // The radius only when asked: a Voronoi cell needs none, and its
   // logarithm is a third of a circumcentre's cost. (The centre's bits do
   // not depend on it.)
-  e.centre = face_centre_kept(tri, F, p, radius != nullptr, &e.radius);
-  e.v = F.v, e.t = F.t;
-  if (radius) *radius = e.radius;
-  return e.centre;
+  double kept;
+  const Point c = face_centre_kept(tri, F, p, radius != nullptr, &kept);
+  store(tri, f, c, kept);
+  if (radius) *radius = kept;
+  return c;
 }
 
 double CentreCache::radius_held(uint32_t f) {
-  double &r = entries_[f].radius;
+  double &r = radii_[f];
   if (r < 0) r = radius_of(-r);
   return r;
 }

@@ -64,7 +64,7 @@ class CentreCache {
   void reserve(const Triangulation &tri);
   // Whether reserve() has made room for every face (a caller that does
   // without the cache rather than allocate it).
-  bool ready(const Triangulation &tri) const { return entries_.size() >= tri.faces().size(); }
+  bool ready(const Triangulation &tri) const { return keys_.size() >= tri.faces().size(); }
   // The circumcentre of face f's canonical copy (the same bits as
   // circumcentre() of its corners), and its radius when radius is not null
   // (the same bits as circumcircle()'s).
@@ -78,36 +78,47 @@ class CentreCache {
   // then comes with it.
   bool holds(const Triangulation &tri, uint32_t f) const {
     const Face &F = tri.faces()[f];
-    const Entry &e = entries_[f];
+    const Key &e = keys_[f];
     // Compared one by one: std::array's == calls memcmp.
     return e.v[0] == F.v[0] && e.v[1] == F.v[1] && e.v[2] == F.v[2] && e.t[0] == F.t[0] && e.t[1] == F.t[1] &&
            e.t[2] == F.t[2];
   }
   Point centre_held(uint32_t f, double *radius) {
     if (radius) *radius = radius_held(f);
-    return entries_[f].centre;
+    return centres_[f];
   }
-  // Face f's centre and what its radius needs (kept, as Entry::radius),
+  // Every face's centre, indexed by face: valid where holds() (a caller
+  // that has made every entry hold reads them here, 16 bytes a face,
+  // without a copy).
+  const Point *centres() const { return centres_.data(); }
+  // Face f's centre and what its radius needs (kept, as radii_),
   // computed by the caller (the same bits).
   void store(const Triangulation &tri, uint32_t f, const Point &centre, double kept) {
     const Face &F = tri.faces()[f];
-    entries_[f] = Entry{F.v, F.t, centre, kept};
+    keys_[f] = Key{F.v, F.t};
+    centres_[f] = centre;
+    radii_[f] = kept;
   }
 
  private:
   Point compute(const Triangulation &tri, uint32_t f, double *radius);
   double radius_held(uint32_t f);
-  struct Entry {
+  // What an entry was computed for: the face's vertices and corner
+  // translations.
+  struct Key {
     std::array<uint32_t, 3> v;
     std::array<TranslationId, 3> t;
-    Point centre;
-    // The radius, or, until one is asked, -s2 with s2 > 0 the squared
-    // diameter it is computed from (a logarithm, where the centre costs
-    // an isometry's worth): a cell's centres need no radius, and a later
-    // hdt_voronoi_vertices then need not recompute the centre.
-    double radius;
   };
-  std::vector<Entry> entries_;
+  // Three arrays, not one of entries: the cells read only the centres, in
+  // the rows' order, scattered (16 bytes a face, where a whole entry's 48
+  // cost a copy into a compact array first).
+  std::vector<Key> keys_;
+  std::vector<Point> centres_;
+  // The radius, or, until one is asked, -s2 with s2 > 0 the squared
+  // diameter it is computed from (a logarithm, where the centre costs
+  // an isometry's worth): a cell's centres need no radius, and a later
+  // hdt_voronoi_vertices then need not recompute the centre.
+  std::vector<double> radii_;
 };
 
 // Whole outputs, in hdt_faces' face order and hdt_edges' edge order. They
@@ -121,7 +132,7 @@ void face_points(const Triangulation &tri, double *xy);  // 6 per face
 void voronoi_vertices(const Triangulation &tri, double *xy, double *radii, CentreCache *cache);
 // 1 per face, the same; may make the corners' matrices, and with across
 // those of the neighbour translations too (warm_corner_matrices(tri, true)
-// in the same pass).
+// in the same pass). With a cache, out may be null (the cache filled only).
 void face_centres(const Triangulation &tri, Point *out, CentreCache *cache, bool across = false);
 // The same for the faces begin .. end - 1 only (out still indexed by face).
 void face_centres(const Triangulation &tri, Point *out, CentreCache *cache, bool across, std::size_t begin,
