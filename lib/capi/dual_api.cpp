@@ -246,9 +246,14 @@ HDT_API hdt_status hdt_vertex_stars(const hdt_triangulation *t, size_t *offsets,
     const Triangulation &tri = of(t);
     if (!list_fits(3 * tri.faces().size(), capacity, count, "star entries")) return HDT_OK;
     // What may fail (memory, translation ids) into the handle's scratch
-    // first, then the writing.
+    // first (unless the rows are those of this triangulation already),
+    // then the writing.
     hdt::triangulation::AllStars &rows = t->rows;
-    rows.build(tri, false);
+    if (t->rows_generation != t->generation) {
+      t->rows_generation = t->cells_generation = hdt_triangulation::kNever;
+      rows.build(tri, false);
+      t->rows_generation = t->generation;
+    }
     rows.write(tri, offsets, faces, corners, translations);
     return HDT_OK;
   });
@@ -265,7 +270,16 @@ HDT_API hdt_status hdt_voronoi_cells(const hdt_triangulation *t, size_t *offsets
     // centre cache as hdt_voronoi_cell (the same bits; kept for the next
     // call and the other Voronoi outputs); the writing last, once nothing
     // can fail, reading the centres from the cache.
-    t->rows.build_cells(tri, t->centres);
+    // While the triangulation is unchanged, the rows (of
+    // hdt_vertex_stars or of an earlier call) serve again: only what the
+    // cells add is made, or nothing.
+    if (t->cells_generation != t->generation) {
+      const bool rows_ready = t->rows_generation == t->generation;
+      t->rows_generation = t->cells_generation = hdt_triangulation::kNever;
+      if (rows_ready) t->rows.prepare_cells(tri, t->centres);
+      else t->rows.build_cells(tri, t->centres);
+      t->rows_generation = t->cells_generation = t->generation;
+    }
     const hdt::triangulation::AllStars &rows = t->rows;
     rows.write_cells(tri, offsets, xy, t->centres.centres());
     return HDT_OK;

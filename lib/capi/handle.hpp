@@ -3,6 +3,7 @@
 // the files of lib/capi that take one.
 #pragma once
 
+#include <cstdint>
 #include <utility>
 
 #include "capi/guard.hpp"
@@ -29,16 +30,29 @@ struct hdt_triangulation {
   mutable std::vector<hdt::triangulation::StarEntry> star;
   mutable std::vector<hdt::triangulation::Point> cell;
   // hdt_vertex_stars' and hdt_voronoi_cells' rows (about 92 bytes a
-  // vertex), kept: a later call writes into pages already mapped.
+  // vertex), kept: a later call writes into pages already mapped, and
+  // while the triangulation is unchanged it writes them without building
+  // them again.
   mutable hdt::triangulation::AllStars rows;
+  // Bumped by every call that may change the triangulation (hdt::capi::of
+  // on a non-const handle, the only way to one): the rows serve while it
+  // is the generation they were built for. kNever: no rows, or a build
+  // that did not finish.
+  static constexpr uint64_t kNever = ~uint64_t(0);
+  uint64_t generation = 0;
+  mutable uint64_t rows_generation = kNever;   // the rows (translations; no matrices)
+  mutable uint64_t cells_generation = kNever;  // and the cells' matrices and centres (every cache entry holds)
 };
 
 namespace hdt::capi {
 
 // The triangulation behind a handle: const for a const handle (queries fill
 // only the core's documented caches).
+// A non-const handle may be changed: what the handle derived from the
+// faces is stale from now on (the generation moves on).
 inline triangulation::Triangulation &of(hdt_triangulation *t) {
   if (!t) throw ApiError(HDT_EINVAL, "the triangulation handle is NULL");
+  ++t->generation;
   return t->tri;
 }
 inline const triangulation::Triangulation &of(const hdt_triangulation *t) {

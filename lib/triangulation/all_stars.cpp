@@ -221,6 +221,19 @@ void AllStars::build_cells(const Triangulation &tri, CentreCache &cache, bool wi
   build(tri, true, &cache, wide);
 }
 
+void AllStars::prepare_cells(const Triangulation &tri, CentreCache &cache) {
+  cache.reserve(tri);
+  // The centres (with the matrices of the corners they compute), then the
+  // matrices of the translations the writing applies, as build_rows makes
+  // them with matrices.
+  face_centres(tri, nullptr, &cache, false);
+  group::TranslationTable &T = tri.table();
+  for (const auto &m : moved_)
+    if (m.second != 0) T.moebius(m.second);
+  for (const Vertex &u : tri.vertices())
+    if (u.alive() && u.home != 0) T.moebius(u.home);
+}
+
 void AllStars::build(const Triangulation &tri, bool matrices, CentreCache *cache, bool wide) {
   entries_ = 3 * tri.faces().size();
   // Corner indices and the flag in 32 bits while they fit.

@@ -34,6 +34,9 @@ class AllStars {
   // (reserved here; its misses computed and kept, as hdt_voronoi_cell
   // does): write_cells then reads cache.centres().
   void build_cells(const Triangulation &tri, CentreCache &cache, bool wide = false);
+  // What build_cells adds to build(tri, false) of the same triangulation
+  // (the matrices, the cache's centres), for rows built that way.
+  void prepare_cells(const Triangulation &tri, CentreCache &cache);
   std::size_t entries() const { return entries_; }  // 3F
   // Then the outputs, which cannot fail. offsets: id bound + 1 entries
   // (may be null); the others 1 per entry, each may be null.
