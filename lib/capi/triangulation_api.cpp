@@ -144,13 +144,20 @@ HDT_API hdt_status hdt_faces(const hdt_triangulation *t, uint32_t *vertices, int
     const std::size_t F = faces.size();
     if (!hdt::capi::list_fits(F, capacity, count, "faces")) return HDT_OK;
     if (!vertices) throw ApiError(HDT_EINVAL, "vertices must not be NULL when capacity > 0");
-    // Computed before anything is written: it may allocate (and fail).
-    std::vector<int32_t> relative;
-    if (translations) tri.corner_translations(&relative);
-    for (std::size_t f = 0; f < F; ++f)
-      for (int i = 0; i < 3; ++i) vertices[3 * f + i] = faces[f].v[i];
+    // The corners whose translation is not the face's own (their vertex's
+    // home is not the identity: few, often none), computed before anything
+    // is written: they may allocate (and fail). A copy of every corner's
+    // into scratch cost a first call 24 MB of fresh pages at 10^6 vertices,
+    // eight times the copy's own time.
+    std::vector<std::pair<std::size_t, int32_t>> moved;
+    if (translations) tri.corner_translations(&moved);
     if (translations)
-      for (std::size_t k = 0; k < 3 * F; ++k) translations[k] = relative[k];
+      for (std::size_t f = 0; f < F; ++f)
+        for (int i = 0; i < 3; ++i) vertices[3 * f + i] = faces[f].v[i], translations[3 * f + i] = faces[f].t[i];
+    else
+      for (std::size_t f = 0; f < F; ++f)
+        for (int i = 0; i < 3; ++i) vertices[3 * f + i] = faces[f].v[i];
+    for (const auto &m : moved) translations[m.first] = m.second;
     *count = F;
     return HDT_OK;
   });

@@ -133,13 +133,19 @@ void Triangulation::vertex_point(uint32_t v, double *x, double *y) const {
   *x = z.re, *y = z.im;
 }
 
-void Triangulation::corner_translations(std::vector<TranslationId> *out) const {
+void Triangulation::corner_translations(std::vector<std::pair<std::size_t, TranslationId>> *moved) const {
   group::TranslationTable &T = table();
-  out->resize(3 * faces_.size());
+  moved->clear();
+  // Points given in F_g have the identity for home: then no corner moves,
+  // which one pass over the vertices in order tells (where asking each
+  // corner's vertex reads them in no order).
+  bool homes = false;
+  for (const Vertex &u : vertices_) homes |= u.alive() && u.home != 0;
+  if (!homes) return;
   for (std::size_t f = 0; f < faces_.size(); ++f)
     for (int i = 0; i < 3; ++i) {
       const TranslationId home = vertices_[faces_[f].v[i]].home;
-      (*out)[3 * f + i] = home == 0 ? faces_[f].t[i] : T.compose(faces_[f].t[i], T.inverse(home));
+      if (home != 0) moved->push_back({3 * f + i, T.compose(faces_[f].t[i], T.inverse(home))});
     }
 }
 

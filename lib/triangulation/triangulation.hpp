@@ -41,11 +41,12 @@ class Triangulation {
   Kernel &kernel() { return *kernel_; }
   const std::vector<Vertex> &vertices() const { return vertices_; }
   const std::vector<Face> &faces() const { return faces_; }
-  // The corner translations of every face relative to its vertices'
-  // representatives (3 per face, face order): corner i of face f is
-  // out[3f + i] applied to the representative of its vertex, t h^-1 for the
-  // stored translation t and the vertex's home h (hdt_faces' convention).
-  void corner_translations(std::vector<TranslationId> *out) const;
+  // The corner translations relative to the vertices' representatives
+  // (hdt_faces' convention): corner i of face f is t h^-1 applied to the
+  // representative of its vertex, for the stored translation t and the
+  // vertex's home h. That is t itself where h is the identity; the others
+  // go to moved as (3f + i, t h^-1), in face order.
+  void corner_translations(std::vector<std::pair<std::size_t, TranslationId>> *moved) const;
   std::size_t vertex_count() const { return live_vertices_; }
   std::size_t dummy_count() const { return dummies_; }
 
