@@ -155,8 +155,8 @@ void AllStars::order_rows(const Triangulation &tri, Rows<U> &rows) {
     // row's (at most 8: two vector comparisons). A face not in the row
     // gives lane 8, and an entry met twice shows in the used mask.
     // (Intrinsics, because a portable loop over the 8 lanes, which GCC
-    // vectorises too, made hdt_vertex_stars 2.30-2.40x hdt_faces at 10^6
-    // against 1.35-1.41x for this, in the same interleaved rounds.)
+    // vectorises too, made hdt_vertex_stars 1.7 times as slow at 10^6 in
+    // interleaved rounds.)
     const uint32_t first = V[v].face;
     uint32_t f = first;
 #if defined(__SSE2__)
