@@ -87,8 +87,8 @@ HDT_API int hdt_abi_version(void) HDT_NOEXCEPT;
    hdt_systole has no limit). May grow in later versions. Up to it each
    finishes in bounded time and memory: at genus 1024, measured on a 2-core
    x86-64 in a fresh process, hdt_point_representative takes 0.2 s and 11 MiB
-   (its first call for a genus; up to a few seconds for points within
-   10^-14 of the unit circle at genus 256 and above), the word functions as HDT_WORD_MAX_LENGTH
+   (its first call for a genus; later calls at most 0.3 s for points 10^-15
+   from the unit circle), the word functions as HDT_WORD_MAX_LENGTH
    says, the others microseconds. hdt_create has a lower limit: */
 #define HDT_GENUS_MAX 1024
 

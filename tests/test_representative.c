@@ -76,6 +76,33 @@ START_TEST(representative_lies_in_f_and_is_reached_by_its_word) {
 }
 END_TEST
 
+/* Points 1e-15 from the circle at larger genus, where the walk into F_g
+   takes hundreds of letters (the tracked walk, then the exact tests): the
+   same checks, and the image's word against hdt_word_apply. */
+START_TEST(points_near_the_circle_at_larger_genus) {
+  uint64_t rng = 17;
+  const int genera[] = {12, 40};
+  for (size_t j = 0; j < sizeof genera / sizeof genera[0]; ++j) {
+    const int g = genera[j];
+    size_t longest = 0;
+    for (int i = 0; i < 25; ++i) {
+      double x, y;
+      random_point(&rng, 1 - 1e-15 * (1 + (double)rng_below(&rng, 9)), &x, &y);
+      const representative_t r = representative(g, x, y);
+      expect(inside_margin(g, r.x, r.y) > -1e-9, "g=%d: representative of (%a, %a) outside F", g, x, y);
+      const word_t canonical = reduce_word(g, &r.word);
+      expect(word_eq(&canonical, &r.word), "g=%d: the representative's word is not canonical", g);
+      double ix, iy;
+      apply_word(g, &r.word, x, y, &ix, &iy);
+      expect(hypot(ix - r.x, iy - r.y) < 1e-14, "g=%d: word image (%g, %g) vs (%g, %g)", g, ix, iy, r.x, r.y);
+      if (r.word.n > longest) longest = r.word.n;
+    }
+    /* (The walk is long: at least the distance over a generator's translation length.) */
+    expect(longest >= 8, "g=%d: the longest word has %zu letters", g, longest);
+  }
+}
+END_TEST
+
 START_TEST(images_share_the_representative) {
   uint64_t rng = 13;
   for (int g = 2; g <= 6; ++g) {
@@ -146,6 +173,7 @@ int main(void) {
   const TTest *tests[] = {
       interior_points_are_their_own_representative,
       representative_lies_in_f_and_is_reached_by_its_word,
+      points_near_the_circle_at_larger_genus,
       images_share_the_representative,
       rounded_vertices_stay_at_a_vertex,
       bad_input_changes_nothing,

@@ -388,6 +388,13 @@ class TrackedPoint {
  public:
   // size: an upper bound on every generator's entries (C = cosh l, up).
   explicit TrackedPoint(double size) : size_(size) {}
+  // From P0 with a bound e0 on its error: e0 reaches step i through a
+  // matrix of norm at most 2 t_i 2 t_0, as an error made at a step does.
+  TrackedPoint(double size, const HyperboloidPoint<T> &P0, double e0) : P_(P0), size_(size) {
+    tau_ = (std::abs(to_double(P0.t)) + e0) * (1 + 0x1p-40);
+    K_ = 2 * tau_ * e0 * (1 + 0x1p-40);
+    error_ = e0;
+  }
 
   // P <- L P for the multiprecision matrix L of a generator. False when the
   // bound no longer certifies anything (the caller falls back).
@@ -458,6 +465,50 @@ bool peel_tracked(const Presentation &p, const DoubleGenerators &d, const Word &
 }
 
 }  // namespace
+
+namespace {
+
+// walk_into_domain at the precision of T.
+template <class T>
+bool walk_at(const Presentation &p, double x, double y, Word &letters, std::size_t max_steps) {
+  const DoubleGenerators d = double_generators(p);
+  // The point's signs need no margin (a tile centre's distance from the
+  // lines is what the canonical words' margin is for): any certified sign
+  // will do. (Not 0: a test equal to its error bound is not certified.)
+  const DoubleGenerators signs{d.lorentz, 0x1p-900, d.inradius_slope};
+  const GeneratorSet<T> &gens = shared_generators<T>(p);
+  // The hyperboloid point of x + iy. x^2 and y^2 are exact in T, r^2 within
+  // u r^2 <= u of the true one (exact unless its terms are far apart), so
+  // w = 1 - r^2 within u, a relative u / w; then three roundings a
+  // coordinate. In 2-norm, with slack.
+  const T X(x), Y(y), r2 = X * X + Y * Y, w = T(1) - r2;
+  const HyperboloidPoint<T> P0{(T(1) + r2) / w, T(2) * X / w, T(2) * Y / w};
+  const double unit = std::ldexp(1.0, -int(mpfr_get_prec(r2.backend().data())));
+  const double size = std::abs(P0.t.template convert_to<double>()) + std::abs(P0.u.template convert_to<double>()) +
+                      std::abs(P0.v.template convert_to<double>());
+  const double e0 = 4 * size * (4 + 2 / w.template convert_to<double>()) * unit;
+  TrackedPoint<T> P(d.lorentz[0].m[0][0] * (1 + 0x1p-40), P0, e0);
+  for (;;) {
+    const Letter k = least_separating_letter(signs, P.rounded(), [](Letter) { return 0; });
+    if (k == kNoLetter) return true;
+    if (k == kUndecided || letters.size() >= max_steps) return false;
+    letters.push_back(k);
+    if (!P.step(gens.lorentz(p.inverse(k)))) return false;
+  }
+}
+
+}  // namespace
+
+bool walk_into_domain(const Presentation &p, double x, double y, Word &letters, std::size_t max_steps) {
+  // The tracked bound lets an error at the start, where the point's t0 is
+  // about 2 / (1 - |z|^2), reach step i multiplied by up to 4 t_i t0, and
+  // the start's relative error is up to u t0: the precision needs about
+  // 3 log2 t0 bits, and the generators' size and 64 more for the tests.
+  const double t0 = 2 / (1 - (x * x + y * y));
+  const double need = 3 * std::log2(t0) + std::log2(double_generators(p).lorentz[0].m[0][0]) + 64;
+  if (need <= rung_bits(1)) return walk_at<exact::mp_real<kPeelDigits10[1]>>(p, x, y, letters, max_steps);
+  return walk_at<exact::mp_real<kPeelDigits10[2]>>(p, x, y, letters, max_steps);
+}
 
 std::size_t canonical_max_length(const Presentation &p) {
   // bits_needed(m) = 64 + b m + 2 log2(m + 2) with b = word_precision_bits(p, 1) - 2 log2(3);

@@ -26,4 +26,14 @@ std::size_t canonical_max_length(const Presentation &p);
 Word canonical_word(const Presentation &p, const Letter *w, std::size_t length);
 inline Word canonical_word(const Presentation &p, const Word &w) { return canonical_word(p, w.data(), w.size()); }
 
+// The walk of a point of the disk into F_g, with a point tracked at 40
+// digits and an error bound: letters k_1, k_2, ... (appended) such that
+// g_{k_1}^-1, then g_{k_2}^-1, ... take x + iy across the side line each
+// is beyond, each sign certified, until no side line separates it from O.
+// True when it got there; false when a sign was left open (near a line)
+// or after max_steps letters: the letters then go part of the way. Its
+// signs are certified, but the caller need not trust them: the point's
+// representative is still decided by exact tests from where it ends.
+bool walk_into_domain(const Presentation &p, double x, double y, Word &letters, std::size_t max_steps);
+
 }  // namespace hdt::group
