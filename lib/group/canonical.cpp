@@ -468,10 +468,10 @@ bool peel_tracked(const Presentation &p, const DoubleGenerators &d, const Word &
 
 namespace {
 
-// walk_into_domain at the precision of T.
+// walk_into_domain at the precision of T, with the generators d of p.
 template <class T>
-bool walk_at(const Presentation &p, double x, double y, Word &letters, std::size_t max_steps) {
-  const DoubleGenerators d = double_generators(p);
+bool walk_at(const Presentation &p, const DoubleGenerators &d, double x, double y, Word &letters,
+             std::size_t max_steps) {
   // The point's signs need no margin (a tile centre's distance from the
   // lines is what the canonical words' margin is for): any certified sign
   // will do. (Not 0: a test equal to its error bound is not certified.)
@@ -504,10 +504,11 @@ bool walk_into_domain(const Presentation &p, double x, double y, Word &letters, 
   // about 2 / (1 - |z|^2), reach step i multiplied by up to 4 t_i t0, and
   // the start's relative error is up to u t0: the precision needs about
   // 3 log2 t0 bits, and the generators' size and 64 more for the tests.
+  const DoubleGenerators d = double_generators(p);
   const double t0 = 2 / (1 - (x * x + y * y));
-  const double need = 3 * std::log2(t0) + std::log2(double_generators(p).lorentz[0].m[0][0]) + 64;
-  if (need <= rung_bits(1)) return walk_at<exact::mp_real<kPeelDigits10[1]>>(p, x, y, letters, max_steps);
-  return walk_at<exact::mp_real<kPeelDigits10[2]>>(p, x, y, letters, max_steps);
+  const double need = 3 * std::log2(t0) + std::log2(d.lorentz[0].m[0][0]) + 64;
+  if (need <= rung_bits(1)) return walk_at<exact::mp_real<kPeelDigits10[1]>>(p, d, x, y, letters, max_steps);
+  return walk_at<exact::mp_real<kPeelDigits10[2]>>(p, d, x, y, letters, max_steps);
 }
 
 std::size_t canonical_max_length(const Presentation &p) {

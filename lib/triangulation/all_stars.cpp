@@ -22,6 +22,18 @@ namespace hdt::triangulation {
 // for 16 and 18 for 64.)
 constexpr std::size_t kAhead = 32;
 
+namespace {
+
+// The matrices of the vertices' homes, which the writing applies to go back
+// to each vertex's representative: made here, where ids may be added.
+void warm_home_matrices(const Triangulation &tri) {
+  group::TranslationTable &T = tri.table();
+  for (const Vertex &u : tri.vertices())
+    if (u.alive() && u.home != 0) T.moebius(u.home);
+}
+
+}  // namespace
+
 template <class U>
 void AllStars::build_rows(const Triangulation &tri, bool matrices, CentreCache *cache, Rows<U> &rows) {
   constexpr U top = U(1) << (std::numeric_limits<U>::digits - 1);
@@ -103,9 +115,7 @@ void AllStars::build_rows(const Triangulation &tri, bool matrices, CentreCache *
     put(A.v[1], (base + 1) | (A.t[1] != 0 ? top : U(0)), U(A.n[2]));
     put(A.v[2], (base + 2) | (A.t[2] != 0 ? top : U(0)), U(A.n[0]));
   }
-  if (matrices)
-    for (const Vertex &u : V)
-      if (u.alive() && u.home != 0) T.moebius(u.home);
+  if (matrices) warm_home_matrices(tri);
   // The overflow by vertex, each vertex's entries still in face order.
   std::stable_sort(rows.overflow.begin(), rows.overflow.end(),
                    [](const Overflow<U> &x, const Overflow<U> &y) { return x.v < y.v; });
@@ -230,8 +240,7 @@ void AllStars::prepare_cells(const Triangulation &tri, CentreCache &cache) {
   group::TranslationTable &T = tri.table();
   for (const auto &m : moved_)
     if (m.second != 0) T.moebius(m.second);
-  for (const Vertex &u : tri.vertices())
-    if (u.alive() && u.home != 0) T.moebius(u.home);
+  warm_home_matrices(tri);
 }
 
 void AllStars::build(const Triangulation &tri, bool matrices, CentreCache *cache, bool wide) {
