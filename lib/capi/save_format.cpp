@@ -25,14 +25,16 @@
 #include <utility>
 #include <vector>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include "capi/guard.hpp"
-#include "triangulation/huge_pages.hpp"
 
 namespace hdt::capi {
 
 namespace {
 
-using triangulation::advise_huge_pages;
 using triangulation::Face;
 using triangulation::kNone;
 using triangulation::Snapshot;
@@ -99,6 +101,25 @@ class Writer {
  private:
   unsigned char *p_;
 };
+
+// Asks for transparent huge pages (2 MB) under the records' storage before
+// it is first written, where the system has them (Linux with THP in
+// "madvise" mode, as here). The 120 MB of a 10^6-vertex file's records are
+// fresh memory: in 4 KB pages their first touch cost a third of a load on
+// this VM (a page fault per 4 KB, 380 ms for 96 MB in a scratch test, 210
+// ms with the advice, 15-20 ms when freed huge pages are reused), and
+// validate() reads them in random order, where 2 MB pages spare most TLB
+// misses. Only a hint: nothing changes where it is refused or unknown.
+void advise_huge_pages(const void *p, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t huge = std::uintptr_t(1) << 21;
+  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(p) + huge - 1) & ~(huge - 1);
+  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(huge - 1);
+  if (end > begin) madvise(reinterpret_cast<void *>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)p, (void)bytes;
+#endif
+}
 
 [[noreturn]] void bad(std::size_t offset, const std::string &what) {
   throw ApiError(HDT_EINVAL, "byte " + std::to_string(offset) + ": " + what);

@@ -7,7 +7,6 @@
 #include <string>
 
 #include "predicates/representative.hpp"
-#include "triangulation/huge_pages.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
@@ -17,13 +16,15 @@ namespace {
 // Makes the next push_back unable to throw, keeping geometric growth.
 template <class Vector>
 void grow_for_one(Vector &v) {
-  if (v.size() == v.capacity()) reserve_on_huge_pages(v, v.size() < 8 ? 16 : 2 * v.size());
+  if (v.size() == v.capacity()) v.reserve(v.size() < 8 ? 16 : 2 * v.size());
 }
 
-// Room for k more elements in v, without copying for each call of a series.
+// Room for k more elements in v, growing at least twofold: a series of calls
+// of a few points each copied everything at every call when each reserved
+// just its own room.
 template <class Vector>
 void grow_for(Vector &v, std::size_t k) {
-  if (v.capacity() - v.size() < k) reserve_on_huge_pages(v, std::max(v.size() + k, 2 * v.capacity()));
+  if (v.capacity() - v.size() < k) v.reserve(std::max(v.size() + k, 2 * v.capacity()));
 }
 
 }  // namespace
@@ -169,12 +170,13 @@ uint32_t hilbert_index(uint32_t x, uint32_t y) {
 uint32_t grid(double c) { return std::isfinite(c) ? uint32_t(std::clamp((c + 1) * 16384.0, 0.0, 32767.0)) : 0; }
 
 // Sorts items by their key (30 bits), stably: three passes of 10 bits (an
-// LSD radix sort, a third of std::sort's instructions on these items),
-// through buffer, as many items (insert_many frees it before the
-// triangulation reserves room for the new faces, so it does not raise the
-// peak memory).
+// LSD radix sort, a third of std::sort's instructions on these items). The
+// buffer is freed before the triangulation reserves room for the new faces,
+// so it does not raise the peak memory.
 template <class Item>
-void sort_along_curve(std::vector<Item> &items, std::vector<Item> &buffer) {
+void sort_along_curve(std::vector<Item> &items) {
+  if (items.size() < 2) return;
+  std::vector<Item> buffer(items.size());
   for (int shift = 0; shift < 30; shift += 10) {
     std::array<std::size_t, 1025> start{};
     for (const Item &item : items) ++start[((item.key >> shift) & 1023) + 1];
@@ -201,13 +203,13 @@ uint32_t brio_round(uint64_t i, uint32_t last) {
   return ones >= last ? 0 : last - ones;
 }
 
-// Stable partition of items sorted along the curve by their round, through
-// buffer (as many items: the sort's, whose pages are mapped already).
+// Stable partition of items sorted along the curve by their round.
 template <class Item>
-void order_by_round(std::vector<Item> &items, uint32_t rounds, std::vector<Item> &buffer) {
+void order_by_round(std::vector<Item> &items, uint32_t rounds) {
   std::vector<std::size_t> start(rounds + 1, 0);
   for (const Item &item : items) ++start[item.round + 1];
   for (uint32_t r = 0; r < rounds; ++r) start[r + 1] += start[r];
+  std::vector<Item> buffer(items.size());
   for (const Item &item : items) buffer[start[item.round]++] = item;
   items.swap(buffer);
 }
@@ -230,7 +232,7 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out, 
   // Rounds of at least 1024 points (fewer points: one round, Hilbert order).
   uint32_t last = 0;
   while ((std::size_t(1024) << last) < n && last < 30) ++last;
-  std::vector<Item> order = sized_on_huge_pages<std::vector<Item>>(n);
+  std::vector<Item> order(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double x = xy[2 * i], y = xy[2 * i + 1];
     TranslationId home;
@@ -248,13 +250,8 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out, 
     }
     order[i] = {hilbert_index(grid(rx), grid(ry)), uint32_t(i), x, y, home, brio_round(i, last)};
   }
-  {
-    std::vector<Item> buffer = sized_on_huge_pages<std::vector<Item>>(n);
-    sort_along_curve(order, buffer);
-    if (last > 0) order_by_round(order, last + 1, buffer);
-  }
-  // Room for the new vertices and faces, growing at least twofold: many
-  // calls of a few points each would otherwise copy everything every time.
+  sort_along_curve(order);
+  if (last > 0) order_by_round(order, last + 1);
   grow_for(vertices_, n);
   grow_for(dummy_, n);
   grow_for(faces_, 2 * n);

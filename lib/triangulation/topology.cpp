@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "triangulation/huge_pages.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
@@ -175,7 +174,7 @@ class Triangulation::Replacement {
   void write(std::vector<uint32_t> *ids) {
     std::vector<Face> &faces = t_.faces_;
     const std::size_t new_size = faces.size() + (k_ > old_.size() ? k_ - old_.size() : 0);
-    if (faces.capacity() < new_size) reserve_on_huge_pages(faces, std::max(new_size, 2 * faces.capacity()));
+    if (faces.capacity() < new_size) faces.reserve(std::max(new_size, 2 * faces.capacity()));
     if (ids) ids->reserve(k_);
     t_.scratch_.holes.assign(old_.begin() + long(std::min(old_.size(), k_)), old_.end());
     if (ids) ids->clear();
