@@ -175,7 +175,12 @@ uint32_t grid(double c) { return std::isfinite(c) ? uint32_t(std::clamp((c + 1) 
 // so it does not raise the peak memory.
 template <class Item>
 void sort_along_curve(std::vector<Item> &items) {
-  if (items.size() < 2) return;
+  // A few items: the passes' 3 x 1024 buckets would cost more than the
+  // items (41,000 instructions a call of 10 points); the same stable order.
+  if (items.size() < 256) {
+    std::stable_sort(items.begin(), items.end(), [](const Item &a, const Item &b) { return a.key < b.key; });
+    return;
+  }
   std::vector<Item> buffer(items.size());
   for (int shift = 0; shift < 30; shift += 10) {
     std::array<std::size_t, 1025> start{};
@@ -260,9 +265,19 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out, 
   if (out) std::fill(out, out + n, kNone);
   ProgressTicker ticker(progress, n);
   std::size_t done = 0;
+  // The first point of a round is in no relation to the last one inserted:
+  // it jumps as insert() does (jump_near), and the others follow the curve.
+  // In a small call they are still far apart (about sqrt(2n / k) faces for
+  // k points among n vertices), and a jump (n^(1/3) samples, then a walk of
+  // about n^(1/4)) is cheaper: every point jumps below k = 4 n^(1/3).
+  // (Callgrind, 30,000 random points in calls of k: jumping every point
+  // took 0.59x the instructions at k = 10, 0.92x at 100, 1.08x at 300.)
+  const bool jump_each = double(n) < 4 * std::cbrt(double(live_vertices_));
+  uint32_t round = ~0u;
   for (const Item &item : order) {
     const double x = item.x, y = item.y;
     const TranslationId home = item.home;
+    if (jump_each || item.round != round) round = item.round, jump_near(x, y, home);
     const Walk at = walk_from_hint({x, y, home, -1});
     uint32_t v = vertex_at(at);
     if (v != kNone) {
