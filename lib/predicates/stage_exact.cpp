@@ -20,7 +20,7 @@ ExactStage::Row ExactStage::row(const TranslatedPoint &p) {
   // both Z^2 times the values for z (a positive factor).
   const exact::CyclotomicField &K = field_.cyclotomic();
   const surface::ExactSite site =
-      p.site >= 0 ? surface_.site(p.site).exact
+      p.site >= 0 ? *surface_.site(p.site).exact
                   : surface::ExactSite{field_.from_double(p.x), field_.from_double(p.y),
                                        field_.from_cyclotomic(K.integer(1))};
   const FieldElement xx = field_.mul(site.X, site.X), yy = field_.mul(site.Y, site.Y);

@@ -57,7 +57,7 @@ unsigned StructuralStage::row_zeros(const TranslatedPoint &p) {
     if (site_zeros_.size() < surface_.site_count()) site_zeros_.resize(surface_.site_count(), 0);
     uint16_t &mask = site_zeros_[std::size_t(p.site)];
     if (!(mask & kKnown)) {
-      const surface::ExactSite &s = surface_.site(p.site).exact;
+      const surface::ExactSite &s = *surface_.site(p.site).exact;
       const exact::Field &field = exact_.field();
       mask = uint16_t((field.is_zero(s.X) ? 2u : 0u) | (field.is_zero(s.Y) ? 4u : 0u) | kKnown);
     }

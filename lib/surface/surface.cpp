@@ -65,7 +65,7 @@ int32_t Surface::add_site(const ExactSite &site, const group::Complex<SiteReal> 
                           const group::Complex<double> *rounded) {
   const SiteEvaluation e = evaluate_site(field_, site);
   if (!(e.z > e.ez) && field_.sign(site.Z) <= 0) throw std::domain_error("add_site: Z must be positive");
-  Site data{site, 0, 0, {}, false, {}};
+  Site data{std::make_shared<const ExactSite>(site), 0, 0, {}, false, {}};
   // The evaluations certify the vector, and with it that the site is inside
   // the disk, except very near the circle: only there are the exact
   // products (dense at large genus) formed.
