@@ -95,9 +95,9 @@ HDT_API int hdt_abi_version(void) HDT_NOEXCEPT;
 /* Largest genus hdt_create accepts (HDT_ENOTSUP, naming this limit, above
    it), the largest at which a test builds and certifies the dummy points.
    The first triangulation of a genus in a process builds them: measured as
-   above, at most 0.6 s of CPU for every genus up to 128 (0.2 s at 64),
-   1.6 s and 204 MiB (10^5 points included) at 256; later ones copy
-   them (36 ms at 128, 0.14 s at 256). May grow in later versions. */
+   above, at most 0.6 to 0.7 s of CPU for every genus up to 128 (0.2 s at
+   64), 1.6 s and 146 MiB (10^5 points included) at 256; later ones copy
+   them (0.9 ms at 128, 4 ms at 256). May grow in later versions. */
 #define HDT_CREATE_GENUS_MAX 256
 
 /* The systole of M_g: 2 arccosh(1 + 2 cos(pi / 2g)), correctly rounded (the
