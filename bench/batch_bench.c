@@ -1,9 +1,10 @@
 /* Points given a few at a time against all at once, side by side in one
  * process: N random points of F_g (bench/uniform_points.h) go into a fresh
  * triangulation by one hdt_insert_many call, by calls of k points each, and
- * by hdt_insert one at a time; the CPU time of the inserting, best of
- * --repeat runs, and its ratio to the one call. Every way must give the
- * same face count (checked). Prints a Markdown table.
+ * by hdt_insert one at a time; then hdt_locate and hdt_nearest_vertex of N
+ * other random points one at a time. The CPU time, best of --repeat runs,
+ * and its ratio to the one call. Every way of inserting must give the same
+ * face count (checked). Prints a Markdown table.
  *
  *   batch_bench [--n 100000] [--genus 2] [--repeat 3] [--calls 10,100,1000]
  */
@@ -15,6 +16,26 @@
 #include "bench_common.h"
 #include "hdt.h"
 #include "uniform_points.h"
+
+/* The best CPU time of `repeat` rounds of hdt_locate (nearest = 0) or
+   hdt_nearest_vertex (1) of the n points q, one at a time, in t. */
+static double queries(const hdt_triangulation *t, const double *q, size_t n, int nearest, int repeat) {
+  double best = 1e300;
+  for (int r = 0; r < repeat; ++r) {
+    const double t0 = bench_cpu_ms();
+    for (size_t i = 0; i < n; ++i) {
+      size_t face;
+      int32_t translation;
+      uint32_t vertex;
+      const hdt_status s = nearest ? hdt_nearest_vertex(t, q[2 * i], q[2 * i + 1], &vertex)
+                                   : hdt_locate(t, q[2 * i], q[2 * i + 1], &face, &translation);
+      if (s != HDT_OK) exit(1);
+    }
+    const double dt = bench_cpu_ms() - t0;
+    if (dt < best) best = dt;
+  }
+  return best;
+}
 
 /* k = 0: hdt_insert one point at a time; else hdt_insert_many k at a time.
    The best CPU time of `repeat` runs; *faces the face count. */
@@ -71,6 +92,15 @@ int main(int argc, char **argv) {
   const double each = run(genus, xy, n, 0, repeat, &faces);
   if (faces != faces_one) return fprintf(stderr, "hdt_insert: %zu faces, not %zu\n", faces, faces_one), 1;
   printf("| hdt_insert, one point a call | %.1f | %.2f | %.2f |\n", each, 1e3 * each / n, each / one);
+  /* Queries at N other random points of F_g, on the triangulation of the
+     first N (its dummies kept). */
+  hdt_triangulation *t = NULL;
+  if (hdt_create(&t, genus) != HDT_OK || hdt_insert_many(t, xy, n, NULL) != HDT_OK) return 1;
+  bench_points_in_polygon(genus, n, 2, xy);
+  const double locate = queries(t, xy, n, 0, repeat), nearest = queries(t, xy, n, 1, repeat);
+  printf("| hdt_locate, N other points one at a time | %.1f | %.2f | %.2f |\n", locate, 1e3 * locate / n, locate / one);
+  printf("| hdt_nearest_vertex, the same | %.1f | %.2f | %.2f |\n", nearest, 1e3 * nearest / n, nearest / one);
+  hdt_destroy(t);
   free(xy);
   return 0;
 }

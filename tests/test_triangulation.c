@@ -1285,6 +1285,18 @@ START_TEST(locate_and_nearest_vertex) {
     snprintf(what, sizeof what, "g=%d, 600 points, %zu dummies left", g, remaining);
     check_locate(t, &rng, 300, what);
     check_nearest(t, &rng, 100, what);
+    /* A third of the points removed: the walks' starting grid then names
+       removed vertices in many of its cells (they fall back to samples). */
+    size_t removed = 0;
+    for (size_t k = 0; k < 600; k += 3) {
+      uint32_t v = UINT32_MAX;
+      ck_assert_int_eq(hdt_nearest_vertex(t, xy[2 * k], xy[2 * k + 1], &v), HDT_OK);
+      removed += hdt_remove_vertex(t, v) == HDT_OK;
+    }
+    expect(removed > 150, "g=%d: only %zu of 200 removals done", g, removed);
+    snprintf(what, sizeof what, "g=%d, %zu of 600 points removed", g, removed);
+    check_locate(t, &rng, 300, what);
+    check_nearest(t, &rng, 100, what);
     hdt_destroy(t);
   }
 }

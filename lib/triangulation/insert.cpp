@@ -272,18 +272,17 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out, 
   ProgressTicker ticker(progress, n);
   std::size_t done = 0;
   // The first point of a round is in no relation to the last one inserted:
-  // it jumps as insert() does (jump_near), and the others follow the curve.
-  // In a small call they are still far apart (about sqrt(2V / n) faces for
-  // n points among V vertices), and a jump (V^(1/3) samples, then a short
-  // walk) is cheaper: every point jumps below n = 4 V^(1/3).
-  // (Callgrind, 30,000 random points in calls of n: jumping every point
-  // took 0.59x the instructions at n = 10, 0.92x at 100, 1.08x at 300.)
-  const bool jump_each = double(n) < 4 * std::cbrt(double(live_vertices_));
+  // it jumps as insert() does (jump_near, by random samples: a round's grid
+  // would cost more than it saves), and the others follow the curve. In a
+  // call of n points among V vertices they are still about sqrt(2V / n)
+  // faces apart, and below n = V / 8 (4 faces) every point jumps by the
+  // grid instead.
+  const bool jump_each = 8 * double(n) < double(live_vertices_);
   uint32_t round = ~0u;
   for (const Item &item : order) {
     const double x = item.x, y = item.y;
     const TranslationId home = item.home;
-    if (jump_each || item.round != round) round = item.round, jump_near(x, y, home);
+    if (jump_each || item.round != round) round = item.round, jump_near(x, y, home, jump_each);
     const Walk at = walk_from_hint({x, y, home, -1});
     uint32_t v = vertex_at(at);
     if (v != kNone) {

@@ -1,7 +1,9 @@
 // Point location (a visibility walk through translated neighbours), the star
 // of a vertex, and the nearest vertex.
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <stdexcept>
 
 #include "group/word_matrix.hpp"
@@ -21,31 +23,87 @@ Triangulation::Hint Triangulation::hint() const {
   return {last_face_ < faces_.size() ? last_face_ : 0, 0};
 }
 
-void Triangulation::jump_near(double x, double y, TranslationId home) const {
+namespace {
+
+// The representative of a stored point (x, y) whose home is h, in double.
+group::Complex<double> at_home(group::TranslationTable &T, double x, double y, TranslationId h) {
+  if (h == 0) return {x, y};
+  return T.moebius(h).apply({x, y});
+}
+
+// The grid cell of q: the square [-half, half]^2 cut into side^2 cells,
+// points outside it (or not finite) in the nearest border cell.
+std::size_t grid_cell(const group::Complex<double> &q, uint32_t side, double half) {
+  const double scale = side / (2 * half), top = side - 1;
+  double i = (q.re + half) * scale, j = (q.im + half) * scale;
+  i = i >= 0 ? std::min(i, top) : 0;  // (NaN goes to 0)
+  j = j >= 0 ? std::min(j, top) : 0;
+  return std::size_t(j) * side + std::size_t(i);
+}
+
+}  // namespace
+
+void Triangulation::build_grid() const {
+  // Built aside and then swapped in: the grid is a cache, and a query must
+  // not fail for it. Without memory for it, the jumps sample at random
+  // until the vertices double again.
+  grid_built_ = vertices_.size();
+  grid_.clear(), grid_side_ = 0;
+  group::TranslationTable &T = table();
+  double half = 0;
+  for (const Vertex &u : vertices_)
+    if (u.alive()) {
+      const group::Complex<double> z = at_home(T, u.x, u.y, u.home);
+      if (std::isfinite(z.re) && std::isfinite(z.im)) half = std::max({half, std::abs(z.re), std::abs(z.im)});
+    }
+  const auto side = uint32_t(std::max(1.0, std::sqrt(double(live_vertices_) / 2)));
+  half = half > 0 ? half * (1 + 0x1p-20) : 1;
+  std::vector<uint32_t> grid;
+  try {
+    grid.assign(std::size_t(side) * side, kNone);
+  } catch (const std::bad_alloc &) {
+    return;
+  }
+  for (uint32_t v = 0; v < vertices_.size(); ++v) {
+    const Vertex &u = vertices_[v];
+    if (u.alive()) grid[grid_cell(at_home(T, u.x, u.y, u.home), side, half)] = v;
+  }
+  grid_.swap(grid), grid_side_ = side, grid_half_ = half;
+}
+
+uint32_t Triangulation::grid_vertex(const group::Complex<double> &q) const {
+  if (vertices_.size() >= 2 * grid_built_) build_grid();
+  return grid_side_ == 0 ? kNone : grid_[grid_cell(q, grid_side_, grid_half_)];
+}
+
+void Triangulation::jump_near(double x, double y, TranslationId home, bool grid) const {
   // Jump and walk (Devroye, Mucke, Zhu): of the last vertex and about n^(1/3)
   // random ones, the walk starts at the one nearest to the query, so that
   // queries in no particular order walk about n^(1/4) faces instead of
-  // n^(1/2). Nearness is only a heuristic here (rounded disk points, the
+  // n^(1/2); with the grid, of the last vertex and the grid cell's, about a
+  // cell away. Nearness is only a heuristic here (rounded disk points, the
   // representatives in F_g, no side pairing): it picks a start, the walk's
   // exact predicates decide.
   const std::size_t n = vertices_.size();
   if (n < 64) return;
   group::TranslationTable &T = table();
-  auto at_home = [&](double px, double py, TranslationId h) {
-    if (h == 0) return group::Complex<double>{px, py};
-    return T.moebius(h).apply({px, py});
-  };
-  const group::Complex<double> q = at_home(x, y, home);
+  const group::Complex<double> q = at_home(T, x, y, home);
   const double wq = 1 - (q.re * q.re + q.im * q.im);
   // A monotone function of the hyperbolic distance: |z - q|^2 / (w_z w_q).
   auto farness = [&](uint32_t v) {
     const Vertex &u = vertices_[v];
-    const group::Complex<double> z = at_home(u.x, u.y, u.home);
+    const group::Complex<double> z = at_home(T, u.x, u.y, u.home);
     const double dx = z.re - q.re, dy = z.im - q.im;
     return (dx * dx + dy * dy) / ((1 - (z.re * z.re + z.im * z.im)) * wq);
   };
   uint32_t best = last_vertex_ < n && vertices_[last_vertex_].alive() ? last_vertex_ : kNone;
   double best_farness = best != kNone ? farness(best) : HUGE_VAL;
+  const uint32_t cell = grid ? grid_vertex(q) : kNone;
+  if (cell != kNone && vertices_[cell].alive()) {
+    if (farness(cell) < best_farness) best = cell;
+    last_vertex_ = best;
+    return;
+  }
   const int samples = int(std::cbrt(double(live_vertices_)));
   for (int k = 0; k < samples; ++k) {
     rng_ ^= rng_ << 13, rng_ ^= rng_ >> 7, rng_ ^= rng_ << 17;

@@ -188,9 +188,14 @@ class Triangulation {
   };
   Hint hint() const;
   // Before a walk to a point in no particular order: makes last_vertex_ the
-  // nearest of it and a few random vertices to (x, y), whose representative
-  // is home(x + iy).
-  void jump_near(double x, double y, TranslationId home) const;
+  // nearest to (x, y), whose representative is home(x + iy), of itself and
+  // the vertex the grid holds for that place (with grid; see grid_), or of
+  // itself and a few random vertices.
+  void jump_near(double x, double y, TranslationId home, bool grid = true) const;
+  // The grid's vertex for the representative q (kNone if none), the grid
+  // built first when the vertices have doubled since it was.
+  uint32_t grid_vertex(const group::Complex<double> &q) const;
+  void build_grid() const;
   Walk walk_from_hint(const TranslatedPoint &q) const {
     const Hint h = hint();
     return walk(q, h.face, h.frame_inverse);
@@ -223,6 +228,15 @@ class Triangulation {
   mutable uint32_t last_vertex_ = kNone;  // the vertex last inserted or found
   static constexpr uint64_t kWalkSeed = 0x9E3779B97F4A7C15ull;
   mutable uint64_t rng_ = kWalkSeed;
+  // A square grid of about V / 2 cells over the representatives, each cell
+  // holding a vertex whose representative lay in it when the grid was built
+  // (kNone: none), so that a query in no particular order starts its walk
+  // a cell away. Rebuilt once the vertex ids have doubled; a removed
+  // vertex's cell falls back to random samples until then.
+  mutable std::vector<uint32_t> grid_;
+  mutable uint32_t grid_side_ = 0;
+  mutable double grid_half_ = 1;        // it covers [-grid_half_, grid_half_]^2
+  mutable std::size_t grid_built_ = 0;  // vertices_.size() when built
 
   // Scratch space reused by every operation (scratch.hpp); star is also
   // validate()'s, hence mutable.
