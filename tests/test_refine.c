@@ -284,7 +284,8 @@ START_TEST(bad_arguments_change_nothing) {
   }
   expect(hdt_epsilon_net(t, INFINITY, SIZE_MAX, &added, &unmet) == HDT_EINVAL, "epsilon inf");
   expect(strlen(hdt_last_error_message()) > 0, "no message");
-  expect(added == 12345 && unmet == 12345, "outputs written on failure");
+  /* the counts are written on every return: nothing added, nothing looked at */
+  expect(added == 0 && unmet == 0, "after a refused call: added %zu, unmet %zu", added, unmet);
   expect(hdt_refine(NULL, 0.2, 2, SIZE_MAX, NULL, NULL) == HDT_EINVAL, "NULL handle");
   expect(hdt_epsilon_net(NULL, 0.2, SIZE_MAX, NULL, NULL) == HDT_EINVAL, "NULL handle");
   /* no bound at all, or max_points 0: nothing to do */
@@ -321,6 +322,70 @@ START_TEST(epsilon_nets) {
     expect((double)hdt_vertex_count(t) <= packing_bound(cases[k].g, eps), "%zu vertices", hdt_vertex_count(t));
     hdt_destroy(t);
   }
+}
+END_TEST
+
+/* Two user points closer than double can refine between (1 ulp, 1e-300,
+   subnormal), dummies removed, on and off the axes: hdt_refine returns
+   HDT_OK, the triangulation valid; the faces left breaking a bound are the
+   few next to the pair (below the resolution of double: counted in
+   *unmet), every other face meets the bound (recomputed here in MPFR), and
+   a second call adds nothing. The library used to fail with HDT_EINTERNAL
+   ("a circumcentre fell on a vertex") part way, with the triangulation
+   changed. */
+START_TEST(near_duplicates_are_refined_around) {
+  const double tiny = 0x1p-1074; /* the smallest subnormal */
+  const struct {
+    double x0, y0, x1, y1;
+  } pairs[] = {
+      {0.3, 0.1, 0.3, 0x1.999999999999bp-4},    /* (0.3, 0.1) and (0.3, nextafter(0.1, 1)) */
+      {0.3, 0, 0.3, tiny},                      /* subnormal, on an axis */
+      {0.3, 1e-300, 0.3, 2e-300},               /* 1e-300 */
+      {1e-300, -0.2, 2e-300, -0.2},             /* 1e-300, about the other axis */
+      {-0.45, 0.2, -0x1.cccccccccccccp-2, 0.2}, /* 1 ulp in x, off the axes */
+      {0, 0, tiny, 0},                          /* subnormal at the centre */
+  };
+  const double ratios[] = {1, M_SQRT2, 2, 10};
+  for (int g = 2; g <= 3; ++g)
+    for (size_t p = 0; p < sizeof pairs / sizeof pairs[0]; ++p)
+      for (size_t k = 0; k < sizeof ratios / sizeof ratios[0]; ++k) {
+        hdt_triangulation *t;
+        OK(hdt_create(&t, g));
+        const double xy[] = {pairs[p].x0, pairs[p].y0, pairs[p].x1, pairs[p].y1};
+        uint32_t ids[2];
+        OK(hdt_insert_many(t, xy, 2, ids));
+        expect(ids[0] != ids[1], "pair %zu: one vertex", p);
+        size_t left;
+        OK(hdt_remove_dummies(t, &left));
+        size_t added = 99, unmet = 99;
+        const hdt_status s = hdt_refine(t, INFINITY, ratios[k], SIZE_MAX, &added, &unmet);
+        expect(s == HDT_OK, "genus %d, pair %zu, ratio %g: %s (%s)", g, p, ratios[k], hdt_status_string(s),
+               hdt_last_error_message());
+        OK(hdt_validate(t));
+        expect(added > 0 && added < 10000, "genus %d, pair %zu, ratio %g: added %zu", g, p, ratios[k], added);
+        expect(unmet >= 1 && unmet <= 8, "genus %d, pair %zu, ratio %g: unmet %zu", g, p, ratios[k], unmet);
+        size_t F = 0;
+        OK(hdt_face_points(t, NULL, 0, &F));
+        double *fxy = need(malloc(6 * F * sizeof *fxy));
+        OK(hdt_face_points(t, fxy, F, &F));
+        size_t above = 0;
+        for (size_t f = 0; f < F; ++f) {
+          const shape sh = face_shape(fxy + 6 * f);
+          if (sh.radius <= ratios[k] * sh.shortest * (1 + TOL)) continue;
+          ++above;
+          double dmin = INFINITY; /* a face left is one next to the pair */
+          for (int c = 0; c < 3; ++c)
+            dmin = fmin(dmin, hypot(fxy[6 * f + 2 * c] - pairs[p].x0, fxy[6 * f + 2 * c + 1] - pairs[p].y0));
+          expect(dmin < 1e-8, "genus %d, pair %zu: a face left %.3g from the pair", g, p, dmin);
+        }
+        free(fxy);
+        expect(above <= unmet, "genus %d, pair %zu, ratio %g: %zu faces above the bound, %zu unmet", g, p,
+               ratios[k], above, unmet);
+        size_t unmet2 = 0;
+        OK(hdt_refine(t, INFINITY, ratios[k], SIZE_MAX, &added, &unmet2));
+        expect(added == 0 && unmet2 == unmet, "a second call: added %zu, unmet %zu then %zu", added, unmet, unmet2);
+        hdt_destroy(t);
+      }
 }
 END_TEST
 
@@ -369,6 +434,6 @@ END_TEST
 int main(void) {
   const TTest *const tests[] = {uniform_mesh_from_the_dummies, point_set_refined,           quality_against_mpfr,
                                 cap_is_honoured,               bad_arguments_change_nothing, epsilon_nets,
-                                out_of_memory_keeps_a_valid_triangulation};
+                                out_of_memory_keeps_a_valid_triangulation, near_duplicates_are_refined_around};
   return run_tests("refine", tests, sizeof tests / sizeof tests[0]);
 }

@@ -2,6 +2,7 @@
 // The algorithm is lib/triangulation/refine.cpp; here the arguments are
 // checked before anything changes, and the results copied out.
 #include <cmath>
+#include <string>
 
 #include "capi/guard.hpp"
 #include "capi/handle.hpp"
@@ -10,13 +11,18 @@
 #include "triangulation/refine.hpp"
 
 using hdt::capi::ApiError;
+using hdt::capi::fail;
 using hdt::capi::guarded;
 using hdt::capi::of;
 
 namespace {
 
-hdt_status run(hdt_triangulation *t, double max_radius, double max_ratio, size_t max_points, size_t *added,
-               size_t *unmet) {
+// *added and *unmet are written on every return: 0 and 0 when the
+// arguments are refused (nothing was looked at).
+hdt_status run(const char *function, hdt_triangulation *t, double max_radius, double max_ratio,
+               size_t max_points, size_t *added, size_t *unmet) {
+  if (added) *added = 0;
+  if (unmet) *unmet = 0;
   hdt::triangulation::Triangulation &tri = of(t);
   if (!(max_radius > 0)) throw ApiError(HDT_EINVAL, "the radius bound must be > 0 (and not NaN)");
   if (!(max_ratio >= 1)) throw ApiError(HDT_EINVAL, "max_ratio must be >= 1 (and not NaN)");
@@ -24,6 +30,10 @@ hdt_status run(hdt_triangulation *t, double max_radius, double max_ratio, size_t
       hdt::triangulation::refine(tri, {max_radius, max_ratio}, max_points, &t->progress);
   if (added) *added = r.added;
   if (unmet) *unmet = r.unmet;
+  if (r.out_of_memory)
+    return fail(HDT_ENOMEM, function,
+                "out of memory after " + std::to_string(r.added) +
+                    " points were added (they stay, in a valid triangulation; *added and *unmet tell)");
   return HDT_OK;
 }
 
@@ -33,14 +43,14 @@ extern "C" {
 
 HDT_API hdt_status hdt_refine(hdt_triangulation *t, double max_radius, double max_ratio, size_t max_points,
                               size_t *added, size_t *unmet) HDT_NOEXCEPT {
-  return guarded("hdt_refine", [&] { return run(t, max_radius, max_ratio, max_points, added, unmet); });
+  return guarded("hdt_refine", [&] { return run("hdt_refine", t, max_radius, max_ratio, max_points, added, unmet); });
 }
 
 HDT_API hdt_status hdt_epsilon_net(hdt_triangulation *t, double epsilon, size_t max_points, size_t *added,
                                    size_t *unmet) HDT_NOEXCEPT {
   return guarded("hdt_epsilon_net", [&] {
     if (!(epsilon > 0) || std::isinf(epsilon)) throw ApiError(HDT_EINVAL, "epsilon must be finite and > 0");
-    return run(t, epsilon, INFINITY, max_points, added, unmet);
+    return run("hdt_epsilon_net", t, epsilon, INFINITY, max_points, added, unmet);
   });
 }
 

@@ -54,19 +54,16 @@ Triangulation::Inserted Triangulation::insert_in_circle(double x, double y, uint
   if (face >= faces_.size()) throw std::invalid_argument("insert_in_circle: face " + std::to_string(face) + " is unknown");
   const Face &F = faces_[face];
   const TranslatedPoint q{x, y, 0, -1};  // in the frame of F's canonical copy
-  const predicates::Representative r = predicates::representative(*kernel_, x, y);
   created->clear();
   // Strictly inside the (empty) circle of a Delaunay face: q is no vertex,
-  // and F conflicts with it, so the cavity search may start at F.
-  if (kernel_->in_circle(corner(F, 0), corner(F, 1), corner(F, 2), q) > 0) {
-    const uint32_t v = insert_located(x, y, r.translation, false, {face, 0, 0});
-    created->assign(scratch_.new_ids.begin(), scratch_.new_ids.end());
-    return {v, false};
-  }
-  const std::size_t before = vertices_.size();
-  const Inserted in = insert_walked(x, y, r.translation, walk(q, face, 0));
-  if (vertices_.size() > before) created->assign(scratch_.new_ids.begin(), scratch_.new_ids.end());
-  return in;
+  // and F conflicts with it, so the cavity search may start at F. Anything
+  // else (a rounded circumcentre on the circle or beyond it) is refused
+  // before anything changes: refinement leaves that face.
+  if (kernel_->in_circle(corner(F, 0), corner(F, 1), corner(F, 2), q) <= 0) return {kNone, false};
+  const predicates::Representative r = predicates::representative(*kernel_, x, y);
+  const uint32_t v = insert_located(x, y, r.translation, false, {face, 0, 0});
+  created->assign(scratch_.new_ids.begin(), scratch_.new_ids.end());
+  return {v, false};
 }
 
 Triangulation::Inserted Triangulation::insert_walked(double x, double y, TranslationId home, const Walk &at) {

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <new>
 #include <stdexcept>
 #include <vector>
 
@@ -76,41 +77,74 @@ void check(const RefineBounds &b) {
   if (!(b.max_ratio >= 1)) throw std::invalid_argument("max_ratio must be >= 1 (not NaN)");
 }
 
+// The faces still breaking the bounds; all of them when memory is too short
+// even to look (an upper bound, as refine.hpp promises).
+std::size_t count_unmet(const Triangulation &tri, const RefineBounds &b) noexcept {
+  try {
+    std::size_t unmet = 0;
+    Circle c;
+    for (const Face &f : tri.faces()) unmet += is_bad(tri, f, b, &c) ? 1 : 0;
+    return unmet;
+  } catch (const std::bad_alloc &) {
+    return tri.faces().size();
+  }
+}
+
 }  // namespace
+
+bool resolvable(const Circle &c) {
+  // The Euclidean radius of the hyperbolic circle of centre c and radius R:
+  // (1 - |c|^2) t / (1 - |c|^2 t^2), t = tanh(R / 2).
+  const double c2 = c.centre.re * c.centre.re + c.centre.im * c.centre.im, t = std::tanh(c.radius / 2);
+  return (1 - c2) * t / (1 - c2 * t * t) >= kResolution;
+}
 
 Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points, const Progress *progress) {
   check(b);
-  Buckets bad;
-  auto offer = [&](uint32_t slot) {
-    const Face &f = tri.faces()[slot];
-    Circle c;
-    if (is_bad(tri, f, b, &c)) bad.push(c.radius, {c.centre, slot, f.v, f.t});
-  };
-  for (uint32_t s = 0; s < tri.faces().size(); ++s) offer(s);
-
-  Refined out{0, 0};
+  Refined out{0, 0, false};
+  const std::size_t ids_before = tri.vertices().size();  // ids are never reused: the count of points added
+  bool left = false;  // a bad face left for good (below the resolution, or its centre not inside)
   std::vector<uint32_t> created;
   ProgressTicker ticker(progress, 0);
   bool stopped = false;
-  Entry e;
-  while (out.added < max_points && !stopped && bad.pop(&e)) {
-    if (e.slot >= tri.faces().size()) continue;
-    const Face &f = tri.faces()[e.slot];
-    if (f.v != e.v || f.t != e.t) continue;  // replaced since it was pushed
-    // The rounded circumcentre of the face's canonical copy, in that copy's
-    // frame; the insertion decides everything with exact predicates.
-    const std::size_t before = tri.vertices().size();
-    const Triangulation::Inserted in = tri.insert_in_circle(e.centre.re, e.centre.im, e.slot, &created);
-    if (in.existed || in.vertex < before)
-      throw std::logic_error("refine: a circumcentre fell on a vertex (its circle is not empty)");
-    ++out.added;
-    for (const uint32_t s : created) offer(s);
-    stopped = ticker.stop(out.added);
-  }
-  if (!stopped) ticker.finish(out.added);
-  if (!bad.empty()) {
-    Circle c;
-    for (const Face &f : tri.faces()) out.unmet += is_bad(tri, f, b, &c) ? 1 : 0;
+  try {
+    Buckets bad;
+    auto offer = [&](uint32_t slot) {
+      const Face &f = tri.faces()[slot];
+      Circle c;
+      if (!is_bad(tri, f, b, &c)) return;
+      if (resolvable(c)) bad.push(c.radius, {c.centre, slot, f.v, f.t});
+      else left = true;
+    };
+    for (uint32_t s = 0; s < tri.faces().size(); ++s) offer(s);
+    Entry e;
+    while (out.added < max_points && !stopped && bad.pop(&e)) {
+      if (e.slot >= tri.faces().size()) continue;
+      const Face &f = tri.faces()[e.slot];
+      if (f.v != e.v || f.t != e.t) continue;  // replaced since it was pushed
+      // The rounded circumcentre of the face's canonical copy, in that
+      // copy's frame; the insertion decides everything with exact
+      // predicates, and refuses a centre that rounded onto the circle or
+      // out of it (a face that double cannot refine: it stays bad).
+      const std::size_t before = tri.vertices().size();
+      const Triangulation::Inserted in = tri.insert_in_circle(e.centre.re, e.centre.im, e.slot, &created);
+      if (in.vertex == kNone) {
+        left = true;
+        continue;
+      }
+      if (in.existed || in.vertex < before) throw std::logic_error("refine: a point strictly inside an empty circle was a vertex");
+      ++out.added;
+      for (const uint32_t s : created) offer(s);
+      stopped = ticker.stop(out.added);
+    }
+    if (!stopped) ticker.finish(out.added);
+    if (!bad.empty() || left) out.unmet = count_unmet(tri, b);
+  } catch (const std::bad_alloc &) {
+    // Each insertion either completes or changes nothing (insert.cpp), so
+    // the points added so far stay, in a valid triangulation.
+    out.out_of_memory = true;
+    out.added = tri.vertices().size() - ids_before;  // one may have been inserted before *created failed
+    out.unmet = count_unmet(tri, b);
   }
   return out;
 }

@@ -28,16 +28,33 @@ constexpr double kRefineMargin = 1e-9;
 // Whether the face breaks the bounds, as refine() decides it.
 bool is_bad(const Triangulation &tri, const Face &f, const RefineBounds &b, Circle *circle);
 
+// Steiner points are doubles, so a bad face is refined only when its
+// circumcircle's Euclidean radius in the disk (in its canonical copy) is at
+// least kResolution: the rounded circumcentre is then within a relative
+// 2^-11 of the exact one (the centre's error is at most a few ulps of its
+// coordinates from exact corners, 4.3e-13 hyperbolic from translated ones:
+// docs/refinement.md), so each Steiner point keeps its distance from
+// every vertex up to that factor and the proof's packing argument holds.
+// Smaller bad faces arise only next to points closer than about 1e-9 (a
+// user's near-duplicates): they are left and counted as unmet.
+constexpr double kResolution = 0x1p-30;
+bool resolvable(const Circle &c);
+
 struct Refined {
-  std::size_t added;  // Steiner points inserted
-  std::size_t unmet;  // faces still breaking the bounds (0 unless the cap or progress stopped it)
+  std::size_t added;    // Steiner points inserted
+  std::size_t unmet;    // faces still breaking the bounds: 0 unless the cap, progress or memory
+                        // stopped it or some bad face is below the resolution (an upper bound
+                        // when memory ran out)
+  bool out_of_memory;   // memory ran out part way: the points added stay, the triangulation is valid
 };
 // Steiner points are ordinary user vertices, inserted through
 // Triangulation::insert_in_circle (exact predicates; the triangulation stays exactly
-// Delaunay). Throws before changing anything only on bad bounds
-// (std::invalid_argument); std::bad_alloc later keeps the points inserted
-// so far, in a valid triangulation. progress (may be null) is told the
-// points added (total 0: unknown) and can stop it like the cap.
+// Delaunay); a face whose rounded circumcentre is not strictly inside its
+// circle (decided exactly) is left, as one below kResolution is. Throws
+// before changing anything only on bad bounds (std::invalid_argument);
+// running out of memory is reported in the result, not thrown. progress
+// (may be null) is told the points added (total 0: unknown) and can stop
+// it like the cap.
 Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points,
                const Progress *progress = nullptr);
 

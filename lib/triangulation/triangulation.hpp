@@ -57,11 +57,12 @@ class Triangulation {
   // Throws std::domain_error unless (x, y) is a finite point of the open disk.
   Inserted insert(double x, double y);
   // The same for a point given in the frame of face `face`'s canonical copy
-  // and meant to lie strictly inside its circle (refinement: the face's
-  // circumcentre). Checked exactly; then the face is in the point's conflict
-  // region and Bowyer-Watson starts there, with no walk (else a walk from
-  // the face). The ids of the faces created (the new vertex's star) go to
-  // *created. Throws std::invalid_argument for an unknown face.
+  // that lies strictly inside its circle (refinement: the face's rounded
+  // circumcentre), decided exactly: then the face is in the point's
+  // conflict region and Bowyer-Watson starts there, with no walk, and the
+  // ids of the faces created (the new vertex's star) go to *created. A point
+  // on the circle or outside it changes nothing: vertex kNone, *created
+  // empty. Throws std::invalid_argument for an unknown face.
   Inserted insert_in_circle(double x, double y, uint32_t face, std::vector<uint32_t> *created);
   // All points are checked before any is inserted; vertices may be null.
   // progress (may be null) can stop it part way: the points not handled

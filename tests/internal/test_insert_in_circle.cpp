@@ -1,9 +1,9 @@
 // Triangulation::insert_in_circle, the refinement's insertion with no walk:
 // the same triangulation as the ordinary insert() of the same point (the
 // Delaunay triangulation of a point set is unique under the kernel's
-// perturbation), both when the point is inside the given face's circle
-// (the cavity grows from that face) and when it is not (the walk from the
-// face); and the faces it reports created are exactly the new vertex's star.
+// perturbation) when the point is inside the given face's circle (the
+// cavity grows from that face), nothing changed when it is not; and the
+// faces it reports created are exactly the new vertex's star.
 #include <algorithm>
 #include <random>
 #include <set>
@@ -79,11 +79,13 @@ START_TEST(circumcentre_inserted_from_its_face_as_by_insert) {
 }
 END_TEST
 
-START_TEST(point_outside_the_circle_is_walked_to) {
+// A point on or outside the face's circle is refused with nothing changed
+// (refinement then leaves the face); one inside is inserted as by insert().
+START_TEST(point_outside_the_circle_is_refused) {
   Triangulation a(2), b(2);
   fill(a, b, 60, 5);
   std::mt19937_64 rng(13);
-  int outside = 0;
+  int outside = 0, inside = 0;
   for (int k = 0; k < 100; ++k) {
     // Another face's circumcentre, given for face f: in general outside f's circle.
     const auto f = uint32_t(rng() % a.faces().size()), g = uint32_t(rng() % a.faces().size());
@@ -93,10 +95,23 @@ START_TEST(point_outside_the_circle_is_walked_to) {
     const Face &F = a.faces()[f];
     const Point q[3] = {face_corner(a, F, 0), face_corner(a, F, 1), face_corner(a, F, 2)};
     const Circle cf = circumcircle(a, F, q);
-    if (distance(cf.centre, cg.centre) > 2 * cf.radius) ++outside;
-    insert_both(a, b, f, cg.centre);
+    if (distance(cf.centre, cg.centre) > 2 * cf.radius) {
+      ++outside;
+      const std::size_t faces = a.faces().size(), vertices = a.vertices().size();
+      std::vector<uint32_t> created{7};
+      const Triangulation::Inserted in = a.insert_in_circle(cg.centre.re, cg.centre.im, f, &created);
+      ck_assert_uint_eq(in.vertex, kNone);
+      ck_assert(created.empty());
+      ck_assert_uint_eq(a.faces().size(), faces);
+      ck_assert_uint_eq(a.vertices().size(), vertices);
+      ck_assert(vertex_sets(a) == vertex_sets(b));
+    } else if (distance(cf.centre, cg.centre) < 0.5 * cf.radius) {
+      ++inside;
+      insert_both(a, b, f, cg.centre);
+    }
   }
-  ck_assert_int_gt(outside, 50);  // the fallback was taken, many times
+  ck_assert_int_gt(outside, 50);  // refused, many times
+  a.validate();
 }
 END_TEST
 
@@ -118,7 +133,7 @@ END_TEST
 int main(void) {
   return run_suite("insert_in_circle", 300, [](TCase *tc) {
     tcase_add_loop_test(tc, circumcentre_inserted_from_its_face_as_by_insert, 0, 2);
-    tcase_add_test(tc, point_outside_the_circle_is_walked_to);
+    tcase_add_test(tc, point_outside_the_circle_is_refused);
     tcase_add_test(tc, unknown_face_is_refused);
   });
 }
