@@ -573,6 +573,12 @@ HDT_API hdt_status hdt_voronoi_cells(const hdt_triangulation *t, size_t *offsets
    1e-9 (a user's near-duplicates); they are left as they are, with every
    other face refined (HDT_OK). HDT_EINVAL, nothing changed, *added and
    *unmet 0, for t NULL, max_radius NaN or <= 0, max_ratio NaN or < 1.
+   HDT_ENOMEM, nothing changed, *added and *unmet 0, before any work when
+   the radius bound certainly needs more vertices (disks of radius
+   max_radius cover M_g: at least (g - 1) / sinh^2(max_radius / 2), up to
+   max_points more than there are) than the memory this process can have
+   holds (physical memory, or RLIMIT_AS / RLIMIT_DATA; about 121 bytes a
+   vertex at the least); the message gives the count. Later
    HDT_ENOMEM when memory runs out: the *added points inserted so far stay,
    in a valid triangulation, and *unmet counts the faces still breaking a
    bound (an upper bound). Time: about 0.1 s of CPU for the 86,000 points of

@@ -389,6 +389,37 @@ START_TEST(near_duplicates_are_refined_around) {
 }
 END_TEST
 
+/* Work that memory cannot hold is refused before it starts: an
+   epsilon-net of M_2 with epsilon 1e-4 needs more than 4 10^8 vertices
+   (disks of radius epsilon cover the area 4 pi), over 40 GiB. HDT_ENOMEM at
+   once, with the count in the message, the triangulation unchanged; with a
+   cap the same call runs and stops at the cap. The library used to run
+   until memory was gone (the OOM killer, without a ulimit). */
+START_TEST(work_that_cannot_fit_is_refused_up_front) {
+  hdt_triangulation *t;
+  OK(hdt_create(&t, 2));
+  size_t n0, n1;
+  unsigned char *before = observable_bytes(t, &n0);
+  size_t added = 99, unmet = 99;
+  const double tiny[] = {1e-4, 1e-9, 1e-300};
+  for (size_t k = 0; k < 3; ++k) {
+    expect(hdt_epsilon_net(t, tiny[k], SIZE_MAX, &added, &unmet) == HDT_ENOMEM, "epsilon %g: %s", tiny[k],
+           hdt_last_error_message());
+    expect(strstr(hdt_last_error_message(), "vertices") != NULL, "message \"%s\"", hdt_last_error_message());
+    expect(added == 0, "added %zu", added);
+    expect(hdt_refine(t, tiny[k], 2, SIZE_MAX, &added, &unmet) == HDT_ENOMEM, "radius %g: %s", tiny[k],
+           hdt_last_error_message());
+  }
+  unsigned char *after = observable_bytes(t, &n1);
+  expect(n0 == n1 && memcmp(before, after, n0) == 0, "the triangulation changed");
+  free(before), free(after);
+  OK(hdt_epsilon_net(t, 1e-4, 500, &added, &unmet));
+  expect(added == 500 && unmet > 0, "with a cap: added %zu, unmet %zu", added, unmet);
+  OK(hdt_validate(t));
+  hdt_destroy(t);
+}
+END_TEST
+
 /* Out of memory part way (as tests/test_enomem.c does for insertions: a
    forked child under a tight address-space limit; skipped where RLIMIT_AS
    means nothing): hdt_refine returns HDT_ENOMEM, the points inserted so far
@@ -434,6 +465,7 @@ END_TEST
 int main(void) {
   const TTest *const tests[] = {uniform_mesh_from_the_dummies, point_set_refined,           quality_against_mpfr,
                                 cap_is_honoured,               bad_arguments_change_nothing, epsilon_nets,
-                                out_of_memory_keeps_a_valid_triangulation, near_duplicates_are_refined_around};
+                                out_of_memory_keeps_a_valid_triangulation, near_duplicates_are_refined_around,
+                                work_that_cannot_fit_is_refused_up_front};
   return run_tests("refine", tests, sizeof tests / sizeof tests[0]);
 }

@@ -7,8 +7,25 @@
 #include "cli_util.h"
 
 #include <errno.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* The little-endian u32 at p. */
+static uint32_t u32_at(const unsigned char *p) {
+  return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+
+/* The most bytes a file with this 44-byte header can have (docs/format.md:
+   48 + 2W + 2 (letters) + 25V + 48F, each word at most 65535 letters), or 0
+   when it is no libhdt file: what --load reads at most, so that a stream
+   with no end (/dev/zero) or a lying header stops at once. */
+static double most_bytes(const unsigned char *header) {
+  static const unsigned char signature[8] = {0x89, 'H', 'D', 'T', '\r', '\n', 0x1a, '\n'};
+  if (memcmp(header, signature, 8) != 0) return 0;
+  const double W = u32_at(header + 16), V = u32_at(header + 20), F = u32_at(header + 24);
+  return 48 + 2 * W * (1 + 65535.0) + 25 * V + 48 * F;
+}
 
 hdt_triangulation *saved_file_load(const char *path) {
   const int from_stdin = strcmp(path, "-") == 0;
@@ -20,6 +37,7 @@ hdt_triangulation *saved_file_load(const char *path) {
   }
   unsigned char *bytes = NULL;
   size_t size = 0, capacity = 0;
+  double most = -1; /* known once the header is in */
   int ok = 1;
   for (;;) {
     if (size == capacity) {
@@ -33,6 +51,19 @@ hdt_triangulation *saved_file_load(const char *path) {
     }
     const size_t got = fread(bytes + size, 1, capacity - size, f);
     size += got;
+    if (most < 0 && size >= 44) {
+      most = most_bytes(bytes);
+      if (most == 0) {
+        cli_error("%s: byte 0: no libhdt signature: not a file saved by libhdt", name);
+        ok = 0;
+        break;
+      }
+    }
+    if (most >= 0 && (double)size > most) {
+      cli_error("%s: byte %.0f: more bytes than its header allows: not a file saved by libhdt", name, most);
+      ok = 0;
+      break;
+    }
     if (got == 0) break;
   }
   if (ok && ferror(f)) {

@@ -1,7 +1,12 @@
 // Refinement, epsilon-nets and quality statistics (symbol version HDT_0.4).
 // The algorithm is lib/triangulation/refine.cpp; here the arguments are
 // checked before anything changes, and the results copied out.
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "capi/guard.hpp"
@@ -17,6 +22,36 @@ using hdt::capi::of;
 
 namespace {
 
+// The most memory this process can have: the machine's physical memory,
+// or less where a resource limit says so.
+double memory_limit() {
+  double limit = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+  for (const int resource : {RLIMIT_AS, RLIMIT_DATA}) {
+    struct rlimit r;
+    if (getrlimit(resource, &r) == 0 && r.rlim_cur != RLIM_INFINITY) limit = std::min(limit, double(r.rlim_cur));
+  }
+  return limit;
+}
+
+// Work that cannot finish is refused before anything changes: the vertices
+// that the radius bound certainly needs (up to the cap) would not fit in
+// memory.
+void check_room(const char *what, const hdt::triangulation::Triangulation &tri, double max_radius,
+                size_t max_points) {
+  const double needed = hdt::triangulation::vertices_needed(tri.genus(), max_radius);
+  const double live = double(tri.vertex_count());
+  const double added = std::min(double(max_points), std::max(0.0, needed - live));
+  const double bytes = hdt::triangulation::bytes_needed(double(tri.vertices().size()) + added);
+  const double limit = memory_limit();
+  if (bytes <= limit) return;
+  char message[320];
+  std::snprintf(message, sizeof message,
+                "%s to radius %.3g on M_%d needs at least %.3g vertices (covering), %.3g GiB, more than the %.3g GiB "
+                "this process can have; nothing changed (a larger radius or a cap on the points added fits)",
+                what, max_radius, tri.genus(), live + added, bytes / 0x1p30, limit / 0x1p30);
+  throw ApiError(HDT_ENOMEM, message);
+}
+
 // *added and *unmet are written on every return: 0 and 0 when the
 // arguments are refused (nothing was looked at).
 hdt_status run(const char *function, hdt_triangulation *t, double max_radius, double max_ratio,
@@ -26,6 +61,7 @@ hdt_status run(const char *function, hdt_triangulation *t, double max_radius, do
   hdt::triangulation::Triangulation &tri = of(t);
   if (!(max_radius > 0)) throw ApiError(HDT_EINVAL, "the radius bound must be > 0 (and not NaN)");
   if (!(max_ratio >= 1)) throw ApiError(HDT_EINVAL, "max_ratio must be >= 1 (and not NaN)");
+  check_room(std::isinf(max_ratio) ? "an epsilon-net" : "a refinement", tri, max_radius, max_points);
   const hdt::triangulation::Refined r =
       hdt::triangulation::refine(tri, {max_radius, max_ratio}, max_points, &t->progress);
   if (added) *added = r.added;

@@ -92,6 +92,14 @@ std::size_t count_unmet(const Triangulation &tri, const RefineBounds &b) noexcep
 
 }  // namespace
 
+double vertices_needed(int genus, double max_radius) {
+  if (std::isinf(max_radius)) return 0;
+  const double s = std::sinh(max_radius / 2);
+  return (genus - 1) / (s * s);
+}
+
+double bytes_needed(double vertices) { return vertices * (sizeof(Vertex) + 1 + 2 * sizeof(Face)); }
+
 bool resolvable(const Circle &c) {
   // The Euclidean radius of the hyperbolic circle of centre c and radius R:
   // (1 - |c|^2) t / (1 - |c|^2 t^2), t = tanh(R / 2).

@@ -47,6 +47,16 @@ struct Refined {
                         // when memory ran out)
   bool out_of_memory;   // memory ran out part way: the points added stay, the triangulation is valid
 };
+// A lower bound on the vertices that a refinement to max_radius leaves on
+// M_g, whatever else it does: every point of M_g is then within max_radius
+// of a vertex, so disks of that radius cover the area 4 pi (g - 1), each of
+// area 2 pi (cosh r - 1) = 4 pi sinh^2(r / 2). 0 for max_radius infinite (no
+// size bound: nothing is known ahead).
+double vertices_needed(int genus, double max_radius);
+// The least memory that many vertices occupy (their records and the faces
+// of Euler's formula, about two a vertex), in bytes.
+double bytes_needed(double vertices);
+
 // Steiner points are ordinary user vertices, inserted through
 // Triangulation::insert_in_circle (exact predicates; the triangulation stays exactly
 // Delaunay); a face whose rounded circumcentre is not strictly inside its

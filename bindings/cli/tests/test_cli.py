@@ -614,6 +614,22 @@ def test_save_and_load(tmp):
         code, stdout, err = run("--load", bad, "-o", out)
         check(code == 1 and "byte " in err and stdout == "" and not os.path.exists(out),
               f"--load of a {name} file: {code} {err}")
+    # A stream with no end stops at once: no signature, or more bytes than the header allows.
+    code, _, err = run("--load", "/dev/zero", "-o", out)
+    check(code == 1 and "byte 0" in err and not os.path.exists(out), f"--load /dev/zero: {code} {err}")
+    p = subprocess.Popen([TOOL, "--load", "-", "-o", out], stdin=subprocess.PIPE, stderr=subprocess.PIPE)
+    try:
+        p.stdin.write(data)
+        while p.poll() is None:
+            p.stdin.write(bytes(1 << 20))  # the saved bytes, then zeros without end
+    except BrokenPipeError:
+        pass
+    err = p.stderr.read().decode()
+    check(p.wait(timeout=60) == 1 and "more bytes than its header allows" in err,
+          f"--load of a stream longer than its header: {err}")
+    # Refinement that memory cannot hold is refused at once, nothing written.
+    code, _, err = run("--epsilon", "1e-9", "--random", 10, "-o", out)
+    check(code == 1 and "needs at least" in err and not os.path.exists(out), f"--epsilon 1e-9: {code} {err}")
     code, _, err = run("--load", os.path.join(tmp, "missing.hdt"))
     check(code == 1 and "cannot open" in err, f"--load of a missing file: {err}")
     # Standard input: --load - reads the saved bytes.
