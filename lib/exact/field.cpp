@@ -1,5 +1,8 @@
 #include "exact/field.hpp"
 
+#include <mpfr.h>
+
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <map>
@@ -170,7 +173,107 @@ int Field::sign(const FieldElement &a) const {
   if (s != 2) return s;
   s = sign_at<mp_real<40960>>(a);
   if (s != 2) return s;
-  throw std::logic_error("Field::sign: 136000 bits could not decide a non-zero value");
+  // Past the compile-time rungs: doubling precision, up to the precision
+  // that the norm bound proves sufficient (sufficient_bits), where a
+  // non-zero value is always decided.
+  const long enough = sufficient_bits(a);
+  for (long bits = 2 * long(bits_of_digits10(40960));; bits *= 2) {
+    s = sign_at_bits(a, std::min(bits, enough));
+    if (s != 2) return s;
+    if (bits >= enough) throw std::logic_error("Field::sign: the norm bound's precision did not decide (a bug)");
+  }
+}
+
+namespace {
+
+// An MPFR value of a run-time precision, freed on scope exit.
+struct Mpfr {
+  explicit Mpfr(long bits) { mpfr_init2(x, mpfr_prec_t(bits)); }
+  ~Mpfr() { mpfr_clear(x); }
+  Mpfr(const Mpfr &) = delete;
+  Mpfr &operator=(const Mpfr &) = delete;
+  mpfr_t x;
+};
+
+// log2 of sum |c_j| 2^shift over the coefficients, rounded up.
+double log2_magnitude(const Cyclotomic &c, int shift) {
+  double most = -HUGE_VAL;
+  for (const Integer &z : c.coefficients())
+    if (z != 0) most = std::max(most, double(msb(abs(z)) + 1));
+  return most + std::log2(double(c.coefficients().size())) + shift;
+}
+
+}  // namespace
+
+long Field::sufficient_bits(const FieldElement &a) const {
+  // Scaled by 2^-e (evaluate's common exponent), a is y = u' + v' sigma with
+  // integer coefficients over the powers of zeta; sqrt 2 y is an algebraic
+  // integer (sqrt 2 and sqrt 2 sigma are: (sqrt 2 sigma)^2 = 2 cos(pi/2g),
+  // and sqrt 2 lies in Q(zeta_8g)). Its D <= 2 phi(8g) conjugates have
+  // modulus at most sqrt 2 M, M = sum |u'_j| + sum |v'_j| (each power of
+  // zeta maps to a root of unity, sigma to a square root of a cosine), and
+  // their product, the norm, is a non-zero integer: |y| >= (sqrt 2 M)^-(D-1)
+  // / sqrt 2. evaluate's error is at most 2 M (d + 64) 2^-p, so p bits with
+  // 2^-p 4 M (d + 64) below that bound decide the sign.
+  const int e = std::min(a.u.is_zero() ? a.v.exponent() : a.u.exponent(),
+                         a.v.is_zero() ? a.u.exponent() : a.v.exponent());
+  const double lu = a.u.is_zero() ? -HUGE_VAL : log2_magnitude(a.u, a.u.exponent() - e);
+  const double lv = a.v.is_zero() ? -HUGE_VAL : log2_magnitude(a.v, a.v.exponent() - e);
+  const double L = std::max(lu, lv) + 1;  // log2 M, rounded up
+  const double D = 2.0 * base_.degree(), d = base_.degree();
+  return long(std::ceil((D - 1) * (0.5 + L) + L + std::log2(d + 64) + 4));
+}
+
+int Field::sign_at_bits(const FieldElement &a, long bits) const {
+  // evaluate<T> with T of `bits` bits, operation for operation, so that its
+  // error bound holds with the unit 2^-bits.
+  const int e = std::min(a.u.is_zero() ? a.v.exponent() : a.u.exponent(),
+                         a.v.is_zero() ? a.u.exponent() : a.v.exponent());
+  Mpfr two_pi(bits), t(bits), x(bits), value(bits), magnitude(bits), part(bits), part_magnitude(bits), sigma(bits);
+  mpfr_const_pi(two_pi.x, MPFR_RNDN);
+  mpfr_mul_2ui(two_pi.x, two_pi.x, 1, MPFR_RNDN);
+  mpfr_set_zero(value.x, 1);
+  mpfr_set_zero(magnitude.x, 1);
+  for (int k = 0; k < 2; ++k) {
+    const Cyclotomic &c = k == 0 ? a.u : a.v;
+    mpfr_set_zero(part.x, 1);
+    mpfr_set_zero(part_magnitude.x, 1);
+    if (c.is_zero()) continue;
+    const auto &coefficients = c.coefficients();
+    for (std::size_t j = 0; j < coefficients.size(); ++j) {
+      if (coefficients[j] == 0) continue;
+      mpfr_mul_ui(t.x, two_pi.x, (unsigned long)j, MPFR_RNDN);  // cos(two_pi * j / n), as the rungs do
+      mpfr_div_ui(t.x, t.x, (unsigned long)base_.order(), MPFR_RNDN);
+      mpfr_cos(t.x, t.x, MPFR_RNDN);
+      mpfr_set_z(x.x, coefficients[j].backend().data(), MPFR_RNDN);
+      mpfr_mul(t.x, t.x, x.x, MPFR_RNDN);
+      mpfr_add(part.x, part.x, t.x, MPFR_RNDN);
+      mpfr_abs(x.x, x.x, MPFR_RNDN);
+      mpfr_add(part_magnitude.x, part_magnitude.x, x.x, MPFR_RNDN);
+    }
+    mpfr_mul_2si(part.x, part.x, c.exponent() - e, MPFR_RNDN);  // exact
+    mpfr_mul_2si(part_magnitude.x, part_magnitude.x, c.exponent() - e, MPFR_RNDN);
+    if (k == 0) {
+      mpfr_set(value.x, part.x, MPFR_RNDN);
+      mpfr_set(magnitude.x, part_magnitude.x, MPFR_RNDN);
+    } else {
+      mpfr_const_pi(sigma.x, MPFR_RNDN);  // sqrt(cos(pi / 2g))
+      mpfr_div_ui(sigma.x, sigma.x, (unsigned long)(2 * genus_), MPFR_RNDN);
+      mpfr_cos(sigma.x, sigma.x, MPFR_RNDN);
+      mpfr_sqrt(sigma.x, sigma.x, MPFR_RNDN);
+      mpfr_mul(part.x, part.x, sigma.x, MPFR_RNDN);
+      mpfr_add(value.x, value.x, part.x, MPFR_RNDN);
+      mpfr_mul_2ui(part_magnitude.x, part_magnitude.x, 1, MPFR_RNDN);  // sigma counted as 2
+      mpfr_add(magnitude.x, magnitude.x, part_magnitude.x, MPFR_RNDN);
+    }
+  }
+  // bound = magnitude (d + 64) 2^-bits
+  mpfr_mul_ui(magnitude.x, magnitude.x, (unsigned long)(base_.degree() + 64), MPFR_RNDU);
+  mpfr_mul_2si(magnitude.x, magnitude.x, -bits, MPFR_RNDU);
+  if (mpfr_cmp(value.x, magnitude.x) > 0) return 1;
+  mpfr_neg(magnitude.x, magnitude.x, MPFR_RNDN);
+  if (mpfr_cmp(value.x, magnitude.x) < 0) return -1;
+  return 2;
 }
 
 void Field::evaluate_133(const FieldElement &a, mp_real<40> *value, mp_real<40> *bound) const {

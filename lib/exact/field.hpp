@@ -6,10 +6,11 @@
 // as doubles. An element is u + v sigma with u, v in Q(zeta_{8g}); it is zero
 // exactly when u = v = 0 unless sigma itself lies in Q(zeta), a case
 // sign() handles too. The sign of a real element is found by MPFR evaluation
-// at rising precision with a rigorous error bound, which a non-zero value
-// eventually exceeds; the rungs stop at 136063 bits (a sign undecided there
-// throws std::logic_error: HDT_EINTERNAL). Points placed far from O at
-// genus 256 once needed more than the former top of 8503 bits.
+// at rising precision with a rigorous error bound: compile-time rungs up to
+// 136063 bits, then doubling run-time precision up to one that a lower
+// bound on |a| from its norm proves sufficient, so every sign is decided,
+// with no cap. Points placed far from O at genus 256 once needed more than
+// the former top of 8503 bits.
 #pragma once
 
 #include <memory>
@@ -72,6 +73,11 @@ class Field {
   // Sign at one rung, or 2 when the rung cannot decide.
   template <class T>
   int sign_at(const FieldElement &a) const;
+  // The same at a precision chosen at run time (past the rungs).
+  int sign_at_bits(const FieldElement &a, long bits) const;
+  // A precision at which sign_at_bits decides every non-zero a, from a
+  // lower bound on |a| by its norm (field.cpp has the argument).
+  long sufficient_bits(const FieldElement &a) const;
 
   int genus_;
   CyclotomicField base_;

@@ -537,22 +537,23 @@ START_TEST(half_relators_spelled_the_other_way_are_found) {
 }
 END_TEST
 
-// A non-zero element of tiny absolute value needs more precision than the
-// old top rung (8500 bits) to get its sign: cos(2 pi / n) minus its dyadic
-// approximation to about 9,500 bits, both as exact field elements. The sign
-// is that of the residual computed independently with MPFR at 20,000 bits.
-// Before the 34k- and 136k-bit rungs, Field::sign threw here.
-START_TEST(sign_of_a_tiny_nonzero_element) {
+// A non-zero element of tiny absolute value needs more precision than a
+// fixed top rung: cos(2 pi / n) minus its dyadic approximation to `chunks`
+// times 53 bits, both as exact field elements. The sign is that of the
+// residual computed independently with MPFR at 60 (chunks + 20) bits.
+// 180 chunks (9,500 bits) threw before the 34k- and 136k-bit rungs; 3,000
+// (159,000 bits) threw before the run-time precision past them.
+static void check_tiny_residual(int chunks) {
   const exact::Field &F = exact::field_of_genus(2);
   const exact::CyclotomicField &K = F.cyclotomic();
   mpfr_t c, d;
-  mpfr_inits2(20000, c, d, (mpfr_ptr)0);
+  mpfr_inits2(mpfr_prec_t(60 * (chunks + 20)), c, d, (mpfr_ptr)0);  // a chunk takes up to 55 bits
   mpfr_const_pi(c, MPFR_RNDN);
   mpfr_mul_ui(c, c, 2, MPFR_RNDN);
   mpfr_div_ui(c, c, (unsigned long)K.order(), MPFR_RNDN);
-  mpfr_cos(c, c, MPFR_RNDN);  // within 2^-19999 of cos(2 pi / n); the residual stays far above that
+  mpfr_cos(c, c, MPFR_RNDN);  // the residual stays far above its error
   exact::Cyclotomic approximation = K.zero();
-  for (int chunk = 0; chunk < 180; ++chunk) {  // 180 * 53 bits
+  for (int chunk = 0; chunk < chunks; ++chunk) {
     long e = 0;  // c = part 2^e: scaled, so that no chunk underflows a double
     const double part = mpfr_get_d_2exp(&e, c, MPFR_RNDN);
     approximation = K.add(approximation, K.mul_2exp(K.from_double(part), int(e)));
@@ -561,12 +562,17 @@ START_TEST(sign_of_a_tiny_nonzero_element) {
     mpfr_sub(c, c, d, MPFR_RNDN);  // exact: the leading bits cancel
   }
   const int expected = mpfr_sgn(c);
-  ck_assert_msg(expected != 0 && mpfr_get_exp(c) < -9000, "residual exponent %ld", (long)mpfr_get_exp(c));
+  ck_assert_msg(expected != 0 && mpfr_get_exp(c) < -50 * chunks, "residual exponent %ld", (long)mpfr_get_exp(c));
   const exact::FieldElement residual = F.from_cyclotomic(K.sub(K.cos_2pi(1), approximation));
   ck_assert_int_eq(F.sign(residual), expected);
   ck_assert_int_eq(F.sign(F.neg(residual)), -expected);
   mpfr_clears(c, d, (mpfr_ptr)0);
 }
+
+START_TEST(sign_of_a_tiny_nonzero_element) { check_tiny_residual(180); }
+END_TEST
+
+START_TEST(sign_past_every_fixed_rung) { check_tiny_residual(3000); }
 END_TEST
 
 int main(void) {
@@ -590,5 +596,6 @@ int main(void) {
     tcase_add_test(tc, translation_matrices_match_direct_products);
     tcase_add_test(tc, half_relators_spelled_the_other_way_are_found);
     tcase_add_test(tc, sign_of_a_tiny_nonzero_element);
+    tcase_add_test(tc, sign_past_every_fixed_rung);
   });
 }
