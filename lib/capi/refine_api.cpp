@@ -15,13 +15,13 @@ using hdt::capi::of;
 
 namespace {
 
-hdt_status run(hdt_triangulation *t, double max_radius, double max_ratio, size_t max_points, size_t *added,
-               size_t *unmet) {
-  hdt::triangulation::Triangulation &tri = of(t);
+hdt_status run(const char *function, hdt_triangulation *t, double max_radius, double max_ratio, size_t max_points,
+               size_t *added, size_t *unmet) {
+  const hdt::capi::LongCall call(t, function);
   if (!(max_radius > 0)) throw ApiError(HDT_EINVAL, "the radius bound must be > 0 (and not NaN)");
   if (!(max_ratio >= 1)) throw ApiError(HDT_EINVAL, "max_ratio must be >= 1 (and not NaN)");
   const hdt::triangulation::Refined r =
-      hdt::triangulation::refine(tri, {max_radius, max_ratio}, max_points, &t->progress);
+      hdt::triangulation::refine(call.tri(), {max_radius, max_ratio}, max_points, call.progress());
   if (added) *added = r.added;
   if (unmet) *unmet = r.unmet;
   return HDT_OK;
@@ -33,14 +33,14 @@ extern "C" {
 
 HDT_API hdt_status hdt_refine(hdt_triangulation *t, double max_radius, double max_ratio, size_t max_points,
                               size_t *added, size_t *unmet) HDT_NOEXCEPT {
-  return guarded("hdt_refine", [&] { return run(t, max_radius, max_ratio, max_points, added, unmet); });
+  return guarded("hdt_refine", [&] { return run("hdt_refine", t, max_radius, max_ratio, max_points, added, unmet); });
 }
 
 HDT_API hdt_status hdt_epsilon_net(hdt_triangulation *t, double epsilon, size_t max_points, size_t *added,
                                    size_t *unmet) HDT_NOEXCEPT {
   return guarded("hdt_epsilon_net", [&] {
     if (!(epsilon > 0) || std::isinf(epsilon)) throw ApiError(HDT_EINVAL, "epsilon must be finite and > 0");
-    return run(t, epsilon, INFINITY, max_points, added, unmet);
+    return run("hdt_epsilon_net", t, epsilon, INFINITY, max_points, added, unmet);
   });
 }
 
