@@ -234,7 +234,10 @@ HDT_API hdt_status hdt_neighbour_word(int genus, size_t id, int32_t *out,
    exception: memory running out (HDT_ENOMEM) part way through
    hdt_insert_many or hdt_remove_dummies, which then keep the work done so
    far, in a valid triangulation. One handle is used by one thread at a
-   time; distinct handles are independent. */
+   time; distinct handles are independent. While hdt_insert_many,
+   hdt_refine or hdt_epsilon_net runs, its progress function may not use
+   the handle: such calls fail with HDT_EINVAL, nothing changed (see
+   "Progress and cancellation" below). */
 typedef struct hdt_triangulation hdt_triangulation; /* opaque */
 
 /* "No vertex": in hdt_insert_many's output, a point not inserted. */
@@ -244,7 +247,10 @@ typedef struct hdt_triangulation hdt_triangulation; /* opaque */
    failure. HDT_EINVAL for genus < 2 or out NULL, HDT_ENOTSUP above
    HDT_CREATE_GENUS_MAX. */
 HDT_API hdt_status hdt_create(hdt_triangulation **out, int genus) HDT_NOEXCEPT;
-/* Frees the triangulation; NULL is a no-op. */
+/* Frees the triangulation; NULL is a no-op. Called from the progress
+   function of a call running on t, it only marks t: the call stops at that
+   report, as if the function had returned non-zero, and frees t as it
+   returns. */
 HDT_API void hdt_destroy(hdt_triangulation *t) HDT_NOEXCEPT;
 /* The genus, or 0 when t is NULL. */
 HDT_API int hdt_genus(const hdt_triangulation *t) HDT_NOEXCEPT;
@@ -616,7 +622,19 @@ HDT_API hdt_status hdt_quality(const hdt_triangulation *t, double *min_angle, do
    points added, total 0 as the count is not known in advance). done only
    grows; a call that runs to the end reports last with done == total (then
    the return value is ignored). A non-zero return stops the call. It runs
-   on the calling thread inside the call: it must not use the same handle. */
+   on the calling thread inside the call, between two points, the
+   triangulation valid.
+
+   The handle is busy meanwhile. A call on it from the function (re-entry)
+   is refused: HDT_EINVAL, nothing changed, hdt_last_error_message "the
+   triangulation is busy in hdt_insert_many" (the running call's name);
+   hdt_set_progress included, so the running call keeps the function it
+   began with. Allowed, as they have no status to refuse with and read
+   only counts: hdt_genus, hdt_vertex_count, hdt_dummy_count,
+   hdt_vertex_id_bound, hdt_face_count, hdt_edge_count and
+   hdt_vertex_is_dummy. hdt_destroy(t) is deferred: the running call stops
+   at that report and frees t as it returns (its outputs are still
+   written); use t no more. Other handles are not busy. */
 typedef int (*hdt_progress_fn)(void *user, size_t done, size_t total);
 
 /* Has t's next hdt_insert_many, hdt_refine and hdt_epsilon_net calls report
@@ -628,7 +646,9 @@ typedef int (*hdt_progress_fn)(void *user, size_t done, size_t total);
    valid Delaunay triangulation (the same contract as HDT_ENOMEM part way):
    hdt_insert_many's vertices[i] is HDT_NO_VERTEX for each point i not
    inserted; hdt_refine's *unmet > 0 tells that bounds are still broken.
-   HDT_EINVAL, nothing changed, for t NULL or interval_seconds NaN or < 0. */
+   HDT_EINVAL, nothing changed, for t NULL or interval_seconds NaN or < 0,
+   and from a progress function of t's (t is busy: the running call goes on
+   with the function it began with). */
 HDT_API hdt_status hdt_set_progress(hdt_triangulation *t, hdt_progress_fn fn, void *user,
                                     double interval_seconds) HDT_NOEXCEPT;
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <utility>
 
 #include "capi/guard.hpp"
@@ -42,22 +43,76 @@ struct hdt_triangulation {
   uint64_t generation = 0;
   mutable uint64_t rows_generation = kNever;   // the rows (translations; no matrices)
   mutable uint64_t cells_generation = kNever;  // and the cells' matrices and centres (every cache entry holds)
+  // The long call running on this handle, which runs the caller's progress
+  // function (hdt_insert_many, hdt_refine, hdt_epsilon_net; nullptr when
+  // none): a call on the handle from that function is re-entry and is
+  // refused (hdt::capi::of), as the core is in the middle of its work.
+  const char *busy = nullptr;
+  // hdt_destroy from inside that call: the call frees the handle as it ends.
+  bool destroy_pending = false;
 };
 
 namespace hdt::capi {
+
+// A handle a call may use: not NULL, and no long call running on it (the
+// caller's progress function calling back into its own handle). Throws
+// ApiError (HDT_EINVAL) otherwise.
+inline void check_usable(const hdt_triangulation *t) {
+  if (!t) throw ApiError(HDT_EINVAL, "the triangulation handle is NULL");
+  if (t->busy) throw ApiError(HDT_EINVAL, std::string("the triangulation is busy in ") + t->busy);
+}
 
 // The triangulation behind a handle: const for a const handle (queries fill
 // only the core's documented caches).
 // A non-const handle may be changed: what the handle derived from the
 // faces is stale from now on (the generation moves on).
 inline triangulation::Triangulation &of(hdt_triangulation *t) {
-  if (!t) throw ApiError(HDT_EINVAL, "the triangulation handle is NULL");
+  check_usable(t);
   ++t->generation;
   return t->tri;
 }
 inline const triangulation::Triangulation &of(const hdt_triangulation *t) {
-  if (!t) throw ApiError(HDT_EINVAL, "the triangulation handle is NULL");
+  check_usable(t);
   return t->tri;
 }
+
+// A long call that runs the caller's progress function (hdt_insert_many,
+// hdt_refine, hdt_epsilon_net), held for the call's duration: it marks the
+// handle busy, and reads the progress function once, so that
+// hdt_set_progress (refused meanwhile anyway) never changes a running call.
+// When the progress function destroys the handle (hdt_destroy defers), the
+// call stops at that report and the destructor frees the handle: the
+// guard must be the last thing in the call to touch it.
+class LongCall {
+ public:
+  LongCall(hdt_triangulation *t, const char *function) : tri_(of(t)), t_(t), caller_(t->progress) {
+    if (caller_.report) progress_ = {&report_unless_destroyed, this, caller_.interval};
+    t->busy = function;
+  }
+  LongCall(const LongCall &) = delete;
+  LongCall &operator=(const LongCall &) = delete;
+  ~LongCall() {
+    t_->busy = nullptr;
+    if (t_->destroy_pending) delete t_;
+  }
+
+  triangulation::Triangulation &tri() const { return tri_; }
+  // For the core: the caller's function, read once; none when unset.
+  const triangulation::Progress *progress() const { return &progress_; }
+
+ private:
+  // The caller's report, and a stop once the caller destroyed the handle:
+  // nothing of it can be read any more, so the rest of the work is wasted.
+  static int report_unless_destroyed(void *self, std::size_t done, std::size_t total) {
+    const LongCall &call = *static_cast<const LongCall *>(self);
+    const int stop = call.caller_.report(call.caller_.user, done, total);
+    return stop != 0 || call.t_->destroy_pending;
+  }
+
+  triangulation::Triangulation &tri_;
+  hdt_triangulation *t_;
+  const triangulation::Progress caller_;  // the handle's progress function as the call began
+  triangulation::Progress progress_;      // what the core calls: none, or the function above
+};
 
 }  // namespace hdt::capi

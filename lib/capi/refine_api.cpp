@@ -58,12 +58,13 @@ hdt_status run(const char *function, hdt_triangulation *t, double max_radius, do
                size_t max_points, size_t *added, size_t *unmet) {
   if (added) *added = 0;
   if (unmet) *unmet = 0;
-  hdt::triangulation::Triangulation &tri = of(t);
+  const hdt::capi::LongCall call(t, function);
+  const hdt::triangulation::Triangulation &tri = call.tri();
   if (!(max_radius > 0)) throw ApiError(HDT_EINVAL, "the radius bound must be > 0 (and not NaN)");
   if (!(max_ratio >= 1)) throw ApiError(HDT_EINVAL, "max_ratio must be >= 1 (and not NaN)");
   check_room(std::isinf(max_ratio) ? "an epsilon-net" : "a refinement", tri, max_radius, max_points);
   const hdt::triangulation::Refined r =
-      hdt::triangulation::refine(tri, {max_radius, max_ratio}, max_points, &t->progress);
+      hdt::triangulation::refine(call.tri(), {max_radius, max_ratio}, max_points, call.progress());
   if (added) *added = r.added;
   if (unmet) *unmet = r.unmet;
   if (r.out_of_memory)

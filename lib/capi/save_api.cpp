@@ -14,7 +14,7 @@ extern "C" {
 
 HDT_API hdt_status hdt_save(const hdt_triangulation *t, void *bytes, size_t capacity, size_t *size) HDT_NOEXCEPT {
   return guarded("hdt_save", [&] {
-    if (!t) throw ApiError(HDT_EINVAL, "the triangulation handle is NULL");
+    hdt::capi::check_usable(t);
     if (!size) throw ApiError(HDT_EINVAL, "size must not be NULL");
     if (capacity > 0 && !bytes) throw ApiError(HDT_EINVAL, "bytes is NULL but capacity is " + std::to_string(capacity));
     const std::size_t n = hdt::capi::saved_size(t->tri);

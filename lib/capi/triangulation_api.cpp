@@ -36,7 +36,15 @@ HDT_API hdt_status hdt_create(hdt_triangulation **out, int genus) HDT_NOEXCEPT {
   });
 }
 
-HDT_API void hdt_destroy(hdt_triangulation *t) HDT_NOEXCEPT { delete t; }
+HDT_API void hdt_destroy(hdt_triangulation *t) HDT_NOEXCEPT {
+  // From the progress function of a call running on t (re-entry): that
+  // call frees t as it returns (hdt::capi::LongCall).
+  if (t && t->busy) {
+    t->destroy_pending = true;
+    return;
+  }
+  delete t;
+}
 
 HDT_API int hdt_genus(const hdt_triangulation *t) HDT_NOEXCEPT { return t ? t->tri.genus() : 0; }
 
@@ -53,9 +61,9 @@ HDT_API hdt_status hdt_insert(hdt_triangulation *t, double x, double y, uint32_t
 
 HDT_API hdt_status hdt_insert_many(hdt_triangulation *t, const double *xy, size_t n, uint32_t *vertices) HDT_NOEXCEPT {
   return guarded("hdt_insert_many", [&] {
-    Triangulation &tri = of(t);
+    const hdt::capi::LongCall call(t, "hdt_insert_many");
     if (n > 0 && !xy) throw ApiError(HDT_EINVAL, "xy is NULL but n is " + std::to_string(n));
-    tri.insert_many(xy, n, vertices, &t->progress);
+    call.tri().insert_many(xy, n, vertices, call.progress());
     return HDT_OK;
   });
 }

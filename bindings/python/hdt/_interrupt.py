@@ -7,6 +7,11 @@ that Python gets to run the handler), returns the flag and the library stops
 with a valid triangulation holding the work done so far. KeyboardInterrupt is
 raised once the call has returned. Off the main thread, where Python cannot
 install a signal handler, the call runs as before (not interruptible).
+
+Any signal handler may run inside the call that way, and use the
+triangulation while the library is in the middle of its work: the
+Triangulation marks itself busy around these calls (Triangulation._calling),
+refuses every use from inside them and defers close() to their end.
 """
 
 import contextlib
@@ -21,8 +26,9 @@ INTERVAL = 0.05
 
 
 @contextlib.contextmanager
-def interruptible(handle):
-    """Makes the library calls on handle inside the block stop on SIGINT."""
+def interruptible(handle, stop=None):
+    """Makes the library calls on handle inside the block stop on SIGINT,
+    and when stop() (if given) becomes true."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return
@@ -32,7 +38,7 @@ def interruptible(handle):
         interrupted.append(signum)
 
     def ask(user, done, total):
-        return 1 if interrupted else 0
+        return 1 if interrupted or (stop is not None and stop()) else 0
 
     callback = progress_fn(ask)  # alive until the call has returned
     previous = signal.signal(signal.SIGINT, on_sigint)

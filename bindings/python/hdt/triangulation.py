@@ -7,6 +7,14 @@ raises :class:`hdt.HandleClosed` (never a crash). Calls on one object are
 serialised by a lock, so sharing it between threads is safe (but not
 parallel).
 
+A signal handler can run inside :meth:`Triangulation.insert_many`,
+:meth:`~Triangulation.refine` and :meth:`~Triangulation.epsilon_net` (they
+run Python code during the library call so that Ctrl-C works): the object is
+busy then, and every method called from the handler raises
+:class:`hdt.InvalidArgument` ("busy"), changing nothing, except close()
+(and leaving a ``with`` block), which stops the call early and closes the
+triangulation as it returns, and the properties genus, closed and repr().
+
 Vertex ids are ints, dense and stable: the dummy vertices of a new
 triangulation are 0..d-1, each new distinct point gets the next id, and a
 removed id is never reused. A vertex keeps its point; :meth:`vertex_point`
@@ -42,6 +50,7 @@ Arrays: with NumPy installed, :meth:`insert_many`, :meth:`vertices`,
 """
 
 import collections
+import contextlib
 import ctypes
 import math
 import numbers
@@ -193,6 +202,8 @@ class Triangulation:
     """
 
     _handle = None  # an hdt_triangulation * as ctypes.c_void_p; None once closed
+    _busy = None  # the method whose library call is running (a signal handler may run inside it)
+    _close_pending = False  # close() from inside that call: done as the call returns
 
     def __init__(self, genus):
         """A new triangulation of M_genus holding the dummy points of its genus."""
@@ -212,10 +223,34 @@ class Triangulation:
 
     def close(self):
         """Frees the C triangulation now. Closing again does nothing; any
-        other use afterwards raises :class:`hdt.HandleClosed`."""
+        other use afterwards raises :class:`hdt.HandleClosed`. From a
+        signal handler inside a long call (insert_many, refine,
+        epsilon_net), the call stops early and the triangulation is closed
+        as it returns."""
         with self._lock:
+            if self._busy is not None:
+                # The library is in the middle of its work on the handle.
+                self._close_pending = True
+                return
             self._handle = None
             self._finalizer()
+
+    @contextlib.contextmanager
+    def _calling(self, what):
+        """The handle for a library call that runs Python code inside it
+        (interruptible), the object busy meanwhile (call with the lock
+        held): a signal handler running there cannot use or free the
+        handle under the library's feet."""
+        handle = self._live(what)
+        self._busy = what
+        try:
+            with interruptible(handle, lambda: self._close_pending):
+                yield handle
+        finally:
+            self._busy = None
+            if self._close_pending:
+                self._close_pending = False
+                self.close()
 
     @property
     def closed(self):
@@ -297,10 +332,14 @@ class Triangulation:
             return cls.from_bytes(source.read())
 
     def _live(self, what):
-        """The handle; HandleClosed when closed (call with the lock held)."""
+        """The handle; HandleClosed when closed, InvalidArgument when busy
+        (from a signal handler inside a long call; call with the lock held)."""
         handle = self._handle
         if handle is None:
             raise HandleClosed(f"{what}: the triangulation is closed")
+        if self._busy is not None:
+            raise InvalidArgument(f"{what}: the triangulation is busy in {self._busy} (a signal handler "
+                                  "running inside that call cannot use it; only close() is deferred to its end)")
         return handle
 
     def __repr__(self):
@@ -390,10 +429,8 @@ class Triangulation:
         """
         xy, count, owner = _arrays.point_buffer(points)
         ids_pointer, ids = _arrays.output(ctypes.c_uint32, count)
-        with self._lock:
-            handle = self._live("insert_many")
-            with interruptible(handle):
-                check(lib.hdt_insert_many(handle, xy, count, ids_pointer))
+        with self._lock, self._calling("insert_many") as handle:
+            check(lib.hdt_insert_many(handle, xy, count, ids_pointer))
         del owner  # the points stay alive until here
         return _arrays.result(ids)
 
@@ -452,10 +489,8 @@ class Triangulation:
                 raise InvalidArgument(f"{what}: max_points must be >= 0")
             cap = min(int(max_points), ctypes.c_size_t(-1).value)
         added, unmet = ctypes.c_size_t(), ctypes.c_size_t()
-        with self._lock:
-            handle = self._live(what)
-            with interruptible(handle):
-                check(call(handle, cap, ctypes.byref(added), ctypes.byref(unmet)))
+        with self._lock, self._calling(what) as handle:
+            check(call(handle, cap, ctypes.byref(added), ctypes.byref(unmet)))
         return Refined(added.value, unmet.value)
 
     def quality(self):

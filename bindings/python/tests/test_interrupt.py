@@ -2,7 +2,10 @@
 begins (not while Python converts the points), sends SIGINT to this process
 while insert_many or epsilon_net runs; the call must stop part way, raise
 KeyboardInterrupt, keep the points done in a valid triangulation, and put
-the previous SIGINT handler back."""
+the previous SIGINT handler back. And a signal handler that runs inside such
+a call (as every handler does, the call running Python code) and uses the
+triangulation: close() is deferred to the call's end, anything else raises,
+never a crash."""
 
 import contextlib
 import os
@@ -35,8 +38,8 @@ def sigint_during_call(monkeypatch):
     original = triangulation.interruptible
 
     @contextlib.contextmanager
-    def with_timer(handle):
-        with original(handle):
+    def with_timer(handle, *args):
+        with original(handle, *args):
             timer = threading.Timer(0.05, os.kill, (os.getpid(), signal.SIGINT))
             timers.append(timer)
             timer.start()
@@ -93,3 +96,73 @@ def test_off_the_main_thread():
     thread.start()
     thread.join()
     assert len(out[0]) == 100
+
+
+@pytest.fixture
+def handler_during_call(monkeypatch):
+    """Runs a function from a SIGALRM handler 0.05 s into the next
+    interruptible library call (inside it: the handler runs when the
+    progress callback runs Python code); yields the list of its results
+    (the value, or the exception it raised)."""
+    from hdt import triangulation
+
+    results, action = [], []
+    original = triangulation.interruptible
+
+    def on_alarm(signum, frame):
+        try:
+            results.append(action[0]())
+        except Exception as error:  # noqa: BLE001 - the test looks at it
+            results.append(error)
+
+    @contextlib.contextmanager
+    def with_alarm(handle, *args):
+        with original(handle, *args):
+            signal.setitimer(signal.ITIMER_REAL, 0.05)
+            try:
+                yield
+            finally:
+                signal.setitimer(signal.ITIMER_REAL, 0)
+
+    previous = signal.signal(signal.SIGALRM, on_alarm)
+    monkeypatch.setattr(triangulation, "interruptible", with_alarm)
+    yield action, results
+    signal.signal(signal.SIGALRM, previous)
+
+
+@pytest.mark.parametrize("call", ["insert_many", "epsilon_net"])
+def test_close_from_a_handler_inside_the_call(handler_during_call, call):
+    action, results = handler_during_call
+    t = hdt.Triangulation(2)
+    action.append(t.close)
+    if call == "insert_many":
+        ids = t.insert_many(disk_points(400_000, 4))
+        assert len(ids) == 400_000
+    else:
+        t.epsilon_net(0.003)  # seconds, unless the close stops it
+    assert results == [None], results
+    assert t.closed
+    with pytest.raises(hdt.HandleClosed):
+        t.vertex_count
+    t.close()  # again: nothing
+
+
+def test_changes_from_a_handler_inside_the_call_raise(handler_during_call):
+    action, results = handler_during_call
+    t = hdt.Triangulation(2)
+    first_new = t.vertex_id_bound  # the first id insert_many gives
+    action.append(lambda: t.remove(first_new))
+    points = disk_points(150_000, 5)
+    ids = t.insert_many(points)
+    assert len(results) == 1, results
+    error = results[0]
+    assert isinstance(error, hdt.InvalidArgument), error
+    assert "busy in insert_many" in str(error)
+    # Nothing changed: every id returned is a live vertex at its point.
+    assert len(t) == t.dummy_count + len(points)
+    for i in range(0, len(points), 997):
+        assert t.vertex_point(ids[i]) == pytest.approx(points[i], abs=0)
+    assert t.vertex_point(first_new) is not None
+    t.validate()
+    t.remove(first_new)  # idle again: allowed
+    assert len(t) == t.dummy_count + len(points) - 1
