@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Every code block of README.md, run from the build tree.
+"""Every code block of README.md (and docs/*.md), run from the build tree.
 
     check_readme_blocks.py --source-root DIR --build-root DIR [--cc "cc ..."] [--python PYTHON]
 
-README.md's fenced ```sh, ```c and ```python blocks are run in a temporary
+The fenced ```sh, ```c and ```python blocks of README.md and docs/*.md (not
+docs/benchmarks.md, which bench/compare.py writes) are run in a temporary
 copy of the repository root (its entries linked, `build` linked to the build
 root, bindings/python copied so that pip writes nothing into the tree),
 with HOME in the temporary directory and no HDT_LIBRARY, LD_LIBRARY_PATH,
@@ -16,7 +17,8 @@ needs, as a newcomer's shell after `bash .ci/demo` has nothing.
   pkg-config file (build/meson-uninstalled/hdt-uninstalled.pc), with an
   rpath to build/lib, and run.
 - ```python: run by --python with HDT_LIBRARY (the build's libhdt.so.0) and
-  PYTHONPATH=bindings/python, as README.md says for a build tree.
+  PYTHONPATH=bindings/python, as README.md says for a build tree. A block
+  that imports a module this python lacks (SciPy, say) is skipped, saying so.
 
 A block must exit with status 0 within 60 s. When the next fenced block is a
 ```text block, with prose only (no heading) between them, it is the
@@ -33,11 +35,13 @@ allowed between):
                                          $PWD is the repository copy)
 
 Any other block of those languages runs, so a new block that fails, fails
-the test; one that would change the machine (sudo, apt, ldconfig, dpkg,
-`meson install` without --destdir, .ci/run, .ci/demo, .ci/package,
+the test; one that would change the machine or the build under test (sudo,
+apt, ldconfig, dpkg, ninja, meson setup/configure/compile, `meson install`
+without --destdir, .ci/run, .ci/demo, .ci/build, .ci/package,
 .ci/install-deps) fails unrun until it is marked skip. Standard library only.
 """
 import argparse
+import glob
 import os
 import re
 import shlex
@@ -47,9 +51,14 @@ import sys
 import tempfile
 
 RUN = ("sh", "c", "python")
+# The files whose blocks run, README.md first (its first ```c block is prog.c).
+FILES = ["README.md", "docs/*.md"]
+NOT_RUN = ["docs/benchmarks.md"]  # written by bench/compare.py, which would drop the markers
 # What a block must not do on the machine that runs the tests (as root in
-# CI): such a block fails unrun until it is marked skip.
-UNSAFE = re.compile(r"\b(sudo|apt|apt-get|ldconfig|dpkg)\b|\bmeson install\b(?!.*--destdir)|\.ci/(run|demo|package|install-deps)\b")
+# CI), nor to the build under test: such a block fails unrun until it is
+# marked skip.
+UNSAFE = re.compile(r"\b(sudo|apt|apt-get|ldconfig|dpkg|ninja)\b|\bmeson (setup|configure|compile)\b"
+                    r"|\bmeson install\b(?!.*--destdir)|\.ci/(run|demo|build|package|install-deps)\b")
 MARKER = re.compile(r"<!--\s*doc-test:\s*(skip|env)\b(.*?)-->\s*$")
 TIMEOUT = 60
 
@@ -149,6 +158,19 @@ def env_exports(rest):
     return "".join('export %s="%s"\n' % tuple(word.split("=", 1)) for word in words)
 
 
+def missing_module(code, python):
+    """A module the block imports that python cannot import, or None."""
+    names = []
+    for line in code:
+        m = re.match(r"(?:from|import)\s+([A-Za-z_]\w*)", line)
+        if m and m.group(1) not in names and m.group(1) != "hdt":
+            names.append(m.group(1))
+    for name in names:
+        if subprocess.run([python, "-c", f"import {name}"], capture_output=True).returncode != 0:
+            return name
+    return None
+
+
 def run_block(language, code, exports, tree, env, args):
     """(exit status, output, the command shown on failure)."""
     text = "\n".join(code) + "\n"
@@ -191,54 +213,66 @@ def main():
     args = parser.parse_args()
     source_root = os.path.abspath(args.source_root)
     build_root = os.path.abspath(args.build_root)
-    readme = os.path.join(source_root, "README.md")
+    files = []
+    for pattern in FILES:
+        for path in sorted(glob.glob(os.path.join(source_root, pattern))):
+            name = os.path.relpath(path, source_root)
+            if name not in NOT_RUN and name not in files:
+                files.append(name)
 
-    found = blocks(readme)
     failures, ran, skipped = [], 0, 0
     with tempfile.TemporaryDirectory() as tmp:
         tree = make_tree(source_root, build_root, tmp)
         env = clean_environment(tmp)
-        first_c = next((code for _, language, code, *_ in found if language == "c"), None)
+        readme_blocks = blocks(os.path.join(source_root, "README.md"))
+        first_c = next((code for _, language, code, *_ in readme_blocks if language == "c"), None)
         if first_c is not None:
             with open(os.path.join(tree, "prog.c"), "w") as f:
                 f.write("\n".join(first_c) + "\n")
-        for index, (line, language, code, marker, end, _) in enumerate(found):
-            if language not in RUN:
-                continue
-            where = f"README.md:{line}: the ```{language} block"
-            exports = ""
-            if marker and marker[0] == "skip":
-                print(f"SKIP {where}: {marker[1] or '(no reason given)'}")
-                skipped += 1
-                continue
-            unsafe = UNSAFE.search("\n".join(code)) if language == "sh" else None
-            if unsafe:
-                failures.append(f"{where}: not run, it would run `{unsafe.group(0)}` on this machine: "
-                                "mark it <!-- doc-test: skip (REASON) -->")
-                print(f"FAIL {failures[-1]}")
-                continue
-            if marker and marker[0] == "env":
-                try:
-                    exports = env_exports(marker[1])
-                except ValueError as e:
-                    failures.append(f"{where}: bad doc-test env marker: {e}")
+        for name in files:
+            found = blocks(os.path.join(source_root, name))
+            for index, (line, language, code, marker, end, _) in enumerate(found):
+                if language not in RUN:
+                    continue
+                where = f"{name}:{line}: the ```{language} block"
+                exports = ""
+                if marker and marker[0] == "skip":
+                    print(f"SKIP {where}: {marker[1] or '(no reason given)'}")
+                    skipped += 1
+                    continue
+                unsafe = UNSAFE.search("\n".join(code)) if language == "sh" else None
+                if unsafe:
+                    failures.append(f"{where}: not run, it would run `{unsafe.group(0)}` on this machine: "
+                                    "mark it <!-- doc-test: skip (REASON) -->")
                     print(f"FAIL {failures[-1]}")
                     continue
-            status, output, shown = run_block(language, code, exports, tree, env, args)
-            ran += 1
-            expected = expected_output(found, index)
-            if status != 0:
-                failures.append(f"{where}: exits with status {status} ({shown}):\n{output.rstrip()}")
-            elif expected is not None and not matches(expected, output):
-                failures.append(f"{where}: prints\n{output.rstrip()}\n"
-                                f"not the README's ```text block at line {found[index + 1][0]}:\n"
-                                + "\n".join(expected).rstrip())
-            else:
-                checked = f", output as at line {found[index + 1][0]}" if expected is not None else ""
-                print(f"ok   {where}{checked}" + (f" (with {marker[1]})" if marker else ""))
-                continue
-            print(f"FAIL {failures[-1]}")
-    print(f"{ran} blocks run, {skipped} skipped (marked), {len(failures)} failed")
+                if marker and marker[0] == "env":
+                    try:
+                        exports = env_exports(marker[1])
+                    except ValueError as e:
+                        failures.append(f"{where}: bad doc-test env marker: {e}")
+                        print(f"FAIL {failures[-1]}")
+                        continue
+                missing = missing_module(code, args.python) if language == "python" else None
+                if missing:
+                    print(f"SKIP {where}: {args.python} has no module {missing}")
+                    skipped += 1
+                    continue
+                status, output, shown = run_block(language, code, exports, tree, env, args)
+                ran += 1
+                expected = expected_output(found, index)
+                if status != 0:
+                    failures.append(f"{where}: exits with status {status} ({shown}):\n{output.rstrip()}")
+                elif expected is not None and not matches(expected, output):
+                    failures.append(f"{where}: prints\n{output.rstrip()}\n"
+                                    f"not the ```text block at line {found[index + 1][0]}:\n"
+                                    + "\n".join(expected).rstrip())
+                else:
+                    checked = f", output as at line {found[index + 1][0]}" if expected is not None else ""
+                    print(f"ok   {where}{checked}" + (f" (with {marker[1]})" if marker else ""))
+                    continue
+                print(f"FAIL {failures[-1]}")
+    print(f"{ran} blocks run, {skipped} skipped, {len(failures)} failed ({', '.join(files)})")
     return 1 if failures else 0
 
 
