@@ -140,9 +140,10 @@ to the right face's centre placed beside it."""
 #: :meth:`Triangulation.refine` and :meth:`Triangulation.epsilon_net`.
 Refined = collections.namedtuple("Refined", "added unmet")
 Refined.__doc__ = """What a refinement did: added, the points it inserted; unmet, the
-faces still breaking a bound (0 unless max_points stopped it)."""
+faces still breaking a bound (0 unless max_points stopped it or faces next to
+near-duplicate points were left, see Triangulation.refine)."""
 Refined.added.__doc__ = "The number of points inserted."
-Refined.unmet.__doc__ = "The faces still breaking a bound: 0 when the refinement completed."
+Refined.unmet.__doc__ = "The faces still breaking a bound: 0 when the refinement completed on points no closer than about 1e-9."
 
 #: :meth:`Triangulation.quality`.
 Quality = collections.namedtuple("Quality", "min_angle max_ratio max_radius min_edge")
@@ -461,11 +462,17 @@ class Triangulation:
         faces breaking a bound, largest first, until every face has
         hyperbolic circumradius <= max_radius and circumradius / shortest
         edge <= max_ratio (>= 1; inf: no bound), or max_points points were
-        added (None: no cap). Returns a :class:`Refined` (added, unmet);
-        unmet > 0 only when the cap stopped it, the triangulation valid.
+        added (None, the default: no cap; the work is bounded by memory,
+        below). Returns a :class:`Refined` (added, unmet); unmet > 0 when
+        the cap stopped it, or for the few faces next to points closer than
+        about 1e-9 (near-duplicates), which a double Steiner point cannot
+        refine and which are left; the triangulation is valid either way.
         :class:`hdt.InvalidArgument`, nothing changed, for a bound that is
-        NaN, max_radius <= 0 or max_ratio < 1. docs/refinement.md of the
-        source tree proves that it terminates."""
+        NaN, max_radius <= 0 or max_ratio < 1. MemoryError, nothing
+        changed, at once when the vertices that max_radius certainly needs
+        (disks of that radius cover M_g; up to max_points) do not fit in
+        this process's memory; later MemoryError keeps the points added.
+        docs/refinement.md of the source tree proves that it terminates."""
         return self._refine("refine", lambda h, cap, a, u: lib.hdt_refine(
             h, c_coordinate(max_radius, "max_radius"), c_coordinate(max_ratio, "max_ratio"), cap, a, u), max_points)
 
@@ -475,7 +482,9 @@ class Triangulation:
         from every vertex (the whole set is an epsilon-net when the vertices
         before were epsilon apart: on a new triangulation, for epsilon up to
         the dummies' spacing, 0.77 at genus 2). Returns a :class:`Refined`;
-        :meth:`quality` checks the result."""
+        :meth:`quality` checks the result. max_points and MemoryError as
+        :meth:`refine`: an epsilon too small for memory (1e-4 on M_2 needs
+        more than 4e8 vertices) is refused at once."""
         return self._refine("epsilon_net", lambda h, cap, a, u: lib.hdt_epsilon_net(
             h, c_coordinate(epsilon, "epsilon"), cap, a, u), max_points)
 

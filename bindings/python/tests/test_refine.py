@@ -90,3 +90,33 @@ def test_bad_arguments_change_nothing():
         with pytest.raises(TypeError):
             t.refine("0.2")
         assert t.to_bytes() == before
+
+
+@pytest.mark.parametrize("second", [math.nextafter(0.1, 1), 0.1 + 2 ** -52])
+def test_near_duplicates_refine_without_error(second):
+    """Two points an ulp or two apart: refinement returns, the few faces next
+    to the pair (which double cannot refine) counted in unmet, the faces
+    away from it meeting the bound; it raised InternalError with the bytes
+    changed."""
+    with hdt.Triangulation(2) as t:
+        t.insert_many([(0.3, 0.1), (0.3, second)])
+        t.remove_dummies()
+        added, unmet = t.refine(max_ratio=2.0)
+        t.validate()
+        assert added > 0 and 1 <= unmet <= 8
+        # Python floats resolve the shapes of faces away from the pair only
+        # (test_refine.c checks them all in MPFR).
+        far = [f for f in faces_of(t) if min(math.hypot(x - 0.3, y - 0.1) for x, y in f) > 1e-3]
+        assert len(far) >= 100
+        assert all(shape(f)[0] <= 2.0 * shape(f)[1] * (1 + 1e-6) for f in far)
+
+
+def test_work_that_cannot_fit_is_refused_at_once():
+    with hdt.Triangulation(2) as t:
+        before = t.to_bytes()
+        with pytest.raises(MemoryError, match="vertices"):
+            t.epsilon_net(1e-4)
+        with pytest.raises(hdt.OutOfMemory):
+            t.refine(1e-6, 2.0)
+        assert t.to_bytes() == before
+        assert t.epsilon_net(1e-4, max_points=100) == (100, t.refine(1e-4, max_points=0).unmet)
