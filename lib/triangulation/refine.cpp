@@ -101,10 +101,14 @@ double vertices_needed(int genus, double max_radius) {
 double bytes_needed(double vertices) { return vertices * (sizeof(Vertex) + 1 + 2 * sizeof(Face)); }
 
 bool resolvable(const Circle &c) {
-  // The Euclidean radius of the hyperbolic circle of centre c and radius R:
-  // (1 - |c|^2) t / (1 - |c|^2 t^2), t = tanh(R / 2).
-  const double c2 = c.centre.re * c.centre.re + c.centre.im * c.centre.im, t = std::tanh(c.radius / 2);
-  return (1 - c2) * t / (1 - c2 * t * t) >= kResolution;
+  // The Euclidean radius of the hyperbolic circle of centre c and radius R
+  // is (1 - |c|^2) t / (1 - |c|^2 t^2) >= (1 - |c|^2) t, t = tanh(R / 2),
+  // and t >= R / 4 for R <= 2: most faces pass without the tanh (which cost
+  // 3.7% of an epsilon-net's instructions).
+  const double c2 = c.centre.re * c.centre.re + c.centre.im * c.centre.im, w = 1 - c2;
+  if (c.radius <= 2 && w * c.radius >= 4 * kResolution) return true;
+  const double t = std::tanh(c.radius / 2);
+  return w * t / (1 - c2 * t * t) >= kResolution;
 }
 
 Refined refine(Triangulation &tri, const RefineBounds &b, std::size_t max_points, const Progress *progress) {
