@@ -17,6 +17,7 @@
 
 #include "cli_util.h"
 #include "face_writer.h"
+#include "mesh_writer.h"
 #include "output_file.h"
 #include "point_reader.h"
 #include "progress_bar.h"
@@ -58,7 +59,8 @@ static void usage(FILE *f) {
           "      --random N      triangulate N random points, uniform for hyperbolic\n"
           "                      area in F_g, instead of reading points; N <= " MAX_RANDOM_POINTS_SHOWN "\n"
           "      --seed S        seed of --random (default 1)\n"
-          "  -f, --format FMT    text (default) or json\n"
+          "  -f, --format FMT    text (default) or json; or a mesh file: vtu, msh (Gmsh\n"
+          "                      2.2), obj or off, each face in its canonical copy\n"
           "  -o, --output FILE   write the triangulation to FILE (default standard output)\n"
           "      --svg FILE      also draw it in the Poincare disk, as SVG\n"
           "      --save FILE     also save it in libhdt's format (hdt_save), for --load\n"
@@ -95,6 +97,8 @@ typedef struct options {
   int seed_given;
   unsigned long long seed;
   face_format format;
+  int mesh;               /* 1: a mesh format (mesh_format), not text or JSON */
+  mesh_format mesh_format;
   const char *output;
   const char *svg;
   const char *save;
@@ -207,7 +211,11 @@ static int apply_option(options *o, const option_spec *spec, const char *shown, 
     case OPT_FORMAT:
       if (strcmp(value, "text") == 0) o->format = FACE_FORMAT_TEXT;
       else if (strcmp(value, "json") == 0) o->format = FACE_FORMAT_JSON;
-      else return usage_error("unknown format '%s' (text or json)", value);
+      else if (strcmp(value, "vtu") == 0) o->mesh = 1, o->mesh_format = MESH_FORMAT_VTU;
+      else if (strcmp(value, "msh") == 0) o->mesh = 1, o->mesh_format = MESH_FORMAT_MSH;
+      else if (strcmp(value, "obj") == 0) o->mesh = 1, o->mesh_format = MESH_FORMAT_OBJ;
+      else if (strcmp(value, "off") == 0) o->mesh = 1, o->mesh_format = MESH_FORMAT_OFF;
+      else return usage_error("unknown format '%s' (text, json, vtu, msh, obj or off)", value);
       return 1;
     case OPT_REFINE: {
       const char *comma = strchr(value, ',');
@@ -289,6 +297,7 @@ static int parse_options(int argc, char **argv, options *o) {
   if (o->seed_given && !o->random) return usage_error("--seed needs --random");
   if (refine_options > 1) return usage_error("--refine and --epsilon exclude each other, and each is given once");
   if (o->neighbours && !o->svg) return usage_error("--neighbours needs --svg");
+  if (o->mesh && o->voronoi && !o->svg) return usage_error("--voronoi goes with the text and json formats (or --svg)");
   if (o->svg && strcmp(o->svg, "-") == 0 && (!o->output || strcmp(o->output, "-") == 0))
     return usage_error("--svg - and the triangulation would both go to standard output");
   if (o->svg && o->output && strcmp(o->svg, o->output) == 0)
@@ -564,7 +573,11 @@ static int run(const options *given) {
   t0 = cli_now_ms();
   if (!snapshot_take(t, &s)) goto done;
   if (o->voronoi && !voronoi_take(t, &vd)) goto done;
-  face_writer_write(out.f, o->format, &s, point_vertex, points.count, o->voronoi ? &vd : NULL);
+  if (o->mesh) {
+    if (!mesh_writer_write(out.f, o->mesh_format, t, &s)) goto done;
+  } else {
+    face_writer_write(out.f, o->format, &s, point_vertex, points.count, o->voronoi ? &vd : NULL);
+  }
   if (o->svg) {
     char title[256];
     picture_title(o, &c, title, sizeof title);

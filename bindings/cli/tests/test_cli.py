@@ -687,9 +687,39 @@ def test_refine(tmp):
     check(code == 2, f"--refine and --epsilon together: {err}")
 
 
+def test_mesh_formats(tmp):
+    """The mesh files agree with the JSON output: one triangle per face, one
+    node per distinct (vertex, translation) corner (bindings/python's
+    test_mesh reads them back with meshio, VTK and Gmsh)."""
+    code, js, err = run("--random", 40, "--seed", 2, "-f", "json")
+    check(code == 0, f"json: {err}")
+    data = json.loads(js)
+    faces = data["faces"]
+    corners = {(f["vertices"][c], f["translations"][c]) for f in faces for c in range(3)}
+    code, off, err = run("--random", 40, "--seed", 2, "-f", "off")
+    check(code == 0, f"--format off: {err}")
+    lines = off.split("\n")
+    check(lines[0] == "OFF" and lines[1] == f"{len(corners)} {len(faces)} 0", f"--format off header: {lines[:2]}")
+    code, obj, err = run("--random", 40, "--seed", 2, "-f", "obj")
+    check(code == 0 and sum(l.startswith("v ") for l in obj.split("\n")) == len(corners)
+          and sum(l.startswith("f ") for l in obj.split("\n")) == len(faces), f"--format obj: {err}")
+    for fmt in ("vtu", "msh"):
+        code, text, err = run("--random", 40, "--seed", 2, "-f", fmt)
+        check(code == 0 and "vertex" in text, f"--format {fmt}: {err}")
+    code, vtu, _ = run("--random", 40, "--seed", 2, "-f", "vtu")
+    try:
+        ET.fromstring(vtu)
+    except ET.ParseError as e:
+        check(False, f"--format vtu is not well-formed XML: {e}")
+    code, _, err = run("--random", 5, "-f", "vtu", "--voronoi")
+    check(code == 2 and "--voronoi" in err, f"--voronoi with a mesh format: {code} {err}")
+    code, _, err = run("--random", 5, "-f", "stl")
+    check(code == 2 and "vtu" in err, f"an unknown format names the mesh formats: {err}")
+
+
 TESTS = (test_help_and_version, test_random_text_and_json, test_dummies, test_input_forms, test_bad_input,
          test_usage_errors, test_outputs, test_utf8_bom, test_decimal_comma, test_empty_input_warning,
-         test_random_cap, test_output_errors, test_save_and_load, test_voronoi, test_refine)
+         test_random_cap, test_output_errors, test_save_and_load, test_voronoi, test_refine, test_mesh_formats)
 
 
 def main():

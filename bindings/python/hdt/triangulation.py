@@ -58,7 +58,7 @@ import os
 import threading
 import weakref
 
-from . import _arrays, picture
+from . import _arrays, mesh, picture
 from ._interrupt import interruptible
 from ._convert import c_coordinate, c_genus, c_translation, c_vertex, call_doubles, call_point, call_word
 from ._errors import HandleClosed, InternalError, InvalidArgument, Status, check, error_for_status
@@ -817,3 +817,16 @@ class Triangulation:
         ax is None) and returns the Axes; the picture of :meth:`to_svg`.
         Raises ImportError when matplotlib is not installed."""
         return picture.plot(self, ax, dummies=dummies, neighbours=neighbours, voronoi=voronoi)
+
+    def to_meshio(self, layout="representatives"):
+        """The triangulation as a ``meshio.Mesh`` (needs meshio and NumPy;
+        Debian: python3-meshio), for any format meshio writes:
+        ``t.to_meshio("unfolded").write("mesh.vtu")``. layout
+        "representatives": one node per vertex, at its representative in
+        F_g, each triangle's corner translations as cell data
+        ``translation``; "unfolded": each face in its canonical copy, nodes
+        repeated across the sides, point data ``vertex`` the node-to-vertex
+        map (the identification list of periodic finite elements). Both
+        carry point data ``vertex`` and ``dummy``, cell data ``face`` and
+        field data ``genus`` (:mod:`hdt.mesh`)."""
+        return mesh.to_meshio(self, layout)
