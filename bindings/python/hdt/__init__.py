@@ -42,6 +42,7 @@ from .group import (
     word_matrix,
 )
 from .library import abi_version, version
+from .sampling import random_points
 from .surface import point_representative, polygon_side_midpoint, polygon_vertex, systole
 from .triangulation import (Cells, Edges, Faces, Location, Neighbours, Quality, Refined, Star, Stars, Triangulation,
                             Vertices, Voronoi)
@@ -77,6 +78,7 @@ __all__ = [
     "neighbour_word",
     "neighbour_words",
     "point_representative",
+    "random_points",
     "polygon_side_midpoint",
     "polygon_vertex",
     "reduce_word",
