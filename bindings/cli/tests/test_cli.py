@@ -573,7 +573,7 @@ def test_pictures(tmp):
 
 
 def test_save_and_load(tmp):
-    saved, first = os.path.join(tmp, "a.hdt"), os.path.join(tmp, "a.json")
+    saved, first = os.path.join(tmp, "a.hdtri"), os.path.join(tmp, "a.json")
     code, _, err = run("--random", 120, "--seed", 3, "-f", "json", "-o", first, "--save", saved)
     check(code == 0, f"--save: {err}")
     with open(saved, "rb") as f:
@@ -592,7 +592,7 @@ def test_save_and_load(tmp):
     points = os.path.join(tmp, "more.txt")
     with open(points, "w") as f:
         f.write("0.05 0.01\n-0.2 0.3\n0.31,-0.12\n")
-    again = os.path.join(tmp, "b.hdt")
+    again = os.path.join(tmp, "b.hdtri")
     code, js, err = run("--load", saved, points, "-f", "json", "--validate", "--save", again)
     check(code == 0, f"--load with points: {err}")
     more = json.loads(js)
@@ -605,7 +605,7 @@ def test_save_and_load(tmp):
     code, _, err = run("--load", saved, "--genus", 3)
     check(code == 1 and "genus 2" in err, f"--load with another --genus: {code} {err}")
     # Damaged, truncated, missing: status 1, the byte named, nothing written.
-    bad = os.path.join(tmp, "bad.hdt")
+    bad = os.path.join(tmp, "bad.hdtri")
     out = os.path.join(tmp, "never.txt")
     for name, content in (("truncated", data[:-10]), ("damaged", data[:200] + bytes([data[200] ^ 1]) + data[201:]),
                           ("not saved", b"0.1 0.2\n" * 10)):
@@ -630,7 +630,7 @@ def test_save_and_load(tmp):
     # Refinement that memory cannot hold is refused at once, nothing written.
     code, _, err = run("--epsilon", "1e-9", "--random", 10, "-o", out)
     check(code == 1 and "needs at least" in err and not os.path.exists(out), f"--epsilon 1e-9: {code} {err}")
-    code, _, err = run("--load", os.path.join(tmp, "missing.hdt"))
+    code, _, err = run("--load", os.path.join(tmp, "missing.hdtri"))
     check(code == 1 and "cannot open" in err, f"--load of a missing file: {err}")
     # Standard input: --load - reads the saved bytes.
     p = subprocess.run([TOOL, "--load", "-", "-f", "json"], input=data, capture_output=True, timeout=60)

@@ -73,7 +73,7 @@ def test_points_are_stored_bit_for_bit_where_the_format_says():
 
 def test_save_and_load_with_paths_and_file_objects(tmp_path):
     t, _, _ = built(2)
-    path = tmp_path / "bolza.hdt"
+    path = tmp_path / "bolza.hdtri"
     t.save(path)
     assert hdt.Triangulation.load(path).to_bytes() == t.to_bytes()
     assert hdt.Triangulation.load(str(path)).to_bytes() == t.to_bytes()
