@@ -31,7 +31,7 @@ _TEMPLATE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "viewer.htm
 
 def template():
     """The text of the viewer's template (``viewer.html``, which holds no data)."""
-    with open(_TEMPLATE, encoding="utf-8") as file:
+    with open(_TEMPLATE, encoding="utf-8", newline="") as file:
         return file.read()
 
 
@@ -84,7 +84,7 @@ def _matrix(pair):
     return (a.real, a.imag, b.real, b.imag)
 
 
-def data_json(triangulation, *, title=None, voronoi=True):
+def data_json(triangulation, *, title=None, voronoi=False):
     """The viewer's data for the triangulation as JSON text (docs/viewer.md):
     F_g and its generators, the neighbour set N, the vertices, the faces
     with their corners' translations (ids, canonical words, matrices), and
@@ -130,7 +130,7 @@ def fill(template_text, data):
     return head + DATA_MARKER.replace(">null<", ">" + data + "<") + tail
 
 
-def html(triangulation, path=None, *, title=None, voronoi=True):
+def html(triangulation, path=None, *, title=None, voronoi=False):
     """The viewer page for the triangulation: the same as
     ``triangulation.to_html(path, title=title, voronoi=voronoi)`` (see there)."""
     page = fill(template(), data_json(triangulation, title=title, voronoi=voronoi))
