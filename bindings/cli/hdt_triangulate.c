@@ -4,13 +4,14 @@
  *
  * Reads points (or draws random ones), triangulates them with libhdt's
  * public C API, and writes the faces as text or JSON, optionally an SVG
- * picture. Outputs appear whole or not at all. See usage() below and the
+ * picture and an interactive viewer (HTML). Outputs appear whole or not at all. See usage() below and the
  * manual page, hdt-triangulate.1.
  *
  * This file: the options and the run. point_reader.c parses the input
  * (decimal_comma.c recognises "0,25" for its errors), random_points.c
  * samples, snapshot.c fetches the triangulation, face_writer.c writes it,
- * libhdt's hdt_svg draws the picture, saved_file.c loads and saves
+ * libhdt's hdt_svg draws the picture, html_writer.c writes the viewer,
+ * saved_file.c loads and saves
  * (hdt_load, hdt_save), output_file.c makes the writes all-or-nothing.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -18,6 +19,7 @@
 #include "cli_util.h"
 #include "face_writer.h"
 #include "mesh_writer.h"
+#include "html_writer.h"
 #include "output_file.h"
 #include "point_reader.h"
 #include "progress_bar.h"
@@ -63,14 +65,16 @@ static void usage(FILE *f) {
           "                      2.2), obj or off, each face in its canonical copy\n"
           "  -o, --output FILE   write the triangulation to FILE (default standard output)\n"
           "      --svg FILE      also draw it in the Poincare disk, as SVG\n"
+          "      --html FILE     also write an interactive viewer: one self-contained\n"
+          "                      HTML page (drag to move across the surface)\n"
           "      --save FILE     also save it in libhdt's format (hdt_save), for --load\n"
           "      --load FILE     start from the triangulation saved in FILE (its genus),\n"
           "                      then insert the points of an input FILE or --random, if\n"
           "                      given (standard input is then read only as \"-\")\n"
           "      --neighbours    with --svg: also the copies across the 4g sides of F_g\n"
           "                      (also spelled --neighbors)\n"
-          "      --voronoi       also the Voronoi diagram: in the output, and drawn\n"
-          "                      with --svg\n"
+          "      --voronoi       also the Voronoi diagram: in the output, drawn with\n"
+          "                      --svg, and in the viewer of --html\n"
           "      --refine R[,B]  then refine: circumradius <= R, circumradius / shortest\n"
           "                      edge <= B (>= 1; default no bound; R or B may be inf)\n"
           "      --epsilon E     then refine into an epsilon-net: every point of M_g\n"
@@ -101,6 +105,7 @@ typedef struct options {
   mesh_format mesh_format;
   const char *output;
   const char *svg;
+  const char *html;
   const char *save;
   const char *load;
   const char *input;
@@ -111,7 +116,7 @@ typedef struct options {
 } options;
 
 enum { OPT_GENUS, OPT_RANDOM, OPT_SEED, OPT_FORMAT, OPT_OUTPUT, OPT_SVG, OPT_NEIGHBOURS, OPT_VORONOI, OPT_KEEP,
-       OPT_VALIDATE, OPT_STATS, OPT_HELP, OPT_VERSION, OPT_SAVE, OPT_LOAD, OPT_REFINE, OPT_EPSILON };
+       OPT_VALIDATE, OPT_STATS, OPT_HELP, OPT_VERSION, OPT_SAVE, OPT_LOAD, OPT_REFINE, OPT_EPSILON, OPT_HTML };
 
 typedef struct option_spec {
   const char *long_name; /* without "--" */
@@ -130,6 +135,7 @@ static const option_spec option_table[] = {
     {"version", 'V', 0, OPT_VERSION},    {"save", 0, 1, OPT_SAVE},
     {"load", 0, 1, OPT_LOAD},            {"voronoi", 0, 0, OPT_VORONOI},
     {"refine", 0, 1, OPT_REFINE},        {"epsilon", 0, 1, OPT_EPSILON},
+    {"html", 0, 1, OPT_HTML},
 };
 #define N_OPTIONS (sizeof option_table / sizeof option_table[0])
 
@@ -235,6 +241,7 @@ static int apply_option(options *o, const option_spec *spec, const char *shown, 
       return 1;
     case OPT_OUTPUT: o->output = value; return 1;
     case OPT_SVG: o->svg = value; return 1;
+    case OPT_HTML: o->html = value; return 1;
     case OPT_SAVE: o->save = value; return 1;
     case OPT_LOAD: o->load = value; return 1;
     case OPT_NEIGHBOURS: o->neighbours = 1; return 1;
@@ -297,7 +304,8 @@ static int parse_options(int argc, char **argv, options *o) {
   if (o->seed_given && !o->random) return usage_error("--seed needs --random");
   if (refine_options > 1) return usage_error("--refine and --epsilon exclude each other, and each is given once");
   if (o->neighbours && !o->svg) return usage_error("--neighbours needs --svg");
-  if (o->mesh && o->voronoi && !o->svg) return usage_error("--voronoi goes with the text and json formats (or --svg)");
+  if (o->mesh && o->voronoi && !o->svg && !o->html)
+    return usage_error("--voronoi goes with the text and json formats (or --svg, --html)");
   if (o->svg && strcmp(o->svg, "-") == 0 && (!o->output || strcmp(o->output, "-") == 0))
     return usage_error("--svg - and the triangulation would both go to standard output");
   if (o->svg && o->output && strcmp(o->svg, o->output) == 0)
@@ -316,6 +324,21 @@ static int parse_options(int argc, char **argv, options *o) {
       return usage_error("--save - and --svg - would both go to standard output");
     if (!to_stdout && ((o->output && strcmp(o->save, o->output) == 0) || (o->svg && strcmp(o->save, o->svg) == 0)))
       return usage_error("--save '%s' names the same file as another output", o->save);
+  }
+  if (o->html) {
+    /* The viewer against each other output: not the same stream or file. */
+    const char *other[] = {o->output ? o->output : "-", o->svg, o->save};
+    const char *other_name[] = {"the triangulation", "--svg", "--save"};
+    for (int k = 0; k < 3; ++k) {
+      if (!other[k]) continue;
+      if (strcmp(o->html, other[k]) == 0)
+        return usage_error(strcmp(o->html, "-") == 0 ? "--html - and %s would both go to standard output"
+                                                      : "--html and %s name the same file", other_name[k]);
+      struct stat a, b;
+      if (stat(o->html, &a) == 0 && stat(other[k], &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino &&
+          S_ISREG(a.st_mode))
+        return usage_error("--html '%s' and %s '%s' are the same file", o->html, other_name[k], other[k]);
+    }
   }
   if (o->load && o->input && strcmp(o->load, "-") == 0 && strcmp(o->input, "-") == 0)
     return usage_error("--load - and the points would both be read from standard input");
@@ -490,7 +513,7 @@ static int run(const options *given) {
   unsigned char *seen = NULL;
   snapshot s = {0};
   voronoi vd = {0};
-  output_file out = {0}, svg = {0}, saved = {0};
+  output_file out = {0}, svg = {0}, saved = {0}, html = {0};
   counts c = {0};
   timings tm = {0};
 
@@ -515,6 +538,7 @@ static int run(const options *given) {
      fast; nothing appears there before the commit. */
   if (!output_open(&out, o->output)) goto done;
   if (o->svg && !output_open(&svg, o->svg)) goto done;
+  if (o->html && !output_open(&html, o->html)) goto done;
   if (o->save && !output_open(&saved, o->save)) goto done;
 
   t0 = cli_now_ms();
@@ -578,18 +602,23 @@ static int run(const options *given) {
   } else {
     face_writer_write(out.f, o->format, &s, point_vertex, points.count, o->voronoi ? &vd : NULL);
   }
-  if (o->svg) {
+  if (o->svg || o->html) {
     char title[256];
     picture_title(o, &c, title, sizeof title);
-    /* A loaded triangulation: libhdt's caption counts all its user vertices. */
-    if (!write_picture(svg.f, t, o->load ? NULL : title, o->neighbours, o->voronoi)) goto done;
+    /* A loaded triangulation: libhdt's caption (and the viewer's default
+       heading) counts all its user vertices. */
+    if (o->svg && !write_picture(svg.f, t, o->load ? NULL : title, o->neighbours, o->voronoi)) goto done;
+    if (o->html && !html_writer_write(html.f, t, o->load ? NULL : title, o->voronoi)) goto done;
   }
   if (o->save && !saved_file_write(saved.f, t)) goto done;
   /* Everything written and checked before anything is put in place. */
-  if (!output_finish(&out) || (o->svg && !output_finish(&svg)) || (o->save && !output_finish(&saved))) goto done;
-  /* The picture and the saved file first: when one cannot be put in
-     place, the triangulation is not written either. */
+  if (!output_finish(&out) || (o->svg && !output_finish(&svg)) || (o->html && !output_finish(&html)) ||
+      (o->save && !output_finish(&saved)))
+    goto done;
+  /* The picture, the viewer and the saved file first: when one cannot be
+     put in place, the triangulation is not written either. */
   if (o->svg && !output_commit(&svg)) goto done;
+  if (o->html && !output_commit(&html)) goto done;
   if (o->save && !output_commit(&saved)) goto done;
   if (!output_commit(&out)) goto done;
   tm.output = cli_now_ms() - t0;
@@ -600,6 +629,7 @@ static int run(const options *given) {
 done:
   output_discard(&saved);
   output_discard(&svg);
+  output_discard(&html);
   output_discard(&out);
   snapshot_free(&s);
   voronoi_free(&vd);

@@ -15,7 +15,8 @@ the same output, from a file, "-" and standard input; coordinates round-trip;
 bad lines are reported as FILE:LINE with a nonzero status and nothing written
 (no -o/--svg file, an existing one untouched, no temporary left, empty
 standard output); usage errors exit 2; the SVG is well-formed XML; a UTF-8
-byte order mark is skipped; a decimal comma gets a hint; an empty input
+byte order mark is skipped; a decimal comma gets a hint; --html writes a
+self-contained viewer page holding the output's data; an empty input
 warns; --random's cap is documented and named; an output that cannot be
 written names the directory and the cause; the committed pictures are what
 the commands of examples/pictures/commands.txt draw, byte for byte.
@@ -542,6 +543,76 @@ def test_voronoi(tmp):
     check(drawn.count('stroke="#2a8a3a"') == 1 and "Voronoi diagram green" in drawn, "--svg draws the diagram")
 
 
+VIEWER_DATA = '<script id="hdt-data" type="application/json">'
+
+
+def viewer_data(page):
+    """The JSON data inlined in a viewer page (docs/viewer.md)."""
+    start = page.index(VIEWER_DATA) + len(VIEWER_DATA)
+    return json.loads(page[start:page.index("</script>", start)])
+
+
+def test_html(tmp):
+    """--html: one self-contained page (no reference to the network, no
+    external script or style) holding the triangulation of the JSON output
+    (vertices, faces, the translations' words), the Voronoi edges only with
+    --voronoi, a title escaped for a script element; standard output with
+    -o FILE; refused as the same stream or file as another output; nothing
+    written when the input is bad. (The same bytes as Python's to_html: the
+    python test test_viewer.)"""
+    page_path, out = os.path.join(tmp, "v.html"), os.path.join(tmp, "v.json")
+    code, _, err = run("--random", 60, "--seed", 4, "-f", "json", "-o", out, "--html", page_path)
+    check(code == 0, f"--html: {err}")
+    with open(page_path, encoding="utf-8") as f:
+        page = f.read()
+    check("http://" not in page and "https://" not in page, "--html: no http:// or https:// reference")
+    check("<script src" not in page and "<link" not in page and "@import" not in page, "--html: nothing loaded")
+    check(page.startswith("<!DOCTYPE html>") and page.rstrip().endswith("</html>"), "--html: a whole page")
+    data = viewer_data(page)
+    with open(out) as f:
+        j = json.load(f)
+    check(data["format"] == "hdt-viewer" and data["version"] == 1 and data["genus"] == 2, "--html: format, genus")
+    check(data["vertices"]["ids"] == [v["id"] for v in j["vertices"]], "--html: the vertices of the output")
+    check(data["vertices"]["xy"] == [c for v in j["vertices"] for c in (v["x"], v["y"])], "--html: their points")
+    check(data["faces"]["vertices"] == [v for f in j["faces"] for v in f["vertices"]], "--html: the faces")
+    check(data["faces"]["translations"] == [t for f in j["faces"] for t in f["translations"]], "--html: corners")
+    check({str(i): w for i, w in zip(data["translations"]["ids"], data["translations"]["words"])}
+          == j["translations"], "--html: the translation words of the output")
+    check(len(data["polygon"]) == 16 and len(data["generators"]) == 32 and len(data["neighbours"]["words"]) == 49,
+          "--html: F_2, its 8 generators, the 49 elements of N")
+    check(data["voronoi"] is None, "--html: no Voronoi diagram without --voronoi")
+    check("60 random points" in data["title"], f"--html: the title names the points: {data['title']!r}")
+
+    code, _, err = run("--random", 60, "--seed", 4, "--voronoi", "-o", os.devnull, "--html", page_path)
+    with open(page_path, encoding="utf-8") as f:
+        data = viewer_data(f.read())
+    check(code == 0 and len(data["voronoi"]["edges"]) == 4 * 3 * len(data["faces"]["vertices"]) // 3 // 2,
+          "--html --voronoi: 4 numbers per Voronoi edge")
+
+    # A file name that markup would break: escaped in the data.
+    name = os.path.join(tmp, 'a<b>&"q.txt')
+    with open(name, "w") as f:
+        f.write("0.1 0.2\n0.3 -0.1\n")
+    code, _, err = run(name, "-o", os.devnull, "--html", page_path)
+    with open(page_path, encoding="utf-8") as f:
+        page = f.read()
+    check(code == 0 and "<b>" not in page and "\\u003cb\\u003e\\u0026\\\"q.txt" in page
+          and viewer_data(page)["title"].endswith('of a<b>&"q.txt on M_2'), "--html: the title escaped in the data")
+
+    code, text, err = run("--random", 10, "-o", out, "--html", "-")
+    check(code == 0 and text.startswith("<!DOCTYPE html>"), f"--html -: the page on standard output: {err}")
+    for args in (("--html", "-"), ("--html", "x.html", "--svg", "x.html"), ("--html", "x.html", "-o", "x.html"),
+                 ("--html", "-", "-o", "y", "--save", "-")):
+        code, _, err = run("--random", 5, *args, cwd=tmp)
+        check(code == 2 and "--html" in err, f"{args}: a usage error naming --html: {err}")
+    bad = os.path.join(tmp, "bad.txt")
+    with open(bad, "w") as f:
+        f.write("0.1 0.2\n2 0\n")
+    fresh = os.path.join(tmp, "fresh.html")
+    code, _, _ = run(bad, "-o", os.devnull, "--html", fresh)
+    check(code == 1 and not os.path.exists(fresh), "--html: nothing written for a bad input")
+
+
 def test_pictures(tmp):
     """Each committed picture is what its command draws now, byte for byte."""
     directory = os.path.join(REPOSITORY, "examples", "pictures")
@@ -719,7 +790,8 @@ def test_mesh_formats(tmp):
 
 TESTS = (test_help_and_version, test_random_text_and_json, test_dummies, test_input_forms, test_bad_input,
          test_usage_errors, test_outputs, test_utf8_bom, test_decimal_comma, test_empty_input_warning,
-         test_random_cap, test_output_errors, test_save_and_load, test_voronoi, test_refine, test_mesh_formats)
+         test_random_cap, test_output_errors, test_save_and_load, test_voronoi, test_refine, test_mesh_formats,
+         test_html)
 
 
 def main():

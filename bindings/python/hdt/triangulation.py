@@ -58,7 +58,7 @@ import os
 import threading
 import weakref
 
-from . import _arrays, mesh, picture
+from . import _arrays, mesh, picture, viewer
 from ._interrupt import interruptible
 from ._convert import c_coordinate, c_genus, c_translation, c_vertex, call_doubles, call_point, call_word
 from ._errors import HandleClosed, InternalError, InvalidArgument, Status, check, error_for_status
@@ -830,3 +830,36 @@ class Triangulation:
         carry point data ``vertex`` and ``dummy``, cell data ``face`` and
         field data ``genus`` (:mod:`hdt.mesh`)."""
         return mesh.to_meshio(self, layout)
+
+    def to_html(self, path=None, *, title=None, voronoi=False):
+        """The interactive viewer of the triangulation as the text of one
+        self-contained HTML page (inline script and style, no network
+        access; as hdt-triangulate's --html), also written to path (a file
+        name, UTF-8) when given.
+
+        The page draws F_g and the faces in the Poincare disk with geodesic
+        edges, the dummy vertices marked and the copies around F_g; dragging
+        moves the view by an isometry of the disk, hovering shows ids,
+        points and translation words. voronoi puts the Voronoi diagram into
+        the page (a switch there; about 120 bytes a face more than the 50 of
+        the faces). title (plain text) replaces the heading, by default
+        "Delaunay triangulation of N points on M_g". The page and its JSON
+        data: docs/viewer.md and :mod:`hdt.viewer`.
+        """
+        return viewer.html(self, path, title=title, voronoi=voronoi)
+
+    #: Faces above which a notebook shows the plain repr instead of the
+    #: viewer (the page holds about 50 bytes a face, and each browser frame
+    #: draws them all); up to VORONOI_REPR_MAX_FACES it holds the Voronoi
+    #: diagram too.
+    HTML_REPR_MAX_FACES = 100000
+    VORONOI_REPR_MAX_FACES = 20000
+
+    def _repr_html_(self):
+        """The viewer inline in a Jupyter notebook (an iframe holding
+        :meth:`to_html`'s page, with the Voronoi diagram up to
+        VORONOI_REPR_MAX_FACES faces); None (the plain repr) for a closed
+        triangulation or one of more than HTML_REPR_MAX_FACES faces."""
+        if self.closed or self.face_count > self.HTML_REPR_MAX_FACES:
+            return None
+        return viewer.iframe(self.to_html(voronoi=self.face_count <= self.VORONOI_REPR_MAX_FACES))
