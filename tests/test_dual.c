@@ -427,8 +427,8 @@ END_TEST
 /* ---- The MPFR evaluation ---- */
 
 #define PREC 256
-/* hdt.h's relative bound on lengths, radii and angles. */
-#define TINY_BOUND 3.2e-13
+/* hdt.h's relative bound on lengths, radii and hdt_quality's figures. */
+#define TINY_BOUND 1e-14
 
 typedef struct mcomplex {
   mpfr_t re, im;

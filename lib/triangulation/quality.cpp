@@ -43,11 +43,24 @@ FaceFrame frame(const Triangulation &tri, const Face &f) {
   return face_frame(tri, f, p);
 }
 
+// The shortest by |d|^2 / (w_p w_q), a monotone function of the length,
+// then one logarithm (as shortest_edge).
 double shortest_side(const FaceFrame &fr) {
   double w[3], s = HUGE_VAL;
+  int k = 0;
   for (int i = 0; i < 3; ++i) w[i] = 1 - (fr.p[i].re * fr.p[i].re + fr.p[i].im * fr.p[i].im);
-  for (int i = 0; i < 3; ++i) s = std::min(s, side_length(fr.side[i], w[next(i)], w[prev(i)]));
-  return s;
+  for (int i = 0; i < 3; ++i) {
+    const Point &d = fr.side[i];
+    const double x2 = (d.re * d.re + d.im * d.im) / (w[next(i)] * w[prev(i)]);
+    if (x2 < s) s = x2, k = i;
+  }
+  // Squares that underflow compare as 0: the three sides by length then.
+  if (!(s > 0x1p-960)) {
+    double best = HUGE_VAL;
+    for (int i = 0; i < 3; ++i) best = std::min(best, side_length(fr.side[i], w[next(i)], w[prev(i)]));
+    return best;
+  }
+  return side_length(fr.side[k], w[next(k)], w[prev(k)]);
 }
 
 double smallest_angle(const FaceFrame &fr) {
