@@ -143,11 +143,13 @@ PointDD corner_dd(const Triangulation &tri, const Face &f, int i, double *error2
 // dq x dr = dq x e = dr x e for e = dr - dq: the cross product of the two
 // shorter (twice the triangle's area, without the cancellation of the
 // longest side against another).
-HDT_INLINE double area_cross(const Point &dq, const Point &dr, const Point &e) {
-  const double mq = norm2(dq), mr = norm2(dr), me = norm2(e);
+HDT_INLINE double area_cross(const Point &dq, const Point &dr, const Point &e, double mq, double mr, double me) {
   if (mq >= mr && mq >= me) return dr.re * e.im - dr.im * e.re;
   if (mr >= me) return dq.re * e.im - dq.im * e.re;
   return dq.re * dr.im - dq.im * dr.re;
+}
+HDT_INLINE double area_cross(const Point &dq, const Point &dr, const Point &e) {
+  return area_cross(dq, dr, e, norm2(dq), norm2(dr), norm2(e));
 }
 
 // The frame's corners and sides from the exact data (face_frame, when the
@@ -201,13 +203,17 @@ HDT_INLINE FaceFrame frame_of(const Triangulation &tri, const Face &f, const Poi
 // products would underflow (a side of 1e-160 and less).
 HDT_INLINE void angle_parts(const Point &p, const Point &q, const Point &r, Point dq, Point dr, Point e,
                             double *cross, double *dot) {
-  const double big = std::max({std::fabs(dq.re), std::fabs(dq.im), std::fabs(dr.re), std::fabs(dr.im)});
-  if (big < 0x1p-400 && big > 0) {
-    const int k = -std::ilogb(big);
-    dq = {std::scalbn(dq.re, k), std::scalbn(dq.im, k)}, dr = {std::scalbn(dr.re, k), std::scalbn(dr.im, k)};
-    e = {std::scalbn(e.re, k), std::scalbn(e.im, k)};
+  double mq = norm2(dq), mr = norm2(dr), me = norm2(e);
+  if (std::max(mq, mr) < 0x1p-800) {
+    const double big = std::max({std::fabs(dq.re), std::fabs(dq.im), std::fabs(dr.re), std::fabs(dr.im)});
+    if (big > 0) {
+      const int k = -std::ilogb(big);
+      dq = {std::scalbn(dq.re, k), std::scalbn(dq.im, k)}, dr = {std::scalbn(dr.re, k), std::scalbn(dr.im, k)};
+      e = {std::scalbn(e.re, k), std::scalbn(e.im, k)};
+      mq = norm2(dq), mr = norm2(dr), me = norm2(e);
+    }
   }
-  const double xr = dq.re * dr.re + dq.im * dr.im, xi = area_cross(dq, dr, e);
+  const double xr = dq.re * dr.re + dq.im * dr.im, xi = area_cross(dq, dr, e, mq, mr, me);
   const double qr = 1 - (p.re * q.re + p.im * q.im), qi = -(p.re * q.im - p.im * q.re);
   const double rr = 1 - (p.re * r.re + p.im * r.im), ri = -(p.re * r.im - p.im * r.re);
   const double yr = qr * rr + qi * ri;
