@@ -435,16 +435,23 @@ HDT_API hdt_status hdt_load(hdt_triangulation **out, const void *bytes, size_t s
 
    Points (corners, circumcentres), radii and lengths are computed in
    double from the stored points and the translations' matrices: rounded
-   values, not exact ones. Measured against a 256-bit MPFR evaluation
-   (tests/test_dual.c; random sets of genus 2, 3 and 5, dummy sets of genus
-   2 and 4): points within 5e-14 of the exact ones in the disk (hyperbolic
-   distance 4.3e-13), radii and edge lengths within a relative 3.2e-13; at
-   genus 2 and 3 within 3.5e-14 throughout. The error grows with the
-   genus, with the entries of the translations' matrices (docs/dual.md).
-   A face double cannot resolve (corners nearly coincident or nearly
-   collinear, an ulp apart, or at the scale of 1e-300) has its circle
-   computed with 200-bit arithmetic from the exact data instead; corners
-   of such faces are rounded values, like all corners. */
+   values, not exact ones. Lengths, radii and angles (hdt_quality's too)
+   are read from a face's sides, and where rounded corners (translated,
+   dummy sites) could put a side off by more than 2^-46 of the face's
+   smallest altitude, the sides come from the exact data in double-double
+   or at 200 bits: they keep their relative accuracy however short (two
+   distinct vertices 1e-16 apart have an edge of about that length, never
+   0). Measured against a 256-bit MPFR evaluation (tests/test_dual.c; random
+   sets of genus 2, 3 and 5, dummy sets of genus 2 and 4, and edges of
+   4e-18 to 1e-16 between a point and the rounded image of a nearby one):
+   radii, edge lengths and hdt_quality's figures within a relative 1e-14
+   (5.8e-15 at worst); corners within 5e-15 of the exact ones in the disk
+   (hyperbolic distance 1.1e-13, growing with the genus, with the entries
+   of the translations' matrices), circumcentres within 1.3e-14
+   (docs/dual.md). A face double cannot resolve (corners nearly collinear,
+   or at the scale of 1e-300) has its circle computed with 200-bit
+   arithmetic from the exact data instead; hdt_face_points' corners are
+   rounded values. */
 
 /* Per face f and corner i, faces[3f + i]: the face across the edge opposite
    corner i (from corner i+1 to corner i+2), and translations[3f + i]: the

@@ -427,6 +427,8 @@ END_TEST
 /* ---- The MPFR evaluation ---- */
 
 #define PREC 256
+/* hdt.h's relative bound on lengths, radii and hdt_quality's figures. */
+#define TINY_BOUND 1e-14
 
 typedef struct mcomplex {
   mpfr_t re, im;
@@ -645,6 +647,206 @@ START_TEST(constructions_against_mpfr) {
 }
 END_TEST
 
+/* ---- Tiny edges (issue 33): copies of distinct vertices 1e-16 apart ---- */
+
+/* The exact corner of vertex v under the face translation id tr: the stored
+   point (a double, exact) under tr h, h the word taking it to its
+   representative (hdt_point_representative). */
+static void exact_corner(const dual *d, const double *stored, int32_t tr, uint32_t v, mpfr_t P[3]) {
+  word_t w = tword(d, tr), home = {0};
+  size_t len = 0;
+  OK(hdt_point_representative(d->g, stored[2 * v], stored[2 * v + 1], NULL, NULL, home.a, TW_MAX, &len));
+  home.n = len;
+  word_append(&w, &home);
+  lift(d->g, &w, stored[2 * v], stored[2 * v + 1], P);
+}
+
+/* acosh(<P, Q>) in MPFR, as a double. */
+static double exact_distance(mpfr_t P[3], mpfr_t Q[3]) {
+  mpfr_t r;
+  mpfr_init2(r, PREC);
+  minkowski(r, P, Q);
+  if (mpfr_cmp_ui(r, 1) < 0) mpfr_set_ui(r, 1, MPFR_RNDN);
+  mpfr_acosh(r, r, MPFR_RNDN);
+  const double x = mpfr_get_d(r, MPFR_RNDN);
+  mpfr_clear(r);
+  return x;
+}
+
+/* The unit tangent at O towards P: (P - <P, O> O) / |.| (space-like). */
+static void unit_tangent(mpfr_t O[3], mpfr_t P[3], mpfr_t T[3]) {
+  mpfr_t s;
+  mpfr_init2(s, PREC);
+  minkowski(s, P, O);
+  for (int j = 0; j < 3; ++j) mpfr_mul(T[j], s, O[j], MPFR_RNDN), mpfr_sub(T[j], P[j], T[j], MPFR_RNDN);
+  minkowski(s, T, T);
+  mpfr_neg(s, s, MPFR_RNDN), mpfr_sqrt(s, s, MPFR_RNDN);
+  for (int j = 0; j < 3; ++j) mpfr_div(T[j], T[j], s, MPFR_RNDN);
+  mpfr_clear(s);
+}
+
+/* The angle at O of the triangle O, P, Q: 2 atan2(|T - U|, |T + U|) for
+   the unit tangents, which keeps small angles and tiny faces accurate. */
+static double exact_angle(mpfr_t O[3], mpfr_t P[3], mpfr_t Q[3]) {
+  mpfr_t T[3], U[3], D[3], S[3], a, b;
+  for (int j = 0; j < 3; ++j) mpfr_inits2(PREC, T[j], U[j], D[j], S[j], (mpfr_ptr)0);
+  mpfr_inits2(PREC, a, b, (mpfr_ptr)0);
+  unit_tangent(O, P, T), unit_tangent(O, Q, U);
+  for (int j = 0; j < 3; ++j) mpfr_sub(D[j], T[j], U[j], MPFR_RNDN), mpfr_add(S[j], T[j], U[j], MPFR_RNDN);
+  minkowski(a, D, D), minkowski(b, S, S);
+  mpfr_neg(a, a, MPFR_RNDN), mpfr_neg(b, b, MPFR_RNDN);
+  mpfr_sqrt(a, a, MPFR_RNDN), mpfr_sqrt(b, b, MPFR_RNDN);
+  mpfr_atan2(a, a, b, MPFR_RNDN);
+  mpfr_mul_2ui(a, a, 1, MPFR_RNDN);
+  const double x = mpfr_get_d(a, MPFR_RNDN);
+  for (int j = 0; j < 3; ++j) mpfr_clears(T[j], U[j], D[j], S[j], (mpfr_ptr)0);
+  mpfr_clears(a, b, (mpfr_ptr)0);
+  return x;
+}
+
+/* The circumradius of P0, P1, P2: the Minkowski normal of their plane, as
+   in constructions_against_mpfr. */
+static double exact_radius(mpfr_t p[3][3]) {
+  mpfr_t c[3], e1[3], e2[3], s;
+  for (int j = 0; j < 3; ++j) mpfr_inits2(PREC, c[j], e1[j], e2[j], (mpfr_ptr)0);
+  mpfr_init2(s, PREC);
+  for (int j = 0; j < 3; ++j) mpfr_sub(e1[j], p[1][j], p[0][j], MPFR_RNDN), mpfr_sub(e2[j], p[2][j], p[0][j], MPFR_RNDN);
+  for (int j = 0; j < 3; ++j) {
+    const int a = (j + 1) % 3, b = (j + 2) % 3;
+    mpfr_mul(c[j], e1[a], e2[b], MPFR_RNDN), mpfr_mul(s, e1[b], e2[a], MPFR_RNDN);
+    mpfr_sub(c[j], c[j], s, MPFR_RNDN);
+  }
+  mpfr_neg(c[0], c[0], MPFR_RNDN);
+  minkowski(s, c, c);
+  mpfr_sqrt(s, s, MPFR_RNDN);
+  if (mpfr_sgn(c[0]) < 0) mpfr_neg(s, s, MPFR_RNDN);
+  for (int j = 0; j < 3; ++j) mpfr_div(c[j], c[j], s, MPFR_RNDN);
+  const double r = exact_distance(c, p[0]);
+  for (int j = 0; j < 3; ++j) mpfr_clears(c[j], e1[j], e2[j], (mpfr_ptr)0);
+  mpfr_clear(s);
+  return r;
+}
+
+/* Random points of the disk of radius 0.95 (homes other than the identity) and, near every side's midpoint
+   m_k (0.999 m_k, moved along the side), a point p and the rounded image
+   of p under the generator that maps side s_k away (a second user point,
+   whose copy beside p is an ulp or so from p: an edge of length 1e-16
+   between a stored point and a translated one), and p moved by two ulps
+   (an edge between two stored points). Every hdt_edges length, Voronoi
+   radius and hdt_quality figure is compared with the 256-bit value of the
+   exact points (the stored doubles under the faces' translations and the
+   vertices' homes). */
+static void tiny_edges_case(int g, uint64_t seed, double worst[4]) {
+  hdt_triangulation *t = new_triangulation(g);
+  size_t cap = 4096;
+  double *stored = need(malloc(2 * cap * sizeof *stored));
+  for (size_t i = 0; i < 2 * cap; ++i) stored[i] = NAN;
+  const size_t random_points = 300;
+  double *xy = uniform_disk_points(random_points, seed, 0.95);
+  for (size_t i = 0; i < random_points; ++i) {
+    uint32_t v;
+    OK(hdt_insert(t, xy[2 * i], xy[2 * i + 1], &v));
+    expect(v < cap, "vertex id %u", v);
+    stored[2 * v] = xy[2 * i], stored[2 * v + 1] = xy[2 * i + 1];
+  }
+  free(xy);
+  for (int k = 0; k < 4 * g; ++k) {
+    double mx, my;
+    OK(hdt_polygon_side_midpoint(g, k, &mx, &my));
+    const double along = (k % 3 - 1) * 0.05;
+    double px[3], py[3];
+    px[0] = 0.999 * mx - along * my, py[0] = 0.999 * my + along * mx;
+    /* g_{k + 2g} = g_k^-1 maps side s_k onto s_{k + 2g}: the image lies
+       outside F_g, its representative next to p. */
+    const word_t w = {1, {(k + 2 * g) % (4 * g)}};
+    mpfr_t P[3];
+    mpfr_inits2(PREC, P[0], P[1], P[2], (mpfr_ptr)0);
+    lift(g, &w, px[0], py[0], P);
+    to_disk(P, &px[1], &py[1]);
+    mpfr_clears(P[0], P[1], P[2], (mpfr_ptr)0);
+    px[2] = nextafter(nextafter(px[0], 0), 0), py[2] = py[0];
+    for (int j = 0; j < 3; ++j) {
+      uint32_t v;
+      OK(hdt_insert(t, px[j], py[j], &v));
+      expect(v < cap, "vertex id %u", v);
+      stored[2 * v] = px[j], stored[2 * v + 1] = py[j];
+    }
+  }
+  /* Some dummies may stay (the guarantee): faces with one are left out. */
+  OK(hdt_remove_dummies(t, NULL));
+  double q[4];
+  OK(hdt_quality(t, &q[0], &q[1], &q[2], &q[3]));
+  dual d;
+  read_dual(t, &d);
+  mpfr_t p[3][3];
+  for (int i = 0; i < 3; ++i) mpfr_inits2(PREC, p[i][0], p[i][1], p[i][2], (mpfr_ptr)0);
+  double min_angle = INFINITY, max_ratio = 0, max_radius = 0, min_edge = INFINITY;
+  double worst_length = 0, worst_radius = 0;
+  size_t tiny = 0;
+  size_t checked = 0;
+  for (size_t f = 0; f < d.F; ++f) {
+    if (hdt_vertex_is_dummy(t, d.fv[3 * f]) || hdt_vertex_is_dummy(t, d.fv[3 * f + 1]) ||
+        hdt_vertex_is_dummy(t, d.fv[3 * f + 2]))
+      continue;
+    ++checked;
+    for (int i = 0; i < 3; ++i) exact_corner(&d, stored, d.ft[3 * f + i], d.fv[3 * f + i], p[i]);
+    const double radius = exact_radius(p);
+    worst_radius = fmax(worst_radius, fabs(d.radius[f] - radius) / radius);
+    double shortest = INFINITY;
+    for (int i = 0; i < 3; ++i) {
+      const double length = exact_distance(p[(i + 1) % 3], p[(i + 2) % 3]);
+      expect(length > 0, "face %zu: two corners coincide", f);
+      shortest = fmin(shortest, length);
+      min_angle = fmin(min_angle, exact_angle(p[i], p[(i + 1) % 3], p[(i + 2) % 3]));
+      if (d.nf[3 * f + i] < f) continue;
+      /* Edge i of f, listed with f: its first vertex is corner i + 1. */
+      size_t e = 0;
+      while (e < d.E && !(d.ef[2 * e] == f && d.ev[2 * e] == d.fv[3 * f + (i + 1) % 3] &&
+                          d.ev[2 * e + 1] == d.fv[3 * f + (i + 2) % 3]))
+        ++e;
+      expect(e < d.E, "face %zu: edge %d not listed", f, i);
+      expect(d.length[e] > 0, "genus %d: edge %zu between vertices %u and %u has length %g (exact %.3g)", g, e,
+             d.ev[2 * e], d.ev[2 * e + 1], d.length[e], length);
+      worst_length = fmax(worst_length, fabs(d.length[e] - length) / length);
+      tiny += length < 1e-12;
+    }
+    min_edge = fmin(min_edge, shortest);
+    max_radius = fmax(max_radius, radius);
+    max_ratio = fmax(max_ratio, radius / shortest);
+  }
+  expect(2 * checked > d.F, "genus %d: only %zu of %zu faces without dummies", g, checked, d.F);
+  expect(tiny >= (size_t)(4 * g), "genus %d: only %zu edges shorter than 1e-12", g, tiny);
+  const double want[4] = {min_angle, max_ratio, max_radius, min_edge};
+  const char *names[4] = {"min angle", "max ratio", "max radius", "min edge"};
+  double worst_quality = 0;
+  for (int j = 0; j < 4; ++j) {
+    expect(q[j] > 0 && isfinite(q[j]), "genus %d: hdt_quality's %s is %g (exact %.3g)", g, names[j], q[j], want[j]);
+    /* Compared where every face was (hdt_quality's are all faces). */
+    if (checked == d.F) worst_quality = fmax(worst_quality, fabs(q[j] - want[j]) / want[j]);
+  }
+  printf("tiny edges: genus %d, %zu vertices, %zu of %zu faces, %zu edges shorter than 1e-12 (shortest %.3g): worst relative errors: "
+         "lengths %.3g, radii %.3g, hdt_quality %.3g\n",
+         g, d.V, checked, d.F, tiny, min_edge, worst_length, worst_radius, worst_quality);
+  fflush(stdout);
+  worst[0] = fmax(worst[0], worst_length), worst[1] = fmax(worst[1], worst_radius);
+  worst[2] = fmax(worst[2], worst_quality);
+  for (int i = 0; i < 3; ++i) mpfr_clears(p[i][0], p[i][1], p[i][2], (mpfr_ptr)0);
+  free(stored);
+  free_dual(&d);
+}
+
+START_TEST(tiny_edges_against_mpfr) {
+  double worst[4] = {0, 0, 0, 0};
+  tiny_edges_case(2, 0x71e1, worst);
+  tiny_edges_case(3, 0x71e2, worst);
+  tiny_edges_case(5, 0x71e3, worst);
+  /* hdt.h's bound (docs/dual.md). */
+  expect(worst[0] < TINY_BOUND && worst[1] < TINY_BOUND && worst[2] < TINY_BOUND,
+         "relative errors: lengths %.3g, radii %.3g, hdt_quality %.3g", worst[0], worst[1], worst[2]);
+  mpfr_free_cache();
+}
+END_TEST
+
 /* The contract: NULL handle and count, a too small buffer (count set,
    nothing written), a dead vertex, the size query. */
 /* The handle keeps the circumcentres (and radii) it computed, for
@@ -768,6 +970,6 @@ int main(void) {
                                 edges_against_brute_force,          face_points_are_the_translated_corners,
                                 voronoi_vertices_are_empty_circles, voronoi_cells_tile_the_surface,
                                 cells_follow_changes,               constructions_against_mpfr,
-                                bad_arguments};
+                                tiny_edges_against_mpfr,            bad_arguments};
   return run_tests("dual", tests, sizeof tests / sizeof tests[0]);
 }

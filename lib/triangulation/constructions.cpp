@@ -20,6 +20,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "predicates/double_double.hpp"
 #include "triangulation/disk_isometry.hpp"
 #include "triangulation/precise_circumcircle.hpp"
 
@@ -65,10 +66,160 @@ HDT_INLINE void fetch_ahead(const Triangulation &tri, std::size_t f) {
   for (int i = 0; i < 3; ++i) __builtin_prefetch(&tri.vertices()[A.v[i]]);
 }
 
-// Whether some corner of f is rounded: translated, or a dummy's algebraic point.
+// Whether some corner of f is rounded: translated, a dummy's algebraic
+// point, or a representative moved back (stored_point_serves false).
 HDT_INLINE bool rounded_corners(const Triangulation &tri, const Face &f) {
   if ((f.t[0] | f.t[1] | f.t[2]) != 0) return true;
-  return tri.site_of(f.v[0]) >= 0 || tri.site_of(f.v[1]) >= 0 || tri.site_of(f.v[2]) >= 0;
+  if (tri.site_of(f.v[0]) >= 0 || tri.site_of(f.v[1]) >= 0 || tri.site_of(f.v[2]) >= 0) return true;
+  const std::vector<Vertex> &V = tri.vertices();
+  return !stored_point_serves(V[f.v[0]]) || !stored_point_serves(V[f.v[1]]) || !stored_point_serves(V[f.v[2]]);
+}
+
+constexpr double kUnit = 0x1p-53;
+
+// The square of a bound on the error of corner i as corners() computes it
+// (p): 0 for a stored point, an ulp for a site's double, and for one double
+// Moebius map z -> (a z + b) / den: its numerator and denominator within
+// 5u (|a| + |b|) each (parts of a, b within an ulp, three roundings a
+// product), the quotient 6u more, so within 16u (|a| + |b|) / |den|, with
+// (|a| + |b|)^2 <= 4 |a|^2 and 1 / |den|^2 = (1 - |p|^2) / (1 - |z|^2), the
+// map's derivative, which also scales z's own error. Infinite for a
+// representative moved back (its relative translation is not at hand).
+double corner_error2(const Triangulation &tri, const Face &f, int i, const Point &p) {
+  const Vertex &u = tri.vertices()[f.v[i]];
+  if (!stored_point_serves(u)) return HUGE_VAL;
+  const double ez = tri.site_of(f.v[i]) >= 0 ? kUnit : 0;
+  if (f.t[i] == 0) return ez * ez;
+  const group::Moebius<double> &M = tri.table().moebius(f.t[i]);
+  const double derivative = (1 - norm2(p)) / (1 - (u.x * u.x + u.y * u.y));
+  return 2 * (1024 * kUnit * kUnit * norm2(M.a) * derivative) + 2 * ez * ez * derivative * derivative;
+}
+
+using DD = predicates::DoubleDouble;
+struct PointDD {
+  DD re, im;
+};
+
+template <class R>
+DD round_dd(const R &x) {
+  const double hi = static_cast<double>(x);
+  return DD::fast_two_sum(hi, static_cast<double>(x - R(hi)));
+}
+
+// Corner i of f from the exact data in double-double: the stored point (a
+// site's 2^-128 coordinates rounded, 2^-105 off) under the corner's
+// translation with the table's double-double matrix (parts within
+// moebius_error (|a| + |b|) + 2^-105 |part|), every operation within
+// 2^-100: within 16 (error + 2^-100) (|a| + |b|) / |den| as above, and
+// z's error times the derivative. *error2 receives the square of that.
+PointDD corner_dd(const Triangulation &tri, const Face &f, int i, double *error2) {
+  const Vertex &u = tri.vertices()[f.v[i]];
+  PointDD z{DD(u.x), DD(u.y)};
+  double ez = 0;
+  if (const int32_t site = tri.site_of(f.v[i]); site >= 0) {
+    const surface::Site &s = tri.surface().site(site);
+    if (s.has_approximation) z = {round_dd(s.approximation.re), round_dd(s.approximation.im)}, ez = 0x1p-104;
+    else ez = kUnit;
+  }
+  if (f.t[i] == 0) {
+    *error2 = ez * ez;
+    return z;
+  }
+  group::TranslationTable &T = tri.table();
+  const group::Moebius<double> &hi = T.moebius(f.t[i]), &lo = T.moebius_low(f.t[i]);
+  const double me = T.moebius_error(f.t[i]) + 0x1p-100;
+  const DD ar = DD::fast_two_sum(hi.a.re, lo.a.re), ai = DD::fast_two_sum(hi.a.im, lo.a.im);
+  const DD br = DD::fast_two_sum(hi.b.re, lo.b.re), bi = DD::fast_two_sum(hi.b.im, lo.b.im);
+  // num = a z + b, den = conj(b) z + conj(a), the image num conj(den) / |den|^2.
+  const DD nr = ar * z.re - ai * z.im + br, ni = ar * z.im + ai * z.re + bi;
+  const DD dr = br * z.re + bi * z.im + ar, di = br * z.im - bi * z.re - ai;
+  const DD d2 = dr * dr + di * di;
+  const PointDD w{(nr * dr + ni * di) / d2, (ni * dr - nr * di) / d2};
+  const double derivative = 1 / d2.hi;
+  *error2 = 2 * (1024 * me * me * norm2(hi.a) * derivative) + 2 * ez * ez * derivative * derivative;
+  return w;
+}
+
+// dq x dr = dq x e = dr x e for e = dr - dq: the cross product of the two
+// shorter (twice the triangle's area, without the cancellation of the
+// longest side against another).
+HDT_INLINE double area_cross(const Point &dq, const Point &dr, const Point &e, double mq, double mr, double me) {
+  if (mq >= mr && mq >= me) return dr.re * e.im - dr.im * e.re;
+  if (mr >= me) return dq.re * e.im - dq.im * e.re;
+  return dq.re * dr.im - dq.im * dr.re;
+}
+HDT_INLINE double area_cross(const Point &dq, const Point &dr, const Point &e) {
+  return area_cross(dq, dr, e, norm2(dq), norm2(dr), norm2(e));
+}
+
+// The frame's corners and sides from the exact data (face_frame, when the
+// a-priori bound fails): in double-double, each side then within 2^-60 of
+// itself, or else at 200 bits (two corners within 1e-30 of each other).
+__attribute__((noinline)) void exact_frame(const Triangulation &tri, const Face &f, FaceFrame *frame) {
+  PointDD z[3];
+  double e2[3];
+  for (int i = 0; i < 3; ++i) z[i] = corner_dd(tri, f, i, &e2[i]);
+  bool enough = true;
+  for (int i = 0; i < 3; ++i) {
+    const PointDD &a = z[next(i)], &b = z[prev(i)];
+    const Point d{static_cast<double>(b.re - a.re), static_cast<double>(b.im - a.im)};
+    frame->side[i] = d;
+    // (e_a + e_b)^2 <= 2 (e_a^2 + e_b^2) <= 2^-120 |d|^2.
+    enough = enough && 2 * (e2[next(i)] + e2[prev(i)]) <= 0x1p-120 * norm2(d);
+  }
+  for (int i = 0; i < 3; ++i) frame->p[i] = {z[i].re.hi, z[i].im.hi};
+  if (!enough) precise_frame(tri, f, frame->p, frame->side);
+  frame->rounded = false;
+}
+
+// The face's frame: sides from the corners in double, unless some corner
+// is rounded and the corners' error bounds, twice the largest for a side,
+// could move a side, an angle or the circle by more than 2^-46 relative:
+// each moves by at most about 4 (side error) / (smallest altitude), the
+// altitude |n1 x n2| / (longest side). Most faces have no rounded corner.
+HDT_INLINE FaceFrame frame_of(const Triangulation &tri, const Face &f, const Point p[3]) {
+  FaceFrame frame;
+  for (int i = 0; i < 3; ++i) {
+    frame.p[i] = p[i];
+    frame.side[i] = {p[prev(i)].re - p[next(i)].re, p[prev(i)].im - p[next(i)].im};
+  }
+  frame.rounded = rounded_corners(tri, f);
+  if (!frame.rounded) return frame;
+  double e2 = 0, m = 0;
+  for (int i = 0; i < 3; ++i) e2 = std::max(e2, corner_error2(tri, f, i, p[i])), m = std::max(m, norm2(frame.side[i]));
+  const Point &n1 = frame.side[2], n2{-frame.side[1].re, -frame.side[1].im};  // p1 - p0, p2 - p0
+  const double cross = area_cross(n1, n2, frame.side[0]);
+  // 4 (2 sqrt(e2)) sqrt(m) <= 2^-46 |cross|.
+  if (!(64 * e2 * m <= 0x1p-92 * cross * cross)) exact_frame(tri, f, &frame);
+  return frame;
+}
+
+// Im and Re of conj(a) b for a = to_origin_scaled(p, q, dq) and
+// b = to_origin_scaled(p, r, dr), e = r - q: conj(a) b = X Y with
+// X = conj(dq) dr and Y = D_q conj(D_r), D_z = 1 - conj(p) z, whose
+// imaginary parts are formed from the sides (Im X by area_cross,
+// Im Y = Im(conj(p) e) + |p|^2 Im(q conj(e))), so that a thin angle at p
+// and a short side keep their relative accuracy. X is scaled by a power of two where its
+// products would underflow (a side of 1e-160 and less).
+HDT_INLINE void angle_parts(const Point &p, const Point &q, const Point &r, Point dq, Point dr, Point e,
+                            double *cross, double *dot) {
+  double mq = norm2(dq), mr = norm2(dr), me = norm2(e);
+  if (std::max(mq, mr) < 0x1p-800) {
+    const double big = std::max({std::fabs(dq.re), std::fabs(dq.im), std::fabs(dr.re), std::fabs(dr.im)});
+    if (big > 0) {
+      const int k = -std::ilogb(big);
+      dq = {std::scalbn(dq.re, k), std::scalbn(dq.im, k)}, dr = {std::scalbn(dr.re, k), std::scalbn(dr.im, k)};
+      e = {std::scalbn(e.re, k), std::scalbn(e.im, k)};
+      mq = norm2(dq), mr = norm2(dr), me = norm2(e);
+    }
+  }
+  const double xr = dq.re * dr.re + dq.im * dr.im, xi = area_cross(dq, dr, e, mq, mr, me);
+  const double qr = 1 - (p.re * q.re + p.im * q.im), qi = -(p.re * q.im - p.im * q.re);
+  const double rr = 1 - (p.re * r.re + p.im * r.im), ri = -(p.re * r.im - p.im * r.re);
+  const double yr = qr * rr + qi * ri;
+  const double yi = (p.re * e.im - p.im * e.re) + norm2(p) * (q.im * e.re - q.re * e.im);
+  *cross = xr * yi + xi * yr;
+  *dot = xr * yr - xi * yi;
 }
 
 // The radius from s2, the squared Euclidean length of the circle's
@@ -97,18 +248,18 @@ HDT_INLINE double radius_of(double s2) {
 // the sine is at most 2^-30 (the Euclidean |p1 - p2| standing for the
 // third edge; sine^2 = cross^2 / (4 |A_1|^2 |A_2|^2)), or the circle is no
 // circle of the disk.
-HDT_INLINE bool centre_of(const Point &p0, const Point &p1, const Point &p2, bool rounded, Point *centre,
-                          double *radius, double *diameter2 = nullptr) {
-  const Point a1 = to_origin_scaled(p0, p1), a2 = to_origin_scaled(p0, p2);
-  const double n1r = p1.re - p0.re, n1i = p1.im - p0.im, n2r = p2.re - p0.re, n2i = p2.im - p0.im;
-  const double m1 = n1r * n1r + n1i * n1i, m2 = n2r * n2r + n2i * n2i;
-  const double cross = 2 * (a1.re * a2.im - a1.im * a2.re);
-  const double norms = (a1.re * a1.re + a1.im * a1.im) * (a2.re * a2.re + a2.im * a2.im), cross2 = cross * cross;
+HDT_INLINE bool centre_of(const FaceFrame &frame, Point *centre, double *radius, double *diameter2 = nullptr) {
+  const Point &p0 = frame.p[0], &p1 = frame.p[1], &p2 = frame.p[2];
+  // The sides from p0 and the third side, from the frame (accurate).
+  const Point n1 = frame.side[2], n2{-frame.side[1].re, -frame.side[1].im}, &e = frame.side[0];
+  const Point a1 = to_origin_scaled(p0, p1, n1), a2 = to_origin_scaled(p0, p2, n2);
+  const double m1 = norm2(n1), m2 = norm2(n2);
+  double cross, dot;
+  angle_parts(p0, p1, p2, n1, n2, e, &cross, &dot);
+  cross *= 2;
+  const double norms = norm2(a1) * norm2(a2), cross2 = cross * cross;
   if (!(m1 > 0x1p-500 && m2 > 0x1p-500 && cross2 > 0x1p-28 * norms)) return false;
-  if (rounded) {
-    const double er = p1.re - p2.re, ei = p1.im - p2.im;
-    if (!(std::min({m1, m2, er * er + ei * ei}) * cross2 > 0x1p-58 * norms)) return false;
-  }
+  if (frame.rounded && !(std::min({m1, m2, norm2(e)}) * cross2 > 0x1p-58 * norms)) return false;
   const double inv = 1 / cross;
   const double cr = (m1 * a2.im - m2 * a1.im) * inv, ci = (m2 * a1.re - m1 * a2.re) * inv;
   // The circle's diameter from 0 ends at 2c, Euclidean length s < 1,
@@ -135,7 +286,7 @@ Point precise_centre(const Triangulation &tri, const Face &f, double *radius) {
 // centre_of, or the fallback.
 HDT_INLINE Point face_centre(const Triangulation &tri, const Face &f, const Point p[3], double *radius) {
   Point c;
-  if (centre_of(p[0], p[1], p[2], rounded_corners(tri, f), &c, radius)) return c;
+  if (centre_of(frame_of(tri, f, p), &c, radius)) return c;
   return precise_centre(tri, f, radius);
 }
 
@@ -147,18 +298,24 @@ HDT_INLINE Point face_centre_kept(const Triangulation &tri, const Face &f, const
                                   double *kept) {
   Point c;
   double s2 = 0;
-  if (centre_of(p[0], p[1], p[2], rounded_corners(tri, f), &c, radius ? kept : nullptr, &s2)) {
+  if (centre_of(frame_of(tri, f, p), &c, radius ? kept : nullptr, &s2)) {
     if (!radius) *kept = -s2;
     return c;
   }
   return precise_centre(tri, f, kept);
 }
 
-// 2 asinh(x) = log1p(2 x^2 + 2 x sqrt(1 + x^2)) for x^2 = q: one square
-// root and one logarithm.
-HDT_INLINE double length_of(const Point &p, const Point &q, double wp, double wq) {
-  const double dx = p.re - q.re, dy = p.im - q.im;
-  const double x2 = (dx * dx + dy * dy) / (wp * wq);
+// A side whose squares underflow: 2 asinh(|d| / sqrt(wp wq)) directly.
+__attribute__((noinline)) double tiny_length(const Point &d, double wp, double wq) {
+  return 2 * std::asinh(std::hypot(d.re, d.im) / std::sqrt(wp * wq));
+}
+
+// 2 asinh(x) = log1p(2 x^2 + 2 x sqrt(1 + x^2)) for x = |d| / sqrt(wp wq),
+// d = q - p: one square root and one logarithm.
+HDT_INLINE double length_of(const Point &d, double wp, double wq) {
+  const double m = d.re * d.re + d.im * d.im;
+  if (!(m >= 0x1p-960)) return tiny_length(d, wp, wq);
+  const double x2 = m / (wp * wq);
   return std::log1p(2 * (x2 + std::sqrt(x2 * (1 + x2))));
 }
 
@@ -175,10 +332,15 @@ Point face_corner(const Triangulation &tri, const Face &f, int i) {
   return relative == 0 ? Point{x, y} : T.moebius(relative).apply(Point{x, y});
 }
 
+FaceFrame face_frame(const Triangulation &tri, const Face &f, const Point p[3]) { return frame_of(tri, f, p); }
+
 bool try_circumcircle(const Point &p0, const Point &p1, const Point &p2, bool rounded, Circle *circle) {
+  FaceFrame frame{{p0, p1, p2},
+                  {{p2.re - p1.re, p2.im - p1.im}, {p0.re - p2.re, p0.im - p2.im}, {p1.re - p0.re, p1.im - p0.im}},
+                  rounded};
   Point c;
   double r;
-  if (!centre_of(p0, p1, p2, rounded, &c, &r)) return false;
+  if (!centre_of(frame, &c, &r)) return false;
   *circle = {c, r};
   return true;
 }
@@ -189,12 +351,30 @@ Circle circumcircle(const Triangulation &tri, const Face &f, const Point p[3]) {
   return c;
 }
 
+Circle circumcircle(const Triangulation &tri, const Face &f, const FaceFrame &frame) {
+  Circle c;
+  if (centre_of(frame, &c.centre, &c.radius)) return c;
+  c.centre = precise_centre(tri, f, &c.radius);
+  return c;
+}
+
 Point circumcentre(const Triangulation &tri, const Face &f, const Point p[3], double *radius) {
   return face_centre(tri, f, p, radius);
 }
 
 double distance(const Point &p, const Point &q) {
-  return length_of(p, q, 1 - (p.re * p.re + p.im * p.im), 1 - (q.re * q.re + q.im * q.im));
+  return length_of(Point{q.re - p.re, q.im - p.im}, 1 - (p.re * p.re + p.im * p.im), 1 - (q.re * q.re + q.im * q.im));
+}
+
+double side_length(const Point &d, double wp, double wq) { return length_of(d, wp, wq); }
+
+double corner_angle(const FaceFrame &frame, int i) {
+  const int j = next(i), k = prev(i);
+  // q - p = side[k], r - p = -side[j], r - q = side[i].
+  const Point dq = frame.side[k], dr{-frame.side[j].re, -frame.side[j].im};
+  double cross, dot;
+  angle_parts(frame.p[i], frame.p[j], frame.p[k], dq, dr, frame.side[i], &cross, &dot);
+  return std::atan2(std::fabs(cross), dot);
 }
 
 Point translate(const Triangulation &tri, group::TranslationId h, const Point &p) {
@@ -301,11 +481,13 @@ void write_edges(const Triangulation &tri, std::size_t count, uint32_t *vertices
     // corners and their factors 1 - |z|^2 serve all the edges it lists.
     fetch_ahead(tri, f);
     if (!(A.n[0] > f || A.n[1] > f || A.n[2] > f)) continue;
-    Point p[3];
+    FaceFrame frame;
     double w[3];
     if (lengths) {
+      Point p[3];
       corners(tri, A, p);
-      for (int i = 0; i < 3; ++i) w[i] = 1 - (p[i].re * p[i].re + p[i].im * p[i].im);
+      frame = frame_of(tri, A, p);
+      for (int i = 0; i < 3; ++i) w[i] = 1 - norm2(frame.p[i]);
     }
     for (int i = 0; i < 3; ++i) {
       if (!(A.n[i] > f)) continue;
@@ -313,7 +495,7 @@ void write_edges(const Triangulation &tri, std::size_t count, uint32_t *vertices
       const int a = next(i), b = prev(i);
       if (vertices) vertices[2 * k] = A.v[a], vertices[2 * k + 1] = A.v[b];
       if (faces) faces[2 * k] = f, faces[2 * k + 1] = A.n[i];
-      if (lengths) lengths[k] = length_of(p[a], p[b], w[a], w[b]);
+      if (lengths) lengths[k] = length_of(frame.side[i], w[a], w[b]);
       ++k;
     }
   }

@@ -22,6 +22,23 @@ using Point = group::Complex<double>;
 // representative under t h^-1 (which may add ids to the table).
 Point face_corner(const Triangulation &tri, const Face &f, int i);
 
+// A face's corners with its sides as differences: side[i] = p[i+2] - p[i+1],
+// the side opposite corner i. The constructions read a short side from
+// side[], never from two corners: for corners that are exact doubles the
+// difference in double is within an ulp of itself, and where rounded
+// corners (translated, dummy sites: a few ulps each, tens at genus 5) could
+// put a side off by more than 2^-46 of the face's smallest altitude (an
+// a-priori bound, face_frame), corners and sides come from the exact data
+// instead, in double-double, or at 200 bits where that is not enough; the
+// corners are then their exact values rounded once, and rounded is false.
+struct FaceFrame {
+  Point p[3];
+  Point side[3];
+  bool rounded;  // some corner is a rounded value with a rounded side
+};
+// Face f's frame, p its corners (face_corner).
+FaceFrame face_frame(const Triangulation &tri, const Face &f, const Point p[3]);
+
 struct Circle {
   Point centre;
   double radius;  // hyperbolic
@@ -40,8 +57,18 @@ bool try_circumcircle(const Point &p0, const Point &p1, const Point &p2, bool ro
 Circle circumcircle(const Triangulation &tri, const Face &f, const Point p[3]);
 Point circumcentre(const Triangulation &tri, const Face &f, const Point p[3], double *radius);
 
+// Face f's circumcircle from its frame (the same bits as circumcircle()).
+Circle circumcircle(const Triangulation &tri, const Face &f, const FaceFrame &frame);
+
 // Hyperbolic distance in the Poincare disk (curvature -1).
 double distance(const Point &p, const Point &q);
+// The hyperbolic length of a side d = q - p of points p, q with
+// 1 - |p|^2 = wp and 1 - |q|^2 = wq, relatively accurate to a few ulps of
+// d's own accuracy, down to sides of 1e-300.
+double side_length(const Point &d, double wp, double wq);
+// The hyperbolic angle at corner i of the frame's triangle, in radians,
+// read with the corner moved to the origin (thin angles from the sides).
+double corner_angle(const FaceFrame &frame, int i);
 
 // h(p) for a translation id h.
 Point translate(const Triangulation &tri, group::TranslationId h, const Point &p);

@@ -22,11 +22,17 @@ namespace hdt::triangulation {
 
 // (z - w) conj(1 - conj(w) z): the image of z, times the positive factor
 // |1 - conj(w) z|^2. A direction or a ratio of such images needs no division.
+// n = z - w is given: a difference known more accurately than the
+// corners' (FaceFrame).
+template <class T>
+HDT_ISOMETRY_INLINE group::Complex<T> to_origin_scaled(const group::Complex<T> &w, const group::Complex<T> &z,
+                                                       const group::Complex<T> &n) {
+  const T dr = 1 - (w.re * z.re + w.im * z.im), di = -(w.re * z.im - w.im * z.re);
+  return {n.re * dr + n.im * di, n.im * dr - n.re * di};
+}
 template <class T>
 HDT_ISOMETRY_INLINE group::Complex<T> to_origin_scaled(const group::Complex<T> &w, const group::Complex<T> &z) {
-  const T nr = z.re - w.re, ni = z.im - w.im;
-  const T dr = 1 - (w.re * z.re + w.im * z.im), di = -(w.re * z.im - w.im * z.re);
-  return {nr * dr + ni * di, ni * dr - nr * di};
+  return to_origin_scaled(w, z, group::Complex<T>{z.re - w.re, z.im - w.im});
 }
 
 // |1 - conj(w) z|^2, the factor above.

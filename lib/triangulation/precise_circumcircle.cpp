@@ -66,4 +66,14 @@ Circle precise_circumcircle(const Triangulation &tri, const Face &f) {
   return {Point{static_cast<double>(centre.re), static_cast<double>(centre.im)}, static_cast<double>(atanh(s))};
 }
 
+void precise_frame(const Triangulation &tri, const Face &f, Point p[3], Point side[3]) {
+  PrecisePoint z[3];
+  for (int i = 0; i < 3; ++i) z[i] = corner(tri, f.v[i], f.t[i]);
+  for (int i = 0; i < 3; ++i) {
+    p[i] = {static_cast<double>(z[i].re), static_cast<double>(z[i].im)};
+    const PrecisePoint &a = z[next(i)], &b = z[prev(i)];
+    side[i] = {static_cast<double>(b.re - a.re), static_cast<double>(b.im - a.im)};
+  }
+}
+
 }  // namespace hdt::triangulation

@@ -19,4 +19,9 @@ namespace hdt::triangulation {
 // circle (a broken invariant: every face of a triangulation has one).
 Circle precise_circumcircle(const Triangulation &tri, const Face &f);
 
+// Face f's corners and sides (side[i] = p[i+2] - p[i+1]) from the same
+// 200-bit corners, each rounded once to double: face_frame's last resort,
+// for sides too short for double-double.
+void precise_frame(const Triangulation &tri, const Face &f, Point p[3], Point side[3]);
+
 }  // namespace hdt::triangulation

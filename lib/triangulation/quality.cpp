@@ -1,8 +1,9 @@
-// Face shapes in double. The angle at a corner is read where it is exact to
-// compute: with that corner moved to the origin, the geodesics from it are
-// diameters, and the hyperbolic angle is the Euclidean one between them
-// (the disk model is conformal). The law of cosines would cancel badly on
-// small faces.
+// Face shapes in double, from the faces' frames (constructions.hpp: sides
+// accurate to their own length however short). The angle at a corner is
+// read where it is exact to compute: with that corner moved to the origin,
+// the geodesics from it are diameters, and the hyperbolic angle is the
+// Euclidean one between them (the disk model is conformal). The law of
+// cosines would cancel badly on small faces.
 #include "triangulation/quality.hpp"
 
 // No fused multiply-add, as in constructions.cpp: both compile the inline
@@ -20,26 +21,6 @@
 
 namespace hdt::triangulation {
 
-namespace {
-
-double angle_at(const Point &p, const Point &q, const Point &r) {
-  // The images of q and r with p moved to the origin, times positive
-  // factors: only their directions matter.
-  Point a = to_origin_scaled(p, q), b = to_origin_scaled(p, r);
-  double cross = a.re * b.im - a.im * b.re, dot = a.re * b.re + a.im * b.im;
-  if (cross == 0 && dot == 0) {
-    // Underflow on a face at the scale of 1e-200 (or corners that round to
-    // one point, angle 0): scaled by powers of two, the angle is the same.
-    const int ea = std::ilogb(std::max(std::fabs(a.re), std::fabs(a.im)));
-    const int eb = std::ilogb(std::max(std::fabs(b.re), std::fabs(b.im)));
-    if (ea == FP_ILOGB0 || eb == FP_ILOGB0) return 0;
-    a = {std::scalbn(a.re, -ea), std::scalbn(a.im, -ea)}, b = {std::scalbn(b.re, -eb), std::scalbn(b.im, -eb)};
-    cross = a.re * b.im - a.im * b.re, dot = a.re * b.re + a.im * b.im;
-  }
-  return std::atan2(std::fabs(cross), dot);
-}
-
-}  // namespace
 
 double shortest_edge(const Point p[3]) {
   // By a monotone function of the length, |p - q|^2 / (w_p w_q) =
@@ -55,21 +36,52 @@ double shortest_edge(const Point p[3]) {
   return 2 * std::asinh(std::sqrt(s));
 }
 
-FaceShape face_shape(const Triangulation &tri, const Face &f) {
+namespace {
+
+FaceFrame frame(const Triangulation &tri, const Face &f) {
   const Point p[3] = {face_corner(tri, f, 0), face_corner(tri, f, 1), face_corner(tri, f, 2)};
-  return {circumcircle(tri, f, p), shortest_edge(p)};
+  return face_frame(tri, f, p);
 }
 
-double smallest_angle(const Triangulation &tri, const Face &f) {
-  const Point p[3] = {face_corner(tri, f, 0), face_corner(tri, f, 1), face_corner(tri, f, 2)};
-  return std::min({angle_at(p[0], p[1], p[2]), angle_at(p[1], p[2], p[0]), angle_at(p[2], p[0], p[1])});
+// The shortest by |d|^2 / (w_p w_q), a monotone function of the length,
+// then one logarithm (as shortest_edge).
+double shortest_side(const FaceFrame &fr) {
+  double w[3], s = HUGE_VAL;
+  int k = 0;
+  for (int i = 0; i < 3; ++i) w[i] = 1 - (fr.p[i].re * fr.p[i].re + fr.p[i].im * fr.p[i].im);
+  for (int i = 0; i < 3; ++i) {
+    const Point &d = fr.side[i];
+    const double x2 = (d.re * d.re + d.im * d.im) / (w[next(i)] * w[prev(i)]);
+    if (x2 < s) s = x2, k = i;
+  }
+  // Squares that underflow compare as 0: the three sides by length then.
+  if (!(s > 0x1p-960)) {
+    double best = HUGE_VAL;
+    for (int i = 0; i < 3; ++i) best = std::min(best, side_length(fr.side[i], w[next(i)], w[prev(i)]));
+    return best;
+  }
+  return side_length(fr.side[k], w[next(k)], w[prev(k)]);
 }
+
+double smallest_angle(const FaceFrame &fr) {
+  return std::min({corner_angle(fr, 0), corner_angle(fr, 1), corner_angle(fr, 2)});
+}
+
+}  // namespace
+
+FaceShape face_shape(const Triangulation &tri, const Face &f) {
+  const FaceFrame fr = frame(tri, f);
+  return {circumcircle(tri, f, fr), shortest_side(fr)};
+}
+
+double smallest_angle(const Triangulation &tri, const Face &f) { return smallest_angle(frame(tri, f)); }
 
 Quality quality(const Triangulation &tri) {
   Quality q{std::numeric_limits<double>::infinity(), 0, 0, std::numeric_limits<double>::infinity()};
   for (const Face &f : tri.faces()) {
-    const FaceShape s = face_shape(tri, f);
-    q.min_angle = std::min(q.min_angle, smallest_angle(tri, f));
+    const FaceFrame fr = frame(tri, f);
+    const FaceShape s{circumcircle(tri, f, fr), shortest_side(fr)};
+    q.min_angle = std::min(q.min_angle, smallest_angle(fr));
     q.max_ratio = std::max(q.max_ratio, s.circle.radius / s.shortest_edge);
     q.max_radius = std::max(q.max_radius, s.circle.radius);
     // Every edge of the surface is an edge of some face, and the closest
