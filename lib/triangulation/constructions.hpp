@@ -48,15 +48,20 @@ struct Circle {
 // rounded: some point is not exact (a translated or algebraic corner).
 bool try_circumcircle(const Point &p0, const Point &p1, const Point &p2, bool rounded, Circle *circle);
 
-// Face f's circumcircle, p its corners (face_corner): try_circumcircle, or
-// in multiprecision from the exact data for the rare faces double cannot
-// resolve (precise_circumcircle.hpp). Every face has one. Refinement, the
+// Face f's circumcircle, p its corners (face_corner): in double from its
+// frame, or in multiprecision from the exact data for the rare faces
+// double cannot resolve (precise_circumcircle.hpp). Every face has one. The
 // quality measures and the dual outputs all use it (circumcentre() without
 // the radius's logarithm when none is asked), so their centres agree to
 // the bit.
 Circle circumcircle(const Triangulation &tri, const Face &f, const Point p[3]);
 Point circumcentre(const Triangulation &tri, const Face &f, const Point p[3], double *radius);
 
+// The same circle from the corners as they are, without the frame: as
+// accurate as the corners (docs/refinement.md's error analysis), not
+// relatively accurate on thin or tiny faces, which refinement leaves
+// anyway (refine.hpp's resolution); refinement's choice, for speed.
+Circle coarse_circumcircle(const Triangulation &tri, const Face &f, const Point p[3]);
 // Face f's circumcircle from its frame (the same bits as circumcircle()).
 Circle circumcircle(const Triangulation &tri, const Face &f, const FaceFrame &frame);
 

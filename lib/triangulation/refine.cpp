@@ -23,7 +23,7 @@ namespace hdt::triangulation {
 
 bool is_bad(const Triangulation &tri, const Face &f, const RefineBounds &b, Circle *circle) {
   const Point p[3] = {face_corner(tri, f, 0), face_corner(tri, f, 1), face_corner(tri, f, 2)};
-  *circle = circumcircle(tri, f, p);
+  *circle = coarse_circumcircle(tri, f, p);
   const double r = circle->radius * (1 + kRefineMargin);
   if (r > b.max_radius) return true;
   // No shape bound (epsilon-nets): no edge lengths needed.
