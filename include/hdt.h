@@ -70,7 +70,7 @@ HDT_API const char *hdt_last_error_message(void) HDT_NOEXCEPT;
    a later function can test at compile time, e.g. hdt_save (HDT_0.4) with
    #if HDT_VERSION >= 400. hdt_version() is the library's own at run time. */
 #define HDT_VERSION_MAJOR 0
-#define HDT_VERSION_MINOR 5
+#define HDT_VERSION_MINOR 6
 #define HDT_VERSION_PATCH 0
 #define HDT_VERSION (HDT_VERSION_MAJOR * 10000 + HDT_VERSION_MINOR * 100 + HDT_VERSION_PATCH)
 
@@ -328,6 +328,20 @@ HDT_API hdt_status hdt_translation_word(const hdt_triangulation *t, int32_t id, 
                                         size_t capacity, size_t *out_length) HDT_NOEXCEPT;
 /* The SU(1,1) matrix of a translation id (layout of hdt_word_matrix). */
 HDT_API hdt_status hdt_translation_matrix(const hdt_triangulation *t, int32_t id, double m[4]) HDT_NOEXCEPT;
+/* The class [h] in H_1(M_g; Z) = Z^{2g} of a translation id h (symbol
+   version HDT_0.6): its abelianisation over the generators, out[k] for
+   k = 0..2g-1 the number of letters k minus the number of letters k + 2g
+   (g_k^-1) in its word. The relator counts 0 (each g_k and each g_k^-1
+   occurs in it once), so this is a homomorphism: [h h'] = [h] + [h'],
+   [h^-1] = -[h], the same for every word of h. Characters of Gamma_g into
+   U(1), the twists of hyperbolic band theory, factor through it:
+   chi_k(h) = exp(i k . [h]). Two-call pattern as in hdt_faces, capacity in
+   entries: capacity 0 asks for *count (= 2g; out may then be NULL);
+   HDT_EBUFS, with *count set and nothing written, when 0 < capacity < 2g.
+   HDT_EINVAL, nothing written, for t or count NULL, an unknown id, out NULL
+   with capacity > 0. */
+HDT_API hdt_status hdt_translation_homology(const hdt_triangulation *t, int32_t id, int32_t *out, size_t capacity,
+                                            size_t *count) HDT_NOEXCEPT;
 
 /* Point location: the face (index in hdt_faces order) whose copy contains
    the disk point (x, y), and the translation id h of that copy: (x, y) lies

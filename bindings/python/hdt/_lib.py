@@ -97,6 +97,7 @@ PROTOTYPES = {
     "hdt_faces": (_status, (_handle, _uint32_p, _int32_p, _size, _size_p)),
     "hdt_translation_word": (_status, (_handle, _int32, _word, _size, _size_p)),
     "hdt_translation_matrix": (_status, (_handle, _int32, _double_p)),
+    "hdt_translation_homology": (_status, (_handle, _int32, _int32_p, _size, _size_p)),
     "hdt_locate": (_status, (_handle, _double, _double, _size_p, _int32_p)),
     "hdt_nearest_vertex": (_status, (_handle, _double, _double, _uint32_p)),
     "hdt_validate": (_status, (_handle,)),

@@ -593,6 +593,39 @@ class Triangulation:
                                                   translation)
         return complex(re_a, im_a), complex(re_b, im_b)
 
+    def translation_homology(self, translation):
+        """The class [h] in Z^{2g} of a translation id h (hdt_translation_homology,
+        symbol version HDT_0.6): a tuple of 2g ints, coordinate k the number
+        of letters k minus the number of letters k + 2g in its word; a
+        homomorphism ([h h'] = [h] + [h']); id 0, the identity, gives zeros. :class:`hdt.InvalidArgument` for an unknown id."""
+        translation = c_translation(translation)
+        with self._lock:
+            handle = self._live("translation_homology")
+            size = 2 * lib.hdt_genus(handle)
+            out = (ctypes.c_int32 * size)()
+            count = ctypes.c_size_t()
+            check(lib.hdt_translation_homology(handle, translation, out, size, ctypes.byref(count)))
+            if count.value != size:
+                raise InternalError(f"translation_homology: {count.value} coordinates, 2g is {size}")
+        return tuple(out)
+
+    def corner_homology(self):
+        """Per face and corner, the class in Z^{2g} of the corner's translation
+        (:meth:`faces`, :meth:`translation_homology`): an int32 array of shape
+        (F, 3, 2g) with NumPy, else a list (per face) of three tuples. The
+        relative class of corners i and j of a face, row[j] - row[i], does not
+        depend on the face's copy; hdt.fem twists by it."""
+        translations = self.faces().translations
+        np = _arrays.numpy
+        if np is None:
+            classes = {h: self.translation_homology(h) for h in {h for row in translations for h in row}}
+            return [tuple(classes[h] for h in row) for row in translations]
+        ids = np.asarray(translations, dtype=np.int64)
+        used, where = np.unique(ids, return_inverse=True)  # a few hundred ids for any mesh
+        table = np.array([self.translation_homology(int(h)) for h in used], dtype=np.int32).reshape(
+            len(used), 2 * self.genus)
+        return table[where.reshape(ids.shape)]
+
     # ---- adjacency, edges, corners, the Voronoi diagram ----
 
     def _list(self, what, function, outputs, count):
