@@ -714,7 +714,7 @@ std::size_t canonical_ladder_length(const Presentation &p) {
   return m > 0 ? std::size_t(m) : 0;
 }
 
-Word canonical_word(const Presentation &p, const Letter *input, std::size_t length) {
+Word canonical_word(const Presentation &p, const Letter *input, std::size_t length, std::size_t max_runtime_length) {
   p.check_word(input, length);
   Word w = dehn_reduce(p, input, length);
   // Peel the least possible first letter off h until nothing is left. Each
@@ -740,6 +740,10 @@ Word canonical_word(const Presentation &p, const Letter *input, std::size_t leng
       if ((s.steps == 0 || s.rung > 2) && peel_tracked<exact::mp_real<kPeelDigits10[2]>>(p, d, w, out, bound)) break;
       if (s.steps == 0) {
         // Longer than the top rung certifies: a run-time precision.
+        if (w.size() > max_runtime_length)
+          throw std::length_error("the Dehn-reduced word has " + std::to_string(w.size()) +
+                                  " letters and needs a run-time precision, computed up to " +
+                                  std::to_string(max_runtime_length) + " letters");
         if (peel_beyond_ladder(p, d, w, out, bound)) break;
       } else if (with_rung(s.rung,
                            [&](auto zero) { return peel_segment<decltype(zero)>(p, d, w, s.steps, out, bound); })) {
