@@ -138,6 +138,42 @@ START_TEST(generator_powers_are_canonical) {
 }
 END_TEST
 
+/* Past the compile-time precision ladder (Dehn-reduced words of about
+   1370 letters at genus 2): g_0^1500 is its own canonical word, a word of
+   1608 letters comes back canonical and names the same element (Dehn's
+   algorithm takes its product with the inverse to the empty word), and a
+   word that needs a run-time precision is refused past 2048 letters, as
+   hdt.h says, with nothing written. */
+START_TEST(canonical_words_past_the_precision_ladder) {
+  enum { N = 1500, M = 800, CAP = 4 * M + 16 };
+  static int32_t w[CAP], c[CAP], both[2 * CAP];
+  size_t n = 0;
+  for (size_t i = 0; i < N; ++i) w[i] = 0;
+  OK(hdt_word_reduce(2, w, N, c, CAP, &n));
+  expect(n == N && memcmp(w, c, N * sizeof *w) == 0, "g_0^%d comes back with %zu letters", N, n);
+  const int32_t middle[] = {0, 5, 2, 7, 5, 2, 7, 4};
+  size_t len = 0;
+  for (size_t i = 0; i < M; ++i) w[len++] = 0;
+  for (size_t i = 0; i < 8; ++i) w[len++] = middle[i];
+  for (size_t i = 0; i < M; ++i) w[len++] = 1;
+  OK(hdt_word_reduce(2, w, len, c, CAP, &n));
+  expect(n > 2 * M && n <= len, "the canonical word has %zu letters", n);
+  static int32_t again[CAP];
+  size_t m = 0;
+  OK(hdt_word_reduce(2, c, n, again, CAP, &m));
+  expect(m == n && memcmp(c, again, n * sizeof *c) == 0, "the canonical word of %zu letters is not canonical", n);
+  memcpy(both, c, n * sizeof *c);
+  for (size_t i = 0; i < len; ++i) both[n + i] = (w[len - 1 - i] + 4) % 8; /* w^-1 at genus 2 */
+  OK(hdt_word_reduce(2, both, n + len, again, CAP, &m));
+  expect(m == 0, "c w^-1 reduces to %zu letters, not the identity", m);
+  static int32_t power[2049];
+  size_t untouched = 12345;
+  memset(power, 0, sizeof power);
+  const hdt_status s = hdt_word_reduce(2, power, 2049, c, CAP, &untouched);
+  expect(s == HDT_ENOTSUP && untouched == 12345, "g_0^2049: %s, length %zu", hdt_status_string(s), untouched);
+}
+END_TEST
+
 /* ---- The tiles around the vertex of F_g: canonical words known without geometry ---- */
 
 /* The 4g tiles around a corner of F_g are h_j(F_g) for the prefixes h_j of
@@ -517,6 +553,7 @@ int main(void) {
       random_words_reduce_canonically,
       chain_example_g2,
       generator_powers_are_canonical,
+      canonical_words_past_the_precision_ladder,
       canonical_is_shortlex_least_g2,
       tiles_around_the_vertex_have_known_canonical_words,
       generator_powers_overflow_with_edomain,

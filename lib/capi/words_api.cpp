@@ -35,7 +35,9 @@ HDT_API hdt_status hdt_word_reduce(int genus, const int32_t *word, size_t length
   return guarded("hdt_word_reduce", [&] {
     const Presentation p = checked_word(genus, word, length);
     if (!out_length) throw ApiError(HDT_EINVAL, "out_length must not be NULL");
-    return hdt::capi::copy_word(hdt::group::canonical_word(p, word, length), out, capacity, out_length);
+    // hdt.h: HDT_ENOTSUP past 2048 letters, only for the words that need a
+    // run-time precision.
+    return hdt::capi::copy_word(hdt::group::canonical_word(p, word, length, 2048), out, capacity, out_length);
   });
 }
 

@@ -49,7 +49,7 @@ double bits_needed(const Presentation &p, std::size_t m) { return 64.0 + word_pr
 // The rungs for peeling: those of the precision ladder with one more between
 // each two. The bits a word needs grow steadily with its length, and the
 // cost of a multiplication about quadratically with the bits, so a fine
-// ladder wastes less. The top rung is the ladder's (canonical_max_length).
+// ladder wastes less. The top rung is the ladder's (canonical_ladder_length).
 constexpr unsigned kPeelDigits10[] = {40, 80, 160, 320, 640, 1280, 2560};
 constexpr std::size_t kRungs = std::size(kPeelDigits10);
 static_assert(kPeelDigits10[kRungs - 1] == exact::kLadderDigits10[std::size(exact::kLadderDigits10) - 1]);
@@ -74,16 +74,15 @@ auto with_rung(std::size_t rung, F &&f) {
   }
 }
 
-// The longest product, in letters, that a rung certifies: n with
-// bits_needed(n) <= rung_bits. Peeling j letters off a word of m letters
+// The longest product, in letters, that `bits` of precision certify: n
+// with bits_needed(n) <= bits. Peeling j letters off a word of m letters
 // needs m + j <= n. Why: each peeling step multiplies the error carried so
 // far by at most |g^{-1}| <= 6A^2 (the bound word_precision_bits uses for a
 // product factor) and adds its own rounding, no larger than a product
 // factor's since |P| only decreases as letters come off (P moves towards O).
 // After j steps the error is that of a product of m + j letters: at most
 // 2^-64 in each coordinate on the rung, far below the margin.
-std::size_t segment_capacity(const Presentation &p, std::size_t rung) {
-  const double bits = rung_bits(rung);
+std::size_t capacity_at_bits(const Presentation &p, double bits) {
   const double per_letter = word_precision_bits(p, 1) - 2.0 * std::log2(3.0);
   // bits_needed(n) = 64 + per_letter n + 2 log2(n + 2): start above the
   // answer (the logarithm left out) and step down.
@@ -91,6 +90,8 @@ std::size_t segment_capacity(const Presentation &p, std::size_t rung) {
   while (n > 0 && bits_needed(p, std::size_t(n)) > bits) n -= 1;
   return n > 0 ? std::size_t(n) : 0;
 }
+
+std::size_t segment_capacity(const Presentation &p, std::size_t rung) { return capacity_at_bits(p, rung_bits(rung)); }
 
 struct Segment {
   std::size_t rung = 0;
@@ -299,19 +300,23 @@ bool peel_in_double(const Presentation &p, const DoubleGenerators &d, DoublePoin
 // filter. The error bound also holds `error`, a bound on each coordinate's
 // distance to the true point (by default 2^-64, the invariant of a segment,
 // see segment_capacity).
-template <class T>
-DoublePoint rounded_point(const HyperboloidPoint<T> &P, double error = 0x1p-64) {
+DoublePoint rounded_point(mpfr_srcptr t, mpfr_srcptr u, mpfr_srcptr v, double error = 0x1p-64) {
   DoublePoint x;
-  x.scale = int(mpfr_get_exp(P.t.backend().data()));
-  const T *coordinates[3] = {&P.t, &P.u, &P.v};
+  x.scale = int(mpfr_get_exp(t));
+  const mpfr_srcptr coordinates[3] = {t, u, v};
   const double carried = std::ldexp(error, -x.scale);
   for (int i = 0; i < 3; ++i) {
     long exponent = 0;
-    const double mantissa = mpfr_get_d_2exp(&exponent, coordinates[i]->backend().data(), MPFR_RNDN);
+    const double mantissa = mpfr_get_d_2exp(&exponent, coordinates[i], MPFR_RNDN);
     x.P[i] = std::ldexp(mantissa, int(exponent - x.scale));
     x.E[i] = kUnit * std::abs(x.P[i]) + carried + kTiny;
   }
   return x;
+}
+
+template <class T>
+DoublePoint rounded_point(const HyperboloidPoint<T> &P, double error = 0x1p-64) {
+  return rounded_point(P.t.backend().data(), P.u.backend().data(), P.v.backend().data(), error);
 }
 
 // The same point without the scale, for peeling on in double precision.
@@ -464,6 +469,194 @@ bool peel_tracked(const Presentation &p, const DoubleGenerators &d, const Word &
   }
 }
 
+// ---------------------------------------------------------------------------
+// Beyond the ladder: MPFR at a precision chosen at run time
+//
+// A Dehn-reduced word longer than the top rung's capacity (412 letters at
+// genus 256: the words of points within 10^-15 of the circle reach 490) is
+// peeled in one segment on a precision chosen from the same bound as the
+// rungs, bits_needed(2m) for a word of m letters: every letter off it (the
+// canonical word is no longer than m) at the error of a product of 2m
+// letters, 2^-64 in each coordinate. The values are raw mpfr_t of that
+// precision (never a default precision); the precisions are a ladder of
+// their own, the top rung times 2^(k/2), so that their generators are built
+// once per genus and rung.
+
+// Run-time rung k >= 1: the ladder's top bits times 2^(k/2), rounded up to
+// a multiple of 64.
+mpfr_prec_t runtime_rung_bits(int k) {
+  const double bits = std::ceil(double(exact::ladder_top_bits()) * std::exp2(0.5 * k) / 64.0) * 64.0;
+  return mpfr_prec_t(bits);
+}
+
+// n MPFR values of one precision, initialised and cleared together.
+class MpValues {
+ public:
+  MpValues(std::size_t n, mpfr_prec_t prec) : v_(n) {
+    for (__mpfr_struct &x : v_) mpfr_init2(&x, prec);
+  }
+  ~MpValues() {
+    for (__mpfr_struct &x : v_) mpfr_clear(&x);
+  }
+  MpValues(const MpValues &) = delete;
+  MpValues &operator=(const MpValues &) = delete;
+  mpfr_ptr operator[](std::size_t i) { return &v_[i]; }
+  mpfr_srcptr operator[](std::size_t i) const { return &v_[i]; }
+
+ private:
+  std::vector<__mpfr_struct> v_;
+};
+
+// The generators of one genus at a run-time precision, kept as what their
+// Lorentz matrices are made of (GeneratorSet's 4g matrices of 9 entries
+// would take 110 MB at genus 1024 and 24,000 bits). With B_k = |B| e^{i th},
+// th = k pi/2g, Lorentz::from_moebius gives
+//   [[N, X cos th, X sin th], [X cos th, A^2 + Z cos 2th, Z sin 2th],
+//    [X sin th, Z sin 2th, A^2 - Z cos 2th]],
+// N = 2A^2 - 1, X = 2A|B|, Z = |B|^2 = A^2 - 1: stored are X c_a and Z c_a
+// for c_a = cos(a pi/2g), a = 0..g, from which every angle k pi/2g folds
+// with a sign, as in GeneratorSet. Each stored value is computed 32 bits
+// above the precision (c_a as quarter_turn_cosines does) and rounded once:
+// within one ulp, as the rungs' entries are. A product rounds each row
+// three times, each rounding at most a unit of the row's absolute sum, as a
+// product on a rung does, so bits_needed bounds its error the same way.
+class RuntimeGenerators {
+ public:
+  RuntimeGenerators(const Presentation &p, mpfr_prec_t prec)
+      : g_(p.genus()), prec_(prec), c_(kConstants, prec), X_(std::size_t(g_) + 1, prec), Z_(std::size_t(g_) + 1, prec) {
+    const mpfr_prec_t high = prec + 32;
+    MpValues w(8, high);
+    mpfr_ptr A = w[0], A2 = w[1], Bm = w[2], X = w[3], angle = w[4], cz = w[5], sz = w[6], next = w[7];
+    mpfr_const_pi(angle, MPFR_RNDN);
+    mpfr_div_ui(angle, angle, 4 * static_cast<unsigned long>(g_), MPFR_RNDN);
+    mpfr_cot(A, angle, MPFR_RNDN);
+    mpfr_sqr(A2, A, MPFR_RNDN);
+    mpfr_sub_ui(Bm, A2, 1, MPFR_RNDN);  // |B|^2 = Z
+    mpfr_set(c_[kZ], Bm, MPFR_RNDN);
+    mpfr_set(c_[kA2], A2, MPFR_RNDN);
+    mpfr_mul_2ui(next, A2, 1, MPFR_RNDN);
+    mpfr_sub_ui(next, next, 1, MPFR_RNDN);  // N = 2A^2 - 1
+    mpfr_set(c_[kN], next, MPFR_RNDN);
+    mpfr_ui_sub(next, 1, next, MPFR_RNDN);  // 1 - N, for the separation tests
+    mpfr_set(c_[kOneMinusN], next, MPFR_RNDN);
+    mpfr_set(c_[kMargin], Bm, MPFR_RNDD);  // A^2 - 1: half the proven bound 2(A^2 - 1)
+    mpfr_sqrt(X, Bm, MPFR_RNDN);
+    mpfr_mul(X, X, A, MPFR_RNDN);
+    mpfr_mul_2ui(X, X, 1, MPFR_RNDN);  // X = 2A|B|
+    // cos(a pi/2g) as powers of e^{i pi/2g} (see quarter_turn_cosines).
+    mpfr_const_pi(angle, MPFR_RNDN);
+    mpfr_div_ui(angle, angle, 2 * static_cast<unsigned long>(g_), MPFR_RNDN);
+    mpfr_sin_cos(sz, cz, angle, MPFR_RNDN);
+    MpValues z(2, high);
+    mpfr_set_ui(z[0], 1, MPFR_RNDN);
+    mpfr_set_ui(z[1], 0, MPFR_RNDN);
+    for (int a = 0; a <= g_; ++a) {
+      if (a == g_) {
+        mpfr_set_zero(X_[std::size_t(a)], 1), mpfr_set_zero(Z_[std::size_t(a)], 1);
+        break;
+      }
+      mpfr_mul(X_[std::size_t(a)], X, z[0], MPFR_RNDN);
+      mpfr_mul(Z_[std::size_t(a)], Bm, z[0], MPFR_RNDN);
+      mpfr_fmms(next, z[0], cz, z[1], sz, MPFR_RNDN);
+      mpfr_fmma(z[1], z[0], sz, z[1], cz, MPFR_RNDN);
+      mpfr_swap(z[0], next);
+    }
+  }
+
+  mpfr_prec_t precision() const { return prec_; }
+  mpfr_srcptr margin() const { return c_[kMargin]; }
+
+  // P <- L_k P; scratch holds at least 6 values of the precision.
+  void apply(Letter k, mpfr_ptr t, mpfr_ptr u, mpfr_ptr v, MpValues &s) const {
+    mpfr_ptr xc = s[0], xs = s[1], zc = s[2], zs = s[3], r1 = s[4], r2 = s[5], r3 = s[6], r4 = s[7];
+    fold(X_, k, xc, xs);
+    fold(Z_, (2 * k) % (4 * g_), zc, zs);
+    mpfr_fmma(r1, c_[kN], t, xc, u, MPFR_RNDN);
+    mpfr_mul(r2, xs, v, MPFR_RNDN);
+    mpfr_add(r1, r1, r2, MPFR_RNDN);  // t'
+    mpfr_fmma(r2, xc, t, c_[kA2], u, MPFR_RNDN);
+    mpfr_fmma(r3, zc, u, zs, v, MPFR_RNDN);
+    mpfr_add(r2, r2, r3, MPFR_RNDN);  // u'
+    mpfr_fmma(r3, xs, t, zs, u, MPFR_RNDN);
+    mpfr_fmms(r4, c_[kA2], v, zc, v, MPFR_RNDN);
+    mpfr_add(v, r3, r4, MPFR_RNDN);  // v'
+    mpfr_swap(t, r1);
+    mpfr_swap(u, r2);
+  }
+
+  // The separation test <P, O - g_k(O)> = t (1 - N) + u X cos th + v X sin th.
+  int side_sign(Letter k, mpfr_srcptr t, mpfr_srcptr u, mpfr_srcptr v, MpValues &s, const Word &w) const {
+    mpfr_ptr xc = s[0], xs = s[1], r1 = s[4], r2 = s[5];
+    fold(X_, k, xc, xs);
+    mpfr_fmma(r1, t, c_[kOneMinusN], u, xc, MPFR_RNDN);
+    mpfr_mul(r2, v, xs, MPFR_RNDN);
+    mpfr_add(r1, r1, r2, MPFR_RNDN);
+    if (mpfr_cmpabs(r1, c_[kMargin]) < 0)
+      throw std::logic_error("canonical_word: separation test below its certified margin for " + word_to_string(w));
+    return mpfr_sgn(r1) > 0 ? 1 : -1;
+  }
+
+ private:
+  enum { kN, kA2, kZ, kOneMinusN, kMargin, kConstants };
+
+  // (V cos, V sin) of k pi/2g from the stored V c_a: k pi/2g = q pi/2 + a pi/2g.
+  void fold(const MpValues &V, int k, mpfr_ptr c, mpfr_ptr s) const {
+    const int q = k / g_, a = k % g_;
+    const mpfr_srcptr ca = V[std::size_t(a)], sa = V[std::size_t(g_ - a)];
+    switch (q) {
+      case 0: mpfr_set(c, ca, MPFR_RNDN), mpfr_set(s, sa, MPFR_RNDN); break;
+      case 1: mpfr_neg(c, sa, MPFR_RNDN), mpfr_set(s, ca, MPFR_RNDN); break;
+      case 2: mpfr_neg(c, ca, MPFR_RNDN), mpfr_neg(s, sa, MPFR_RNDN); break;
+      default: mpfr_set(c, sa, MPFR_RNDN), mpfr_neg(s, ca, MPFR_RNDN); break;
+    }
+  }
+
+  int g_;
+  mpfr_prec_t prec_;
+  MpValues c_, X_, Z_;
+};
+
+// Built once per genus and run-time rung and never freed, as
+// shared_generators does (a few MB each at genus 1024, for the rare words
+// that need them).
+const RuntimeGenerators &runtime_generators(const Presentation &p, int rung) {
+  static std::mutex mutex;
+  static std::map<std::pair<int, int>, std::unique_ptr<const RuntimeGenerators>> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto &slot = cache[{p.genus(), rung}];
+  if (!slot) slot = std::make_unique<const RuntimeGenerators>(p, runtime_rung_bits(rung));
+  return *slot;
+}
+
+// peel_segment for a word beyond the ladder: the whole word on the least
+// run-time rung that certifies 2m letters. True when P reached O.
+bool peel_beyond_ladder(const Presentation &p, const DoubleGenerators &d, const Word &w, Word &out,
+                        std::size_t bound) {
+  const double need = bits_needed(p, 2 * w.size());
+  int rung = 1;
+  while (double(runtime_rung_bits(rung)) < need) ++rung;
+  const RuntimeGenerators &gens = runtime_generators(p, rung);
+  const std::size_t budget = capacity_at_bits(p, double(gens.precision())) - w.size();
+  MpValues P(3, gens.precision()), scratch(8, gens.precision());
+  mpfr_ptr t = P[0], u = P[1], v = P[2];
+  mpfr_set_ui(t, 1, MPFR_RNDN), mpfr_set_ui(u, 0, MPFR_RNDN), mpfr_set_ui(v, 0, MPFR_RNDN);
+  for (std::size_t i = w.size(); i-- > 0;) gens.apply(w[i], t, u, v, scratch);
+  for (std::size_t j = 0;; ++j) {
+    const DoublePoint x = rounded_point(t, u, v);
+    if (x.scale <= kDoubleScale) {
+      const std::size_t before = out.size();
+      if (peel_in_double(p, d, unscaled(x), out, bound)) return true;
+      out.resize(before);
+    }
+    if (j == budget) return false;
+    const Letter k =
+        least_separating_letter(d, x, [&](Letter k) { return gens.side_sign(k, t, u, v, scratch, w); });
+    if (k == kNoLetter) return true;
+    append_letter(out, k, bound);
+    gens.apply(p.inverse(k), t, u, v, scratch);
+  }
+}
+
 }  // namespace
 
 namespace {
@@ -511,7 +704,7 @@ bool walk_into_domain(const Presentation &p, double x, double y, Word &letters, 
   return walk_at<exact::mp_real<kPeelDigits10[2]>>(p, d, x, y, letters, max_steps);
 }
 
-std::size_t canonical_max_length(const Presentation &p) {
+std::size_t canonical_ladder_length(const Presentation &p) {
   // bits_needed(m) = 64 + b m + 2 log2(m + 2) with b = word_precision_bits(p, 1) - 2 log2(3);
   // bound the logarithm by that of the top and keep 2 letters of slack for
   // the peeled words.
@@ -521,14 +714,9 @@ std::size_t canonical_max_length(const Presentation &p) {
   return m > 0 ? std::size_t(m) : 0;
 }
 
-Word canonical_word(const Presentation &p, const Letter *input, std::size_t length) {
+Word canonical_word(const Presentation &p, const Letter *input, std::size_t length, std::size_t max_runtime_length) {
   p.check_word(input, length);
   Word w = dehn_reduce(p, input, length);
-  const std::size_t limit = canonical_max_length(p);
-  if (w.size() > limit)
-    throw std::length_error("the Dehn-reduced word has " + std::to_string(w.size()) +
-                            " letters; canonical words are computed up to " + std::to_string(limit) +
-                            " letters for genus " + std::to_string(p.genus()));
   // Peel the least possible first letter off h until nothing is left. Each
   // step lowers the geodesic length by one, so there are at most |w| steps.
   const std::size_t bound = w.size();
@@ -541,12 +729,26 @@ Word canonical_word(const Presentation &p, const Letter *input, std::size_t leng
     if (peel_in_double(p, d, double_image(d, w), out, bound)) break;
     if (out.size() == start) {
       // 40 digits with the tracked bound finish most words; the schedule
-      // of rungs by length is the fallback.
+      // of rungs by length is the fallback. Before a rung above 160 digits
+      // (or a run-time precision), 160 digits with the tracked bound: the
+      // words of points near the circle are long but their points stay
+      // within cosh 2^53 of O, a few hundred bits, where the length asks for
+      // tens of thousands (a word of 1908 letters at genus 1024: 8.1 s on a
+      // run-time precision of 90,000 bits, 0.43 s for the whole call now).
       if (peel_tracked<exact::mp_real<kPeelDigits10[0]>>(p, d, w, out, bound)) break;
       const Segment s = plan_segment(p, w.size());
-      if (s.steps == 0) throw std::logic_error("canonical_word: a peeled word outgrew the precision");
-      if (with_rung(s.rung, [&](auto zero) { return peel_segment<decltype(zero)>(p, d, w, s.steps, out, bound); }))
+      if ((s.steps == 0 || s.rung > 2) && peel_tracked<exact::mp_real<kPeelDigits10[2]>>(p, d, w, out, bound)) break;
+      if (s.steps == 0) {
+        // Longer than the top rung certifies: a run-time precision.
+        if (w.size() > max_runtime_length)
+          throw std::length_error("the Dehn-reduced word has " + std::to_string(w.size()) +
+                                  " letters and needs a run-time precision, computed up to " +
+                                  std::to_string(max_runtime_length) + " letters");
+        if (peel_beyond_ladder(p, d, w, out, bound)) break;
+      } else if (with_rung(s.rung,
+                           [&](auto zero) { return peel_segment<decltype(zero)>(p, d, w, s.steps, out, bound); })) {
         break;
+      }
     }
     // The bound or the rung's bits are spent: go on from a Dehn-reduced word
     // of the rest, h with the letters found since `start` peeled off.

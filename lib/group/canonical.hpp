@@ -10,20 +10,27 @@
 // <P, O - g_k(O)> for the hyperboloid point P = h(O), whose magnitude is at
 // least 2 (A^2 - 1) because tile centres keep the inradius from every line;
 // multiprecision arithmetic with a precision chosen from the word length
-// makes the computed sign certain (and it is checked against that margin).
+// makes the computed sign certain (and it is checked against that margin):
+// the compile-time ladder's rungs, and past its top (412 letters at genus
+// 256) MPFR at a precision chosen at run time from the same bound.
 #pragma once
 
 #include "group/presentation.hpp"
 
 namespace hdt::group {
 
-// Longest Dehn-reduced word the built-in precision ladder can canonicalise
-// for genus g (depends on g through the generators' size).
-std::size_t canonical_max_length(const Presentation &p);
+// Longest Dehn-reduced word the compile-time precision ladder canonicalises
+// for genus g (depends on g through the generators' size); longer words
+// take a run-time precision (slower: bits grow linearly with the length).
+std::size_t canonical_ladder_length(const Presentation &p);
 
-// Throws std::invalid_argument for invalid letters, std::length_error when
-// the Dehn-reduced word exceeds canonical_max_length.
-Word canonical_word(const Presentation &p, const Letter *w, std::size_t length);
+// Words of any length. Throws std::invalid_argument for invalid letters;
+// std::length_error only for a word that needs a run-time precision (past
+// the ladder's reach and the tracked bound's at 160 digits) and whose
+// Dehn-reduced rest then has more than max_runtime_length letters: the cost
+// grows about as the cube of the length there (g_0^2000 at genus 1024: 6 s).
+Word canonical_word(const Presentation &p, const Letter *w, std::size_t length,
+                    std::size_t max_runtime_length = std::size_t(-1));
 inline Word canonical_word(const Presentation &p, const Word &w) { return canonical_word(p, w.data(), w.size()); }
 
 // The walk of a point of the disk into F_g, with a point tracked at 40

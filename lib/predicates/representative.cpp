@@ -1,6 +1,7 @@
 #include "predicates/representative.hpp"
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -69,25 +70,21 @@ namespace {
 // 1e-15 from the circle took seconds (words of 300 to 400 letters).
 constexpr double kFarFromO = 0x1p-10;
 
-// The element the tracked walk reached (0 when it went nowhere, or its
-// word is too long to intern).
+// The element the tracked walk reached (0 when it went nowhere). The walk
+// has no step limit: each step crosses a line that separates the point from
+// O, so it ends within the length of the point's word.
 TranslationId tracked_start(Kernel &kernel, double x, double y) {
   if (!(1 - (x * x + y * y) < kFarFromO)) return 0;
   group::TranslationTable &table = kernel.surface().table();
   const group::Presentation &p = table.presentation();
-  const std::size_t limit = group::canonical_max_length(p);
   group::Word letters;
-  group::walk_into_domain(p, x, y, letters, limit);
+  group::walk_into_domain(p, x, y, letters, std::numeric_limits<std::size_t>::max());
   if (letters.empty()) return 0;
   // g_{k_n}^-1 ... g_{k_1}^-1, as the exact walk prepends them.
   group::Word h;
   h.reserve(letters.size());
   for (std::size_t i = letters.size(); i-- > 0;) h.push_back(p.inverse(letters[i]));
-  try {
-    return table.intern(h);
-  } catch (const std::length_error &) {
-    return 0;  // (the exact walk meets the same limit, letter by letter)
-  }
+  return table.intern(h);
 }
 
 }  // namespace

@@ -77,7 +77,7 @@ class BufferTooSmall(Error):
 
 class NotSupported(Error):
     """HDT_ENOTSUP: a valid request beyond what this build supports (genus
-    above HDT_GENUS_MAX, or above HDT_CREATE_GENUS_MAX for a triangulation, a reduced word too long for the built-in precision),
+    above HDT_GENUS_MAX, or above HDT_CREATE_GENUS_MAX for a triangulation, a reduced word of more than 2048 letters needing a run-time precision),
     or a vertex removal refused because the triangulation would lose its
     circumdiameter guarantee (nothing is changed then)."""
 

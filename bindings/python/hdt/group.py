@@ -21,8 +21,8 @@ def reduce_word(genus, word):
     The canonical word is the shortlex-least geodesic word (fewest letters;
     among those, lexicographically least). Two words of the same element give
     the same canonical word; the identity gives (). Raises
-    :class:`hdt.NotSupported` when the reduced word is too long for the
-    library's built-in precision (hundreds of letters).
+    :class:`hdt.NotSupported` when the reduced word has more than 2048
+    letters and needs a precision that grows with its length (see hdt.h).
     """
     letters, length = c_word(word)
     # A canonical word is never longer than the word, so one call mostly does.
