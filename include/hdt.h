@@ -236,11 +236,16 @@ HDT_API hdt_status hdt_neighbour_word(int genus, size_t id, int32_t *out,
    larger ids are given by a triangulation as it meets new elements and are
    valid for that handle only (hdt_translation_word, hdt_translation_matrix).
 
-   A call that fails leaves the triangulation exactly as it was, with one
-   exception: memory running out (HDT_ENOMEM) part way through
-   hdt_insert_many or hdt_remove_dummies, which then keep the work done so
-   far, in a valid triangulation. One handle is used by one thread at a
-   time; distinct handles are independent. While hdt_insert_many,
+   Every function below that takes a handle and returns an hdt_status may
+   return, beside the statuses its comment names, HDT_EINVAL for t NULL or
+   busy (below) and HDT_ENOMEM when memory runs out; these are not repeated
+   at each function. A call that fails leaves the triangulation exactly as
+   it was, with one exception: memory running out (HDT_ENOMEM) part way
+   through hdt_insert_many, hdt_remove_dummies, hdt_refine or
+   hdt_epsilon_net, which then keep the work done so far, in a valid
+   triangulation (their outputs, or hdt_dummy_count, tell what was kept).
+   One handle is used by one thread at a time; distinct handles are
+   independent. While hdt_insert_many,
    hdt_refine or hdt_epsilon_net runs, its progress function may not use
    the handle: such calls fail with HDT_EINVAL, nothing changed (see
    "Progress and cancellation" below). */
