@@ -11,7 +11,10 @@ Every function here reads :data:`numpy` when it is called, so setting
 whole package to the list path at run time.
 """
 
+from __future__ import annotations
+
 import ctypes
+from typing import Any, Iterable, List, Optional, Sequence, Tuple, Union
 
 from ._convert import c_coordinate
 from ._errors import InvalidArgument
@@ -19,13 +22,46 @@ from ._errors import InvalidArgument
 try:
     import numpy
 except ImportError:  # pragma: no cover - depends on the installation
-    numpy = None
+    numpy = None  # type: ignore[assignment]
+
+# The types of the package's annotations, defined once. "numpy.ndarray" is a
+# forward reference: annotations naming these types never need NumPy at run
+# time (typing.get_type_hints resolves them only given a namespace that holds
+# numpy); a type checker without NumPy's stubs takes it as Any.
+
+#: A disk point (x, y).
+Point = Tuple[float, float]
+#: A word: its letters 0..4g-1 (canonical words come as tuples).
+Word = Tuple[int, ...]
+#: What a word argument may be: any iterable of ints.
+WordLike = Iterable[int]
+#: An SU(1,1) matrix [[a, b], [conj b, conj a]] as the pair (a, b).
+Matrix = Tuple[complex, complex]
+#: Points given to the library: a NumPy array of shape (n, 2), or an
+#: iterable of pairs (x, y).
+PointsLike = Union["numpy.ndarray", Iterable[Sequence[float]]]
+#: One int a row: a NumPy array of shape (n,), or a list of ints.
+Ints = Union["numpy.ndarray", List[int]]
+#: One float a row: a NumPy float64 array of shape (n,), or a list of floats.
+Floats = Union["numpy.ndarray", List[float]]
+#: One flag a row: a NumPy bool array of shape (n,), or a list of bools.
+Bools = Union["numpy.ndarray", List[bool]]
+#: One point a row: a NumPy float64 array of shape (n, 2), or a list of (x, y).
+Points = Union["numpy.ndarray", List[Point]]
+#: A few ints a row: a NumPy array of shape (n, k), or a list of k-tuples.
+IntRows = Union["numpy.ndarray", List[Tuple[int, ...]]]
+#: A few points a row: a NumPy float64 array of shape (n, k, 2), or a list of
+#: k-tuples of (x, y).
+PointRows = Union["numpy.ndarray", List[Tuple[Point, ...]]]
+#: A few int tuples a row: a NumPy array of shape (n, k, m), or a list of
+#: k-tuples of m-tuples of ints.
+IntTupleRows = Union["numpy.ndarray", List[Tuple[Tuple[int, ...], ...]]]
 
 _NUMPY_TYPES = {ctypes.c_double: "float64", ctypes.c_uint32: "uint32", ctypes.c_int32: "int32", ctypes.c_uint8: "uint8",
                 ctypes.c_size_t: "uintp"}
 
 
-def point_buffer(points):
+def point_buffer(points: PointsLike) -> Tuple[Any, int, Any]:
     """The points as C doubles x0, y0, x1, y1, ...: (pointer, n, owner).
 
     ``owner`` holds the memory behind the pointer and must be kept alive
@@ -58,7 +94,7 @@ def point_buffer(points):
     return ctypes.cast(buffer, ctypes.POINTER(ctypes.c_double)), len(flat) // 2, buffer
 
 
-def output(ctype, rows, columns=None):
+def output(ctype: Any, rows: int, columns: Optional[int] = None) -> Tuple[Any, Any]:
     """A zeroed buffer for rows (x columns) values of a ctypes type: (pointer,
     owner). The owner is a NumPy array when NumPy is in use, else a ctypes
     array; :func:`result` turns it into the public value."""
@@ -71,7 +107,7 @@ def output(ctype, rows, columns=None):
     return ctypes.cast(buffer, ctypes.POINTER(ctype)), buffer
 
 
-def result(owner, columns=None):
+def result(owner: Any, columns: Optional[int] = None) -> Any:
     """The public value of an :func:`output` buffer: the NumPy array itself,
     or a list (of tuples of `columns` values when columns is given)."""
     if not isinstance(owner, ctypes.Array):
@@ -82,7 +118,7 @@ def result(owner, columns=None):
     return [tuple(values[i : i + columns]) for i in range(0, len(values), columns)]
 
 
-def flags(owner):
+def flags(owner: Any) -> Any:
     """The public value of an :func:`output` buffer of 0/1 bytes: a NumPy
     bool array, or a list of bools."""
     if not isinstance(owner, ctypes.Array):
@@ -90,6 +126,6 @@ def flags(owner):
     return [bool(value) for value in owner]
 
 
-def as_lists(value):
+def as_lists(value: Any) -> List[Any]:
     """A NumPy array (or a list) as nested Python lists of Python numbers."""
     return value.tolist() if hasattr(value, "tolist") else [list(v) if isinstance(v, tuple) else v for v in value]

@@ -1,6 +1,9 @@
 """The status codes of libhdt and the exceptions they become."""
 
+from __future__ import annotations
+
 import enum
+from typing import Optional, Union
 
 from ._lib import lib
 
@@ -29,9 +32,9 @@ class Error(Exception):
             which is also ``str(error)``.
     """
 
-    status = Status.ERROR
+    status: Union[Status, int] = Status.ERROR
 
-    def __init__(self, message, status=None):
+    def __init__(self, message: str, status: Union[Status, int, None] = None) -> None:
         super().__init__(message)
         self.message = message
         if status is not None:
@@ -59,7 +62,7 @@ class AlreadyExists(Error):
     """
 
     status = Status.EEXISTS
-    vertex = None
+    vertex: Optional[int] = None
 
 
 class OutOfMemory(Error, MemoryError):

@@ -51,11 +51,25 @@ band theory, docs/bands.md) are meant to be built on it.
 same O(h^2) order for eigenvalues, usually with the opposite sign of error).
 """
 
-import collections
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, NamedTuple, Sequence, Tuple, Union
+
+if TYPE_CHECKING:  # for the annotations only: importing hdt needs neither NumPy nor SciPy
+    import numpy
+    import scipy.sparse
+
+    from .triangulation import Triangulation
 
 __all__ = ["P1Matrices", "p1_matrices", "seam_mismatch"]
 
-P1Matrices = collections.namedtuple("P1Matrices", "stiffness mass vertices")
+
+class P1Matrices(NamedTuple):
+    stiffness: scipy.sparse.csr_matrix
+    mass: scipy.sparse.csr_matrix
+    vertices: numpy.ndarray
+
+
 P1Matrices.__doc__ = """The P1 matrices of a triangulation: stiffness and mass, SciPy
 sparse (CSR, symmetric; complex Hermitian when twisted by k) of order V,
 row i for the vertex id vertices[i]."""
@@ -74,7 +88,7 @@ _RULE = [
 CHARTS = ("klein", "klein-copy", "poincare")
 
 
-def _modules():
+def _modules() -> Tuple[Any, Any]:
     try:
         import numpy
         import scipy.sparse
@@ -136,7 +150,8 @@ def _barycentric(np, p, q):
     return np.stack([1 - l1 - l2, l1, l2], axis=-1)
 
 
-def seam_mismatch(triangulation, chart="klein", samples=(0.25, 0.5, 0.75)):
+def seam_mismatch(triangulation: Triangulation, chart: str = "klein",
+                  samples: Union[numpy.ndarray, Sequence[float]] = (0.25, 0.5, 0.75)) -> float:
     """How far the hat functions of two faces disagree along their shared
     edge: the largest |phi_f - phi_f'| over every edge (both faces' hat
     functions of the edge's two ends) at the points of chord parameter s in
@@ -178,7 +193,8 @@ def seam_mismatch(triangulation, chart="klein", samples=(0.25, 0.5, 0.75)):
     return worst
 
 
-def p1_matrices(triangulation, chart="klein", lumped=False, k=None):
+def p1_matrices(triangulation: Triangulation, chart: str = "klein", lumped: bool = False,
+                k: Union[numpy.ndarray, Sequence[float], None] = None) -> P1Matrices:
     """The P1 stiffness and mass matrices of the hyperbolic metric on the
     triangulation (dummy vertices included: they are vertices of the mesh)
     as a :class:`P1Matrices` (stiffness, mass, vertices). chart is "klein",

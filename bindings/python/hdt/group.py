@@ -11,11 +11,16 @@ genus < 2 or a letter outside 0..4g-1, :class:`hdt.NotSupported` for a genus
 above HDT_GENUS_MAX, and TypeError when the word is not an iterable of ints.
 """
 
+from __future__ import annotations
+
+from typing import List, Tuple
+
+from ._arrays import Matrix, Point, Word, WordLike
 from ._convert import c_coordinate, c_genus, c_id, c_word, call_doubles, call_point, call_size, call_word
 from ._lib import lib
 
 
-def reduce_word(genus, word):
+def reduce_word(genus: int, word: WordLike) -> Word:
     """The canonical word of the element, as a tuple of ints.
 
     The canonical word is the shortlex-least geodesic word (fewest letters;
@@ -29,7 +34,7 @@ def reduce_word(genus, word):
     return call_word(lib.hdt_word_reduce, c_genus(genus), letters, length, capacity=length)
 
 
-def word_matrix(genus, word):
+def word_matrix(genus: int, word: WordLike) -> Matrix:
     """The SU(1,1) matrix [[a, b], [conj b, conj a]] of the word as the pair
     (a, b) of complex numbers, in double precision.
 
@@ -44,7 +49,7 @@ def word_matrix(genus, word):
     return complex(re_a, im_a), complex(re_b, im_b)
 
 
-def word_lorentz(genus, word):
+def word_lorentz(genus: int, word: WordLike) -> Tuple[Tuple[float, ...], ...]:
     """The 3x3 Lorentz matrix of the word acting on the hyperboloid
     t^2 - u^2 - v^2 = 1, as a tuple of three rows (t, u, v).
 
@@ -58,7 +63,7 @@ def word_lorentz(genus, word):
     return tuple(tuple(m[row : row + 3]) for row in (0, 3, 6))
 
 
-def word_apply(genus, word, x, y):
+def word_apply(genus: int, word: WordLike, x: float, y: float) -> Point:
     """The image (x', y') of the disk point (x, y) under the word's element.
 
     A word of the identity returns (x, y) unchanged. Raises
@@ -72,13 +77,13 @@ def word_apply(genus, word, x, y):
     return call_point(lib.hdt_word_apply, c_genus(genus), letters, length, x, y)
 
 
-def neighbour_count(genus):
+def neighbour_count(genus: int) -> int:
     """The size (4g-1)^2 of N = {h in Gamma_g : h(F_g) meets F_g}, identity
     included."""
     return call_size(lib.hdt_neighbour_count, c_genus(genus))
 
 
-def neighbour_word(genus, id):
+def neighbour_word(genus: int, id: int) -> Word:
     """The canonical word (a tuple of ints) of the element of N with
     translation id `id`.
 
@@ -89,7 +94,7 @@ def neighbour_word(genus, id):
     return call_word(lib.hdt_neighbour_word, c_genus(genus), c_id(id))
 
 
-def neighbour_words(genus):
+def neighbour_words(genus: int) -> List[Word]:
     """The canonical words of N as a list indexed by translation id
     (see :func:`neighbour_word`)."""
     return [neighbour_word(genus, i) for i in range(neighbour_count(genus))]

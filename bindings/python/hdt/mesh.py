@@ -28,11 +28,20 @@ meshio's own writers then give VTU, Gmsh, OBJ, OFF and the rest:
 source tree explains taking the mesh into a solver.
 """
 
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, Tuple
+
+if TYPE_CHECKING:  # for the annotations only: meshio is optional, and triangulation imports this module
+    import meshio
+
+    from .triangulation import Triangulation
+
 #: The layouts :func:`to_meshio` takes.
 LAYOUTS = ("representatives", "unfolded")
 
 
-def _modules():
+def _modules() -> Tuple[Any, Any]:
     try:
         import meshio
         import numpy
@@ -41,7 +50,7 @@ def _modules():
     return meshio, numpy
 
 
-def to_meshio(triangulation, layout="representatives"):
+def to_meshio(triangulation: Triangulation, layout: str = "representatives") -> meshio.Mesh:
     """The triangulation as a ``meshio.Mesh`` in one of :data:`LAYOUTS`
     (see the module's documentation). :class:`ValueError` for another
     layout; :class:`ImportError` without meshio or NumPy."""

@@ -21,12 +21,23 @@ are complex numbers x + iy in :func:`moebius` and the geodesic helpers;
 :class:`Scene` keeps real (x, y) pairs, as the library does.
 """
 
+from __future__ import annotations
+
 import cmath
 import math
+from typing import TYPE_CHECKING, Iterable, List, Optional, Sequence, Tuple
 
-from ._arrays import as_lists
+from ._arrays import Matrix, Point, as_lists
 from .group import neighbour_words, word_matrix
 from .surface import polygon_side_midpoint, polygon_vertex
+
+if TYPE_CHECKING:  # for the annotations only: matplotlib is optional, and triangulation imports this module
+    import matplotlib.axes
+
+    from .triangulation import Triangulation
+
+#: An SU(1,1) matrix as the library's four doubles (Re a, Im a, Re b, Im b).
+RealMatrix = Tuple[float, float, float, float]
 
 # The library's colours (lib/picture/svg.cpp).
 DISK_FILL, DISK_EDGE = "#f4f6fb", "#333333"
@@ -36,7 +47,8 @@ VORONOI_EDGE = "#2a8a3a"
 USER_VERTEX, DUMMY_VERTEX = "#1f2a44", "#d62728"
 
 
-def svg(triangulation, *, size=800, dummies=True, neighbours=False, title=None, voronoi=False):
+def svg(triangulation: Triangulation, *, size: float = 800, dummies: bool = True, neighbours: bool = False,
+        title: Optional[str] = None, voronoi: bool = False) -> str:
     """The picture of the triangulation as the text of an SVG document, drawn
     by libhdt: the same as ``triangulation.to_svg(...)`` (see there)."""
     return triangulation.to_svg(size=size, dummies=dummies, neighbours=neighbours, title=title, voronoi=voronoi)
@@ -44,20 +56,20 @@ def svg(triangulation, *, size=800, dummies=True, neighbours=False, title=None, 
 
 # ---- Geometry ----
 
-def moebius(matrix, z):
+def moebius(matrix: Matrix, z: complex) -> complex:
     """The image of the disk point z (complex) under the SU(1,1) matrix
     (a, b): (a z + b) / (conj(b) z + conj(a))."""
     a, b = matrix
     return (a * z + b) / (b.conjugate() * z + a.conjugate())
 
 
-def _real_matrix(matrix):
+def _real_matrix(matrix: Matrix) -> RealMatrix:
     """(a, b) as the library's (Re a, Im a, Re b, Im b)."""
     a, b = matrix
     return (a.real, a.imag, b.real, b.imag)
 
 
-def _apply(m, x, y):
+def _apply(m: RealMatrix, x: float, y: float) -> Point:
     """The library's Moebius map on (x, y), operation for operation (so the
     same doubles): m = (Re a, Im a, Re b, Im b)."""
     ar, ai, br, bi = m
@@ -67,7 +79,7 @@ def _apply(m, x, y):
     return (nr * dr + ni * di) / d2, (ni * dr - nr * di) / d2
 
 
-def geodesic(p, q):
+def geodesic(p: complex, q: complex) -> Optional[Tuple[complex, float, bool]]:
     """The geodesic from p to q (complex disk points): None when it is a
     straight segment (p, q and 0 collinear, to rounding), else (centre,
     radius, counterclockwise) of the circle orthogonal to the unit circle
@@ -86,7 +98,7 @@ def geodesic(p, q):
     return centre, radius, counterclockwise
 
 
-def geodesic_points(p, q, step=0.025):
+def geodesic_points(p: complex, q: complex, step: float = 0.025) -> List[complex]:
     """Points along the geodesic from p to q, p excluded and q included,
     about `step` apart (Euclidean) on arcs; [q] for a segment."""
     arc = geodesic(p, q)
@@ -101,7 +113,7 @@ def geodesic_points(p, q, step=0.025):
     return points
 
 
-def geodesic_polygon_points(corners, step=0.025):
+def geodesic_polygon_points(corners: Sequence[complex], step: float = 0.025) -> List[complex]:
     """The closed geodesic polygon through the corners (complex) as a list
     of points, the first corner first and last."""
     points = [corners[0]]
@@ -120,7 +132,7 @@ class Scene:
     #: A vertex closer than this (in power) to a side's circle is on it.
     BOUNDARY = 1e-9
 
-    def __init__(self, triangulation, voronoi=False):
+    def __init__(self, triangulation: Triangulation, voronoi: bool = False) -> None:
         with triangulation._lock:
             #: The Voronoi edges (p, q) as placed by Triangulation.voronoi(), with voronoi.
             self.voronoi = [tuple(tuple(point) for point in edge)
@@ -146,7 +158,7 @@ class Scene:
         #: The corners v_0 .. v_{4g-1} of F_g, as (x, y).
         self.polygon = [polygon_vertex(genus, k) for k in range(n)]
         #: The centres of the circles carrying the sides s_0 .. s_{4g-1}.
-        self.side_centres = []
+        self.side_centres: List[Point] = []
         for k in range(n):
             mx, my = polygon_side_midpoint(genus, k)
             m2 = mx * mx + my * my
@@ -157,17 +169,17 @@ class Scene:
         #: The elements of N by translation id (id 0, the identity, first).
         self.neighbours = [_real_matrix(word_matrix(genus, word)) for word in neighbour_words(genus)]
 
-    def _side_power(self, k, x, y):
+    def _side_power(self, k: int, x: float, y: float) -> float:
         cx, cy = self.side_centres[k]
         return 1 + x * x + y * y - 2 * (cx * x + cy * y)
 
-    def _may_meet_polygon(self, corners):
+    def _may_meet_polygon(self, corners: Sequence[Point]) -> bool:
         for k in range(len(self.side_centres)):
             if all(self._side_power(k, x, y) < 0 for x, y in corners):
                 return False
         return True
 
-    def pieces(self, then=None, smallest=0.0):
+    def pieces(self, then: Optional[RealMatrix] = None, smallest: float = 0.0) -> List[Tuple[Point, ...]]:
         """The copies h(T), h in N, of the faces' canonical copies T that may
         meet F_g (those with all three corners beyond one side of F_g are
         left out), in the library's order, each then mapped by the real
@@ -187,7 +199,7 @@ class Scene:
                 result.append(corners)
         return result
 
-    def voronoi_pieces(self, pixel=2.0 / (800 * 0.97)):
+    def voronoi_pieces(self, pixel: float = 2.0 / (800 * 0.97)) -> List[Tuple[Point, ...]]:
         """The copies h(e), h in N, of the Voronoi edges that may meet F_g
         (both ends beyond one side of F_g are left out), in the library's
         order; edges shorter than `pixel` are left out, as the library does
@@ -202,7 +214,7 @@ class Scene:
                     result.append(ends)
         return result
 
-    def places(self, point):
+    def places(self, point: Point) -> List[Point]:
         """The places of a representative in the closed F_g: itself, and for
         a point on F_g's boundary its images there under N."""
         x, y = point
@@ -214,11 +226,11 @@ class Scene:
                     found.append((u, v))
         return found
 
-    def polygon_copy(self, matrix=None):
+    def polygon_copy(self, matrix: Optional[RealMatrix] = None) -> List[Point]:
         """The corners of F_g, or of its image under the real matrix."""
         return list(self.polygon) if matrix is None else [_apply(matrix, x, y) for x, y in self.polygon]
 
-    def caption(self, neighbours, dummies=True, voronoi=False):
+    def caption(self, neighbours: bool, dummies: bool = True, voronoi: bool = False) -> str:
         """The library's default caption, both lines."""
         user = self.vertex_count - self.dummy_count
         if user == 0:
@@ -239,16 +251,17 @@ class Scene:
 
 # ---- matplotlib ----
 
-def _complex(points):
+def _complex(points: Iterable[Point]) -> List[complex]:
     return [complex(x, y) for x, y in points]
 
 
-def _outline(corners):
+def _outline(corners: Iterable[Point]) -> List[Point]:
     """The closed geodesic polygon through (x, y) corners as (x, y) points."""
     return [(z.real, z.imag) for z in geodesic_polygon_points(_complex(corners))]
 
 
-def plot(triangulation, ax=None, *, dummies=True, neighbours=False, voronoi=False):
+def plot(triangulation: Triangulation, ax: Optional[matplotlib.axes.Axes] = None, *, dummies: bool = True,
+         neighbours: bool = False, voronoi: bool = False) -> matplotlib.axes.Axes:
     """Draws the triangulation on the matplotlib Axes ax (a new figure's when
     None) and returns the Axes: the picture of :func:`svg`, the same pieces
     cut at F_g's sides by a clip path, with geodesic edges drawn as fine

@@ -10,9 +10,13 @@ A double-precision test against the side nearest in angle only rejects
 candidates that are clearly outside before the library is asked.
 """
 
+from __future__ import annotations
+
 import math
+from typing import Iterator
 
 from . import _arrays
+from ._arrays import Points
 from ._convert import c_genus
 from ._errors import InvalidArgument
 from .surface import point_representative, polygon_side_midpoint
@@ -20,7 +24,7 @@ from .surface import point_representative, polygon_side_midpoint
 _MASK = (1 << 64) - 1
 
 
-def _splitmix64(seed):
+def _splitmix64(seed: int) -> Iterator[int]:
     """The stream of 64-bit numbers of splitmix64 from seed."""
     state = seed & _MASK
     while True:
@@ -31,7 +35,7 @@ def _splitmix64(seed):
         yield z ^ (z >> 31)
 
 
-def random_points(genus, n, seed=1):
+def random_points(genus: int, n: int, seed: int = 1) -> Points:
     """n points drawn uniformly for hyperbolic area in the half-open
     fundamental polygon F_g of M_genus, from the seed (an int in 0 ..
     2^64 - 1): a float64 array of shape (n, 2) with NumPy, a list of (x, y)

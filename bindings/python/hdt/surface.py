@@ -4,15 +4,19 @@ F_g is the regular hyperbolic 4g-gon centred at 0 in the Poincare disk, with
 interior angles pi/(2g). Indices are taken mod 4g.
 """
 
+from __future__ import annotations
+
 import ctypes
 import math
+from typing import Tuple
 
+from ._arrays import Point, Word
 from ._convert import c_coordinate, c_genus, c_index, call_point, call_word
 from ._errors import InvalidArgument
 from ._lib import lib
 
 
-def systole(genus):
+def systole(genus: int) -> float:
     """The systole of M_g, 2 arccosh(1 + 2 cos(pi / 2g)), as a float.
 
     The C function returns NaN for genus < 2; this one raises
@@ -25,7 +29,7 @@ def systole(genus):
     return value
 
 
-def polygon_vertex(genus, k):
+def polygon_vertex(genus: int, k: int) -> Point:
     """The vertex v_k of F_g, at angle (2k+1) pi / 4g, as a tuple (x, y).
 
     k is any int, taken mod 4g. Raises :class:`hdt.InvalidArgument` for
@@ -35,7 +39,7 @@ def polygon_vertex(genus, k):
     return call_point(lib.hdt_polygon_vertex, genus, c_index(k, genus))
 
 
-def polygon_side_midpoint(genus, k):
+def polygon_side_midpoint(genus: int, k: int) -> Point:
     """The midpoint m_k of side s_k of F_g, at angle k pi / 2g, as (x, y).
 
     Side s_k joins v_{k-1} and v_k and is paired with s_{k+2g} by the
@@ -46,7 +50,7 @@ def polygon_side_midpoint(genus, k):
     return call_point(lib.hdt_polygon_side_midpoint, genus, c_index(k, genus))
 
 
-def point_representative(genus, x, y):
+def point_representative(genus: int, x: float, y: float) -> Tuple[Point, Word]:
     """The canonical representative of the disk point (x, y).
 
     Returns ((rx, ry), word): the element h of Gamma_g, as its canonical word,

@@ -49,7 +49,8 @@ Arrays: with NumPy installed, :meth:`insert_many`, :meth:`vertices`,
 (see each method).
 """
 
-import collections
+from __future__ import annotations
+
 import contextlib
 import ctypes
 import math
@@ -57,18 +58,33 @@ import numbers
 import os
 import threading
 import weakref
+from typing import (TYPE_CHECKING, Any, BinaryIO, Callable, Dict, Iterator, NamedTuple, Optional, Tuple, Type, TypeVar,
+                    Union)
 
 from . import _arrays, mesh, picture, viewer
+from ._arrays import (Bools, Floats, IntRows, Ints, IntTupleRows, Matrix, Point, PointRows, Points, PointsLike,
+                      Word)
 from ._interrupt import interruptible
 from ._convert import c_coordinate, c_genus, c_translation, c_vertex, call_doubles, call_point, call_word
 from ._errors import HandleClosed, InternalError, InvalidArgument, Status, check, error_for_status
 from ._lib import lib
 
+if TYPE_CHECKING:  # for the annotations only: matplotlib and meshio are optional
+    import matplotlib.axes
+    import meshio
+
+_T = TypeVar("_T", bound="Triangulation")
+
 # hdt_svg's flags (include/hdt.h).
 _SVG_NEIGHBOURS, _SVG_HIDE_DUMMIES, _SVG_VORONOI = 1, 2, 4
 
 #: :meth:`Triangulation.vertices`: the live vertices by increasing id.
-Vertices = collections.namedtuple("Vertices", "ids points dummy")
+class Vertices(NamedTuple):
+    ids: Ints
+    points: Points
+    dummy: Bools
+
+
 Vertices.__doc__ = """The live vertices of a triangulation, by increasing id.
 
 ids: the vertex ids (NumPy uint32 array of shape (n,), or a list of ints);
@@ -80,7 +96,11 @@ Vertices.points.__doc__ = "The representative (x, y) in F_g of each vertex."
 Vertices.dummy.__doc__ = "Whether each vertex is a dummy vertex."
 
 #: :meth:`Triangulation.faces`: vertex ids and translation ids per corner.
-Faces = collections.namedtuple("Faces", "vertices translations")
+class Faces(NamedTuple):
+    vertices: IntRows
+    translations: IntRows
+
+
 Faces.__doc__ = """The faces of a triangulation: row i is face i.
 
 vertices: three vertex ids per face, counterclockwise (NumPy uint32 array of
@@ -91,7 +111,11 @@ Faces.vertices.__doc__ = "Three vertex ids per face, counterclockwise."
 Faces.translations.__doc__ = "Per corner, the translation id of the vertex in the face's canonical copy."
 
 #: :meth:`Triangulation.neighbours`: per face and corner, the face across and its translation.
-Neighbours = collections.namedtuple("Neighbours", "faces translations")
+class Neighbours(NamedTuple):
+    faces: IntRows
+    translations: IntRows
+
+
 Neighbours.__doc__ = """The adjacency of the faces: row i is face i.
 
 faces[i][c]: the face across the edge opposite corner c (uint32 array of
@@ -100,26 +124,47 @@ h such that h(canonical copy of that face) shares the edge with face i's
 canonical copy (int32, same shape)."""
 
 #: :meth:`Triangulation.star`: the faces around a vertex.
-Star = collections.namedtuple("Star", "faces corners translations")
+class Star(NamedTuple):
+    faces: Ints
+    corners: Ints
+    translations: Ints
+
+
 Star.__doc__ = """The faces around a vertex, counterclockwise: faces (indices
 into faces()), corners (the vertex's corner 0..2 in each) and translations
 (the id h such that h(canonical copy) has the vertex at its representative)."""
 
 #: :meth:`Triangulation.stars`: every vertex's star, in rows by vertex id.
-Stars = collections.namedtuple("Stars", "offsets faces corners translations")
+class Stars(NamedTuple):
+    offsets: Ints
+    faces: Ints
+    corners: Ints
+    translations: Ints
+
+
 Stars.__doc__ = """Every live vertex's star in one array per field: the star of
 vertex v is entries offsets[v] to offsets[v + 1] - 1 of faces, corners and
 translations (each of length 3F), the same as :meth:`Triangulation.star`
 gives; offsets has vertex_id_bound + 1 entries, a removed id an empty row."""
 
 #: :meth:`Triangulation.voronoi_cells`: every vertex's Voronoi cell, in rows by vertex id.
-Cells = collections.namedtuple("Cells", "offsets points")
+class Cells(NamedTuple):
+    offsets: Ints
+    points: Points
+
+
 Cells.__doc__ = """Every live vertex's Voronoi cell: points[offsets[v]:offsets[v + 1]]
 (float64, shape (3F, 2) in all) is the cell of v, the same as
 :meth:`Triangulation.voronoi_cell` gives; offsets as in :class:`Stars`."""
 
 #: :meth:`Triangulation.edges`: every edge once.
-Edges = collections.namedtuple("Edges", "vertices translations faces lengths")
+class Edges(NamedTuple):
+    vertices: IntRows
+    translations: Ints
+    faces: IntRows
+    lengths: Floats
+
+
 Edges.__doc__ = """Every edge once: row e is edge e.
 
 vertices (E, 2): the edge runs from the representative of vertices[e][0] to
@@ -128,7 +173,12 @@ the face on its left, then on its right; lengths (E,): its hyperbolic
 length."""
 
 #: :meth:`Triangulation.voronoi`: the Voronoi diagram.
-Voronoi = collections.namedtuple("Voronoi", "centres radii edges")
+class Voronoi(NamedTuple):
+    centres: Points
+    radii: Floats
+    edges: PointRows
+
+
 Voronoi.__doc__ = """The Voronoi diagram, the dual of the triangulation.
 
 centres (F, 2): the hyperbolic circumcentre of each face's canonical copy
@@ -138,7 +188,11 @@ to the right face's centre placed beside it."""
 
 #: :meth:`Triangulation.locate`: a face index and the translation of its copy.
 #: :meth:`Triangulation.refine` and :meth:`Triangulation.epsilon_net`.
-Refined = collections.namedtuple("Refined", "added unmet")
+class Refined(NamedTuple):
+    added: int
+    unmet: int
+
+
 Refined.__doc__ = """What a refinement did: added, the points it inserted; unmet, the
 faces still breaking a bound (0 unless max_points stopped it or faces next to
 near-duplicate points were left, see Triangulation.refine)."""
@@ -146,7 +200,13 @@ Refined.added.__doc__ = "The number of points inserted."
 Refined.unmet.__doc__ = "The faces still breaking a bound: 0 when the refinement completed on points no closer than about 1e-9."
 
 #: :meth:`Triangulation.quality`.
-Quality = collections.namedtuple("Quality", "min_angle max_ratio max_radius min_edge")
+class Quality(NamedTuple):
+    min_angle: float  # radians
+    max_ratio: float
+    max_radius: float
+    min_edge: float
+
+
 Quality.__doc__ = """The shape of the faces: min_angle, the smallest hyperbolic angle
 (radians); max_ratio, the largest circumradius / shortest edge; max_radius,
 the largest circumradius (the covering radius); min_edge, the shortest
@@ -157,7 +217,11 @@ Quality.max_ratio.__doc__ = "The largest radius-edge ratio of a face."
 Quality.max_radius.__doc__ = "The largest circumradius: every point of M_g is that close to a vertex."
 Quality.min_edge.__doc__ = "The shortest edge: the distance on M_g of the two closest vertices."
 
-Location = collections.namedtuple("Location", "face translation")
+class Location(NamedTuple):
+    face: int
+    translation: int
+
+
 Location.__doc__ = """Where a point lies: the face (an index into faces()) and
 the translation id h such that the point is in the closed triangle
 h(canonical copy of the face)."""
@@ -165,7 +229,7 @@ Location.face.__doc__ = "The index of the face in the order of faces()."
 Location.translation.__doc__ = "The translation id of the face's copy that contains the point."
 
 
-def _pairs(owner, rows, groups):
+def _pairs(owner: Any, rows: int, groups: int) -> Any:
     """An output buffer of rows x (2 groups) doubles as points: a NumPy array
     of shape (rows, groups, 2), or a list of `groups` (x, y) tuples per row."""
     if not isinstance(owner, ctypes.Array):
@@ -175,7 +239,7 @@ def _pairs(owner, rows, groups):
             for i in range(0, len(values), 2 * groups)]
 
 
-def _destroy(handle):
+def _destroy(handle: ctypes.c_void_p) -> None:
     """Frees a C handle (the finalizer of every Triangulation)."""
     lib.hdt_destroy(handle)
 
@@ -202,18 +266,18 @@ class Triangulation:
             print(len(t), t.face_count)
     """
 
-    _handle = None  # an hdt_triangulation * as ctypes.c_void_p; None once closed
-    _busy = None  # the method whose library call is running (a signal handler may run inside it)
+    _handle: Optional[ctypes.c_void_p] = None  # an hdt_triangulation * as ctypes.c_void_p; None once closed
+    _busy: Optional[str] = None  # the method whose library call is running (a signal handler may run inside it)
     _close_pending = False  # close() from inside that call: done as the call returns
 
-    def __init__(self, genus):
+    def __init__(self, genus: int) -> None:
         """A new triangulation of M_genus holding the dummy points of its genus."""
         genus = c_genus(genus)
         handle = ctypes.c_void_p()
         check(lib.hdt_create(ctypes.byref(handle), genus))
         self._adopt(handle)
 
-    def _adopt(self, handle):
+    def _adopt(self, handle: ctypes.c_void_p) -> None:
         """Takes ownership of a C handle (from hdt_create or hdt_load)."""
         self._genus = lib.hdt_genus(handle)
         self._lock = threading.RLock()
@@ -222,7 +286,7 @@ class Triangulation:
 
     # ---- lifetime ----
 
-    def close(self):
+    def close(self) -> None:
         """Frees the C triangulation now. Closing again does nothing; any
         other use afterwards raises :class:`hdt.HandleClosed`. From a
         signal handler inside a long call (insert_many, refine,
@@ -237,7 +301,7 @@ class Triangulation:
             self._finalizer()
 
     @contextlib.contextmanager
-    def _calling(self, what):
+    def _calling(self, what: str) -> Iterator[ctypes.c_void_p]:
         """The handle for a library call that runs Python code inside it
         (interruptible), the object busy meanwhile (call with the lock
         held): a signal handler running there cannot use or free the
@@ -254,37 +318,37 @@ class Triangulation:
                 self.close()
 
     @property
-    def closed(self):
+    def closed(self) -> bool:
         """Whether :meth:`close` was called (the handle is freed)."""
         return self._handle is None
 
-    def __enter__(self):
+    def __enter__(self: _T) -> _T:
         """Returns the triangulation itself; the ``with`` block closes it."""
         self._live("__enter__")
         return self
 
-    def __exit__(self, *exception):
+    def __exit__(self, *exception: object) -> None:
         """Closes the triangulation."""
         self.close()
 
-    def __copy__(self):
+    def __copy__(self) -> Triangulation:
         """An independent triangulation equal to this one (through
         :meth:`to_bytes`): a Triangulation owns its C handle, so a copy
         cannot share it."""
         return Triangulation.from_bytes(self.to_bytes())
 
-    def __deepcopy__(self, memo):
+    def __deepcopy__(self, memo: Dict[int, Any]) -> Triangulation:
         """The same as :meth:`__copy__`."""
         return self.__copy__()
 
-    def __reduce__(self):
+    def __reduce__(self) -> Tuple[Callable[[bytes], Triangulation], Tuple[bytes]]:
         """Pickling: the saved bytes (:meth:`to_bytes`), loaded back by
         :meth:`from_bytes`."""
         return (Triangulation.from_bytes, (self.to_bytes(),))
 
     # ---- saving and loading ----
 
-    def to_bytes(self):
+    def to_bytes(self) -> bytes:
         """The triangulation in libhdt's saved format (hdt_save; docs/format.md
         of the source tree): genus, every point exactly as given, ids with
         their gaps, dummy flags, the faces in their order, with a checksum.
@@ -298,7 +362,7 @@ class Triangulation:
         return buffer.raw[: size.value]
 
     @classmethod
-    def from_bytes(cls, data):
+    def from_bytes(cls: Type[_T], data: Union[bytes, bytearray, memoryview]) -> _T:
         """The triangulation saved in data (bytes, bytearray or memoryview, as
         :meth:`to_bytes` gives): the same genus, ids and faces. Every field is
         checked and the result validated; bytes that are truncated, corrupted
@@ -313,7 +377,7 @@ class Triangulation:
         triangulation._adopt(handle)
         return triangulation
 
-    def save(self, file):
+    def save(self, file: Union[str, os.PathLike, BinaryIO]) -> None:
         """Writes :meth:`to_bytes` to file: a path (str or os.PathLike) or a
         binary file object (anything with write())."""
         data = self.to_bytes()
@@ -324,7 +388,7 @@ class Triangulation:
                 out.write(data)
 
     @classmethod
-    def load(cls, file):
+    def load(cls: Type[_T], file: Union[str, os.PathLike, BinaryIO]) -> _T:
         """The triangulation saved in file: a path or a binary file object
         (anything with read()); as :meth:`from_bytes`."""
         if hasattr(file, "read"):
@@ -332,7 +396,7 @@ class Triangulation:
         with open(os.fspath(file), "rb") as source:
             return cls.from_bytes(source.read())
 
-    def _live(self, what):
+    def _live(self, what: str) -> ctypes.c_void_p:
         """The handle; HandleClosed when closed, InvalidArgument when busy
         (from a signal handler inside a long call; call with the lock held)."""
         handle = self._handle
@@ -343,7 +407,7 @@ class Triangulation:
                                   "running inside that call cannot use it; only close() is deferred to its end)")
         return handle
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         """<hdt.Triangulation genus=G vertices=V (D dummies) faces=F>, or closed."""
         with self._lock:
             if self._handle is None:
@@ -355,34 +419,34 @@ class Triangulation:
     # ---- counts ----
 
     @property
-    def genus(self):
+    def genus(self) -> int:
         """The genus g of the surface M_g (also after close())."""
         return self._genus
 
     @property
-    def vertex_count(self):
+    def vertex_count(self) -> int:
         """The number of live vertices, dummies included."""
         with self._lock:
             return lib.hdt_vertex_count(self._live("vertex_count"))
 
-    def __len__(self):
+    def __len__(self) -> int:
         """The number of live vertices, dummies included (vertex_count)."""
         return self.vertex_count
 
     @property
-    def dummy_count(self):
+    def dummy_count(self) -> int:
         """The number of live dummy vertices."""
         with self._lock:
             return lib.hdt_dummy_count(self._live("dummy_count"))
 
     @property
-    def face_count(self):
+    def face_count(self) -> int:
         """The number of faces, F = 2 (V + 2g - 2)."""
         with self._lock:
             return lib.hdt_face_count(self._live("face_count"))
 
     @property
-    def vertex_id_bound(self):
+    def vertex_id_bound(self) -> int:
         """One past the largest vertex id ever given: every id below it is
         live or removed."""
         with self._lock:
@@ -390,7 +454,7 @@ class Triangulation:
 
     # ---- changes ----
 
-    def insert(self, x, y):
+    def insert(self, x: float, y: float) -> int:
         """Inserts the point (x, y) of the open unit disk; returns its vertex id.
 
         A point equal to a dummy vertex turns it into a user vertex (its id
@@ -410,7 +474,7 @@ class Triangulation:
             check(status)
         return vertex.value
 
-    def insert_many(self, points):
+    def insert_many(self, points: PointsLike) -> Ints:
         """Inserts many points at once (in a spatial order, much faster than
         one by one); returns the vertex id of each point, in input order.
 
@@ -435,7 +499,7 @@ class Triangulation:
         del owner  # the points stay alive until here
         return _arrays.result(ids)
 
-    def remove(self, vertex):
+    def remove(self, vertex: int) -> None:
         """Removes a vertex (user or dummy).
 
         Raises :class:`hdt.NotSupported`, changing nothing, when the
@@ -447,7 +511,7 @@ class Triangulation:
         with self._lock:
             check(lib.hdt_remove_vertex(self._live("remove"), vertex))
 
-    def remove_dummies(self):
+    def remove_dummies(self) -> int:
         """Removes every dummy vertex that can go without breaking the
         guarantee; returns how many dummies are left."""
         remaining = ctypes.c_size_t()
@@ -457,7 +521,8 @@ class Triangulation:
 
     # ---- refinement ----
 
-    def refine(self, max_radius=math.inf, max_ratio=math.inf, max_points=None):
+    def refine(self, max_radius: float = math.inf, max_ratio: float = math.inf,
+               max_points: Optional[int] = None) -> Refined:
         """Delaunay refinement (hdt_refine): inserts circumcentres of the
         faces breaking a bound, largest first, until every face has
         hyperbolic circumradius <= max_radius and circumradius / shortest
@@ -476,7 +541,7 @@ class Triangulation:
         return self._refine("refine", lambda h, cap, a, u: lib.hdt_refine(
             h, c_coordinate(max_radius, "max_radius"), c_coordinate(max_ratio, "max_ratio"), cap, a, u), max_points)
 
-    def epsilon_net(self, epsilon, max_points=None):
+    def epsilon_net(self, epsilon: float, max_points: Optional[int] = None) -> Refined:
         """Refines into an epsilon-net (hdt_epsilon_net): every point of M_g
         within epsilon of a vertex, and the points added at least epsilon
         from every vertex (the whole set is an epsilon-net when the vertices
@@ -488,7 +553,7 @@ class Triangulation:
         return self._refine("epsilon_net", lambda h, cap, a, u: lib.hdt_epsilon_net(
             h, c_coordinate(epsilon, "epsilon"), cap, a, u), max_points)
 
-    def _refine(self, what, call, max_points):
+    def _refine(self, what: str, call: Callable[..., int], max_points: Optional[int]) -> Refined:
         if max_points is None:
             cap = ctypes.c_size_t(-1).value
         else:
@@ -502,7 +567,7 @@ class Triangulation:
             check(call(handle, cap, ctypes.byref(added), ctypes.byref(unmet)))
         return Refined(added.value, unmet.value)
 
-    def quality(self):
+    def quality(self) -> Quality:
         """The shape of the faces as a :class:`Quality` (min_angle,
         max_ratio, max_radius, min_edge), computed in double (hdt_quality)."""
         values = [ctypes.c_double() for _ in range(4)]
@@ -512,7 +577,7 @@ class Triangulation:
 
     # ---- vertices ----
 
-    def is_dummy(self, vertex):
+    def is_dummy(self, vertex: int) -> bool:
         """Whether the live vertex is a dummy vertex; :class:`hdt.InvalidArgument`
         when vertex is not a live vertex id."""
         vertex = c_vertex(vertex)
@@ -522,7 +587,7 @@ class Triangulation:
             raise InvalidArgument(f"is_dummy: vertex {vertex} is not a live vertex")
         return answer == 1
 
-    def vertex_point(self, vertex):
+    def vertex_point(self, vertex: int) -> Point:
         """The representative (x, y) of the vertex in the half-open F_g,
         rounded to floats; :class:`hdt.InvalidArgument` when vertex is not
         a live vertex id."""
@@ -530,7 +595,7 @@ class Triangulation:
         with self._lock:
             return call_point(lib.hdt_vertex_point, self._live("vertex_point"), vertex)
 
-    def vertices(self):
+    def vertices(self) -> Vertices:
         """The live vertices as a :class:`Vertices` named tuple (ids, points,
         dummy), by increasing id.
 
@@ -553,7 +618,7 @@ class Triangulation:
 
     # ---- faces ----
 
-    def faces(self):
+    def faces(self) -> Faces:
         """The faces as a :class:`Faces` named tuple (vertices, translations);
         row i is face i (the index :meth:`locate` gives).
 
@@ -574,7 +639,7 @@ class Triangulation:
                 raise InternalError(f"faces: hdt_faces listed {found.value} faces, hdt_face_count says {count}")
         return Faces(_arrays.result(vertices, 3), _arrays.result(translations, 3))
 
-    def translation_word(self, translation):
+    def translation_word(self, translation: int) -> Word:
         """The canonical word (a tuple of letters) of a translation id of
         this triangulation; () for id 0, the identity.
         :class:`hdt.InvalidArgument` for an id the triangulation does not know."""
@@ -582,7 +647,7 @@ class Triangulation:
         with self._lock:
             return call_word(lib.hdt_translation_word, self._live("translation_word"), translation, capacity=16)
 
-    def translation_matrix(self, translation):
+    def translation_matrix(self, translation: int) -> Matrix:
         """The SU(1,1) matrix [[a, b], [conj b, conj a]] of a translation id
         as the pair (a, b) of complex numbers (as :func:`hdt.word_matrix`):
         it maps z to (a z + b) / (conj(b) z + conj(a)).
@@ -593,7 +658,7 @@ class Triangulation:
                                                   translation)
         return complex(re_a, im_a), complex(re_b, im_b)
 
-    def translation_homology(self, translation):
+    def translation_homology(self, translation: int) -> Tuple[int, ...]:
         """The class [h] in Z^{2g} of a translation id h (hdt_translation_homology,
         symbol version HDT_0.6): a tuple of 2g ints, coordinate k the number
         of letters k minus the number of letters k + 2g in its word; a
@@ -609,7 +674,7 @@ class Triangulation:
                 raise InternalError(f"translation_homology: {count.value} coordinates, 2g is {size}")
         return tuple(out)
 
-    def corner_homology(self):
+    def corner_homology(self) -> IntTupleRows:
         """Per face and corner, the class in Z^{2g} of the corner's translation
         (:meth:`faces`, :meth:`translation_homology`): an int32 array of shape
         (F, 3, 2g) with NumPy, else a list (per face) of three tuples. The
@@ -647,7 +712,7 @@ class Triangulation:
             raise InternalError(f"{what}: the library listed {found.value}, expected {count}")
         return owners
 
-    def neighbours(self):
+    def neighbours(self) -> Neighbours:
         """The adjacency of the faces as a :class:`Neighbours` named tuple
         (faces, translations), two arrays of shape (F, 3) (lists of 3-tuples
         without NumPy): for face i and corner c, the face across the edge
@@ -661,7 +726,7 @@ class Triangulation:
                 [(ctypes.c_uint32, 3), (ctypes.c_int32, 3)], count)
         return Neighbours(_arrays.result(faces, 3), _arrays.result(translations, 3))
 
-    def star(self, vertex):
+    def star(self, vertex: int) -> Star:
         """The faces around a live vertex, counterclockwise, as a
         :class:`Star` named tuple (faces, corners, translations) of arrays of
         shape (k,) (lists without NumPy). :class:`hdt.InvalidArgument` when
@@ -676,7 +741,7 @@ class Triangulation:
                 [(ctypes.c_uint32, None), (ctypes.c_uint8, None), (ctypes.c_int32, None)], count.value)
         return Star(_arrays.result(faces), _arrays.result(corners), _arrays.result(translations))
 
-    def stars(self):
+    def stars(self) -> Stars:
         """Every live vertex's star in one call, as a :class:`Stars` named
         tuple (offsets, faces, corners, translations): the star of vertex v
         is rows offsets[v] to offsets[v + 1] - 1, what :meth:`star` gives for
@@ -692,12 +757,12 @@ class Triangulation:
                      _arrays.result(translations))
 
     @property
-    def edge_count(self):
+    def edge_count(self) -> int:
         """The number of edges, E = 3 F / 2."""
         with self._lock:
             return lib.hdt_edge_count(self._live("edge_count"))
 
-    def edges(self):
+    def edges(self) -> Edges:
         """Every edge once as an :class:`Edges` named tuple (vertices,
         translations, faces, lengths): arrays of shape (E, 2), (E,), (E, 2)
         and (E,) (lists without NumPy). Edge e runs from the representative
@@ -713,7 +778,7 @@ class Triangulation:
         return Edges(_arrays.result(vertices, 2), _arrays.result(translations), _arrays.result(faces, 2),
                      _arrays.result(lengths))
 
-    def face_points(self):
+    def face_points(self) -> PointRows:
         """The three corners of each face's canonical copy in the disk, in
         the order of faces(): a float64 array of shape (F, 3, 2) (without
         NumPy, a list of three (x, y) tuples per face)."""
@@ -724,7 +789,7 @@ class Triangulation:
                                count)
         return _pairs(xy, count, 3)
 
-    def voronoi(self):
+    def voronoi(self) -> Voronoi:
         """The Voronoi diagram as a :class:`Voronoi` named tuple (centres,
         radii, edges): the hyperbolic circumcentre (F, 2) and circumradius
         (F,) of each face's canonical copy, and per edge of :meth:`edges` the
@@ -740,7 +805,7 @@ class Triangulation:
                                      edges)
         return Voronoi(_arrays.result(centres, 2), _arrays.result(radii), _pairs(segments, edges, 2))
 
-    def voronoi_cell(self, vertex):
+    def voronoi_cell(self, vertex: int) -> Points:
         """The Voronoi cell of a live vertex: the circumcentres of the faces
         of its :meth:`star` (same order), placed around its representative,
         a counterclockwise polygon with geodesic sides; a float64 array of
@@ -755,7 +820,7 @@ class Triangulation:
                                [(ctypes.c_double, 2)], count.value)
         return _arrays.result(xy, 2)
 
-    def voronoi_cells(self):
+    def voronoi_cells(self) -> Cells:
         """Every live vertex's Voronoi cell in one call, as a :class:`Cells`
         named tuple (offsets, points): points[offsets[v]:offsets[v + 1]] is
         what :meth:`voronoi_cell` gives for v, the same bits (a float64 array
@@ -769,7 +834,7 @@ class Triangulation:
 
     # ---- queries ----
 
-    def locate(self, x, y):
+    def locate(self, x: float, y: float) -> Location:
         """The face whose copy contains the disk point (x, y), as a
         :class:`Location` (face, translation): (x, y) lies in the closed
         triangle h(canonical copy of faces()[face]) for h the translation id.
@@ -781,7 +846,7 @@ class Triangulation:
             check(lib.hdt_locate(self._live("locate"), x, y, ctypes.byref(face), ctypes.byref(translation)))
         return Location(face.value, translation.value)
 
-    def nearest_vertex(self, x, y):
+    def nearest_vertex(self, x: float, y: float) -> int:
         """The id of the vertex nearest to the disk point (x, y) on M_g
         (hyperbolic distance, decided exactly; ties go to the smaller id),
         dummies included. :class:`hdt.OutOfDomain` outside the open disk."""
@@ -791,7 +856,7 @@ class Triangulation:
             check(lib.hdt_nearest_vertex(self._live("nearest_vertex"), x, y, ctypes.byref(vertex)))
         return vertex.value
 
-    def validate(self):
+    def validate(self) -> None:
         """Checks every invariant with exact predicates (combinatorics,
         orientation, empty circles, the simplicial condition, the
         circumdiameter guarantee); returns None, or raises
@@ -801,7 +866,8 @@ class Triangulation:
 
     # ---- pictures ----
 
-    def to_svg(self, path=None, *, size=800, dummies=True, neighbours=False, title=None, voronoi=False):
+    def to_svg(self, path: Union[str, os.PathLike, None] = None, *, size: float = 800, dummies: bool = True,
+               neighbours: bool = False, title: Optional[str] = None, voronoi: bool = False) -> str:
         """The picture of the triangulation as SVG text, drawn by libhdt
         (hdt_svg, as hdt-triangulate's --svg), also written to path (a file
         name) when given; needs no third-party package.
@@ -820,10 +886,11 @@ class Triangulation:
         size = float(size)
         flags = ((0 if dummies else _SVG_HIDE_DUMMIES) | (_SVG_NEIGHBOURS if neighbours else 0)
                  | (_SVG_VORONOI if voronoi else 0))
+        c_title = None
         if title is not None:
             # A NUL would end the C string: shown as '?', as the library shows
             # control characters; lone surrogates likewise.
-            title = str(title).replace("\0", "?").encode("utf-8", "replace")
+            c_title = str(title).replace("\0", "?").encode("utf-8", "replace")
         length = ctypes.c_size_t()
         with self._lock:
             handle = self._live("to_svg")
@@ -834,7 +901,7 @@ class Triangulation:
             capacity = 4096 + 256 * copies * lib.hdt_face_count(handle) + 64 * lib.hdt_vertex_count(handle)
             for _ in range(2):
                 buffer = ctypes.create_string_buffer(capacity)
-                status = lib.hdt_svg(handle, size, title, flags, buffer, capacity, ctypes.byref(length))
+                status = lib.hdt_svg(handle, size, c_title, flags, buffer, capacity, ctypes.byref(length))
                 if status != Status.EBUFS:
                     break
                 capacity = length.value + 1
@@ -845,13 +912,14 @@ class Triangulation:
                 file.write(data)
         return data.decode("utf-8")
 
-    def plot(self, ax=None, *, dummies=True, neighbours=False, voronoi=False):
+    def plot(self, ax: Optional[matplotlib.axes.Axes] = None, *, dummies: bool = True, neighbours: bool = False,
+             voronoi: bool = False) -> matplotlib.axes.Axes:
         """Draws the triangulation on a matplotlib Axes (a new figure's when
         ax is None) and returns the Axes; the picture of :meth:`to_svg`.
         Raises ImportError when matplotlib is not installed."""
         return picture.plot(self, ax, dummies=dummies, neighbours=neighbours, voronoi=voronoi)
 
-    def to_meshio(self, layout="representatives"):
+    def to_meshio(self, layout: str = "representatives") -> meshio.Mesh:
         """The triangulation as a ``meshio.Mesh`` (needs meshio and NumPy;
         Debian: python3-meshio), for any format meshio writes:
         ``t.to_meshio("unfolded").write("mesh.vtu")``. layout
@@ -864,7 +932,8 @@ class Triangulation:
         field data ``genus`` (:mod:`hdt.mesh`)."""
         return mesh.to_meshio(self, layout)
 
-    def to_html(self, path=None, *, title=None, voronoi=False):
+    def to_html(self, path: Union[str, os.PathLike, None] = None, *, title: Optional[str] = None,
+                voronoi: bool = False) -> str:
         """The interactive viewer of the triangulation as the text of one
         self-contained HTML page (inline script and style, no network
         access; as hdt-triangulate's --html), also written to path (a file
@@ -888,7 +957,7 @@ class Triangulation:
     HTML_REPR_MAX_FACES = 100000
     VORONOI_REPR_MAX_FACES = 20000
 
-    def _repr_html_(self):
+    def _repr_html_(self) -> Optional[str]:
         """The viewer inline in a Jupyter notebook (an iframe holding
         :meth:`to_html`'s page, with the Voronoi diagram up to
         VORONOI_REPR_MAX_FACES faces); None (the plain repr) for a closed

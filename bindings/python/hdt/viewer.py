@@ -14,11 +14,17 @@ reads back as the same double, so that C's printf and Python's % give the
 same text.
 """
 
-import os
+from __future__ import annotations
 
-from ._arrays import as_lists
+import os
+from typing import TYPE_CHECKING, Iterable, Optional, Tuple, Union
+
+from ._arrays import Matrix, WordLike, as_lists
 from .group import neighbour_words, word_matrix
 from .surface import polygon_vertex
+
+if TYPE_CHECKING:  # triangulation imports this module
+    from .triangulation import Triangulation
 
 #: The version of the JSON format (its member "version").
 FORMAT_VERSION = 1
@@ -29,13 +35,13 @@ DATA_MARKER = '<script id="hdt-data" type="application/json">null</script>'
 _TEMPLATE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "viewer.html")
 
 
-def template():
+def template() -> str:
     """The text of the viewer's template (``viewer.html``, which holds no data)."""
     with open(_TEMPLATE, encoding="utf-8", newline="") as file:
         return file.read()
 
 
-def number(x):
+def number(x: float) -> str:
     """x as JSON: the fewest of 15, 16 or 17 significant digits that read
     back as the same double (as html_writer.c writes it)."""
     x = float(x)
@@ -46,7 +52,7 @@ def number(x):
     return "%.17g" % x
 
 
-def string(text):
+def string(text: object) -> str:
     """text as a JSON string that is also safe inside a script element:
     quote, backslash, control characters, ``<``, ``>`` and ``&`` as escapes,
     lone surrogates as '?', everything else as UTF-8 (html_writer.c's rule)."""
@@ -67,24 +73,24 @@ def string(text):
     return "".join(parts)
 
 
-def _numbers(values):
+def _numbers(values: Iterable[float]) -> str:
     return "[" + ",".join(number(x) for x in values) + "]"
 
 
-def _ints(values):
+def _ints(values: Iterable[int]) -> str:
     return "[" + ",".join("%d" % int(x) for x in values) + "]"
 
 
-def _words(words):
+def _words(words: Iterable[WordLike]) -> str:
     return "[" + ",".join(_ints(word) for word in words) + "]"
 
 
-def _matrix(pair):
+def _matrix(pair: Matrix) -> Tuple[float, float, float, float]:
     a, b = pair
     return (a.real, a.imag, b.real, b.imag)
 
 
-def data_json(triangulation, *, title=None, voronoi=False):
+def data_json(triangulation: Triangulation, *, title: Optional[str] = None, voronoi: bool = False) -> str:
     """The viewer's data for the triangulation as JSON text (docs/viewer.md):
     F_g and its generators, the neighbour set N, the vertices, the faces
     with their corners' translations (ids, canonical words, matrices), and
@@ -122,7 +128,7 @@ def data_json(triangulation, *, title=None, voronoi=False):
     return "\n".join(lines)
 
 
-def fill(template_text, data):
+def fill(template_text: str, data: str) -> str:
     """The page: the template with its data element holding data (JSON text)."""
     if template_text.count(DATA_MARKER) != 1:
         raise ValueError("the viewer's template must hold its data element exactly once")
@@ -130,7 +136,8 @@ def fill(template_text, data):
     return head + DATA_MARKER.replace(">null<", ">" + data + "<") + tail
 
 
-def html(triangulation, path=None, *, title=None, voronoi=False):
+def html(triangulation: Triangulation, path: Union[str, os.PathLike, None] = None, *, title: Optional[str] = None,
+         voronoi: bool = False) -> str:
     """The viewer page for the triangulation: the same as
     ``triangulation.to_html(path, title=title, voronoi=voronoi)`` (see there)."""
     page = fill(template(), data_json(triangulation, title=title, voronoi=voronoi))
@@ -140,7 +147,7 @@ def html(triangulation, path=None, *, title=None, voronoi=False):
     return page
 
 
-def iframe(page, height=660):
+def iframe(page: str, height: int = 660) -> str:
     """The page inside an iframe (its srcdoc), as a notebook cell shows it:
     the page's script and ids stay in a document of their own."""
     import html as _html
