@@ -96,7 +96,7 @@ def test_repr_html_is_an_iframe():
     assert t._repr_html_() is None
 
 
-@pytest.mark.skipif(not os.environ.get("HDT_CLI"), reason="HDT_CLI (the path of hdt-triangulate) is not set")
+@pytest.mark.skipif(not os.environ.get("HDT_TRIANGULATE"), reason="HDT_TRIANGULATE (the path of hdt-triangulate) is not set")
 def test_the_same_bytes_as_the_command_line_tool(tmp_path):
     """hdt-triangulate --html and to_html write the same page for the same
     triangulation: saved by the tool (--save, after its insertions), loaded
@@ -105,14 +105,14 @@ def test_the_same_bytes_as_the_command_line_tool(tmp_path):
     points = tmp_path / 'pts <é>&".txt'
     points.write_text("".join("%r %r\n" % p for p in random_points(150, 3, 0.9)))
     page, saved = tmp_path / "tool.html", tmp_path / "t.hdt"
-    subprocess.run([os.environ["HDT_CLI"], str(points), "--voronoi", "--html", str(page), "--save", str(saved),
+    subprocess.run([os.environ["HDT_TRIANGULATE"], str(points), "--voronoi", "--html", str(page), "--save", str(saved),
                     "-o", os.devnull], check=True, timeout=60)
     t = hdt.Triangulation.load(str(saved))
     tool = page.read_bytes()
     title = page_data(tool.decode("utf-8"))["title"]
     assert title == 'Delaunay triangulation of the 150 points of pts <é>&".txt on M_2'
     assert t.to_html(title=title, voronoi=True).encode("utf-8") == tool
-    subprocess.run([os.environ["HDT_CLI"], "--load", str(saved), "--keep-dummies", "--html", str(page),
+    subprocess.run([os.environ["HDT_TRIANGULATE"], "--load", str(saved), "--keep-dummies", "--html", str(page),
                     "-o", os.devnull], check=True, timeout=60)
     assert t.to_html().encode("utf-8") == page.read_bytes()
 
