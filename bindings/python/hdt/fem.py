@@ -215,10 +215,9 @@ def p1_matrices(triangulation: Triangulation, chart: str = "klein", lumped: bool
     if chart not in CHARTS:
         raise ValueError(f"p1_matrices: chart must be one of {CHARTS}, not {chart!r}")
     np, sparse = _modules()
-    if k is not None:
-        k = np.asarray(k, dtype=np.float64)
-        if k.shape != (2 * triangulation.genus,):
-            raise ValueError(f"p1_matrices: k must have 2g = {2 * triangulation.genus} entries, not shape {k.shape}")
+    phase_k = None if k is None else np.asarray(k, dtype=np.float64)
+    if phase_k is not None and phase_k.shape != (2 * triangulation.genus,):
+        raise ValueError(f"p1_matrices: k must have 2g = {2 * triangulation.genus} entries, not shape {phase_k.shape}")
     ids = np.asarray(triangulation.vertices().ids, dtype=np.int64)
     faces = np.asarray(triangulation.faces().vertices, dtype=np.int64)
     z = np.asarray(triangulation.face_points(), dtype=np.float64)  # (F, 3, 2), Poincare
@@ -251,11 +250,11 @@ def p1_matrices(triangulation: Triangulation, chart: str = "klein", lumped: bool
         stiffness_weight = area[:, None, None] * np.eye(2)[None]  # conformal: Euclidean cotangent matrix
     local_k = np.einsum("fia,fab,fjb->fij", grad, stiffness_weight, grad)
     local_m = mass
-    if k is not None:
+    if phase_k is not None:
         # The phase of the relative translation of corner j's copy to
         # corner i's; 1 exactly (exp(0)) on the diagonal, and wherever
         # k . ([h_j] - [h_i]) is 0.
-        theta = np.asarray(triangulation.corner_homology(), dtype=np.float64) @ k  # (F, 3)
+        theta = np.asarray(triangulation.corner_homology(), dtype=np.float64) @ phase_k  # (F, 3)
         phase = np.exp(1j * (theta[:, None, :] - theta[:, :, None]))
         local_k = local_k * phase
         local_m = local_m * phase
@@ -266,7 +265,7 @@ def p1_matrices(triangulation: Triangulation, chart: str = "klein", lumped: bool
     stiffness = sparse.coo_matrix((local_k.ravel(), (i_index, j_index)), shape=(n, n)).tocsr()
     if lumped:
         diagonal = np.bincount(rows.ravel(), weights=mass.sum(axis=2).ravel(), minlength=n)
-        mass_matrix = sparse.diags(diagonal if k is None else diagonal.astype(complex)).tocsr()
+        mass_matrix = sparse.diags(diagonal if phase_k is None else diagonal.astype(complex)).tocsr()
     else:
         mass_matrix = sparse.coo_matrix((local_m.ravel(), (i_index, j_index)), shape=(n, n)).tocsr()
     # Hermitian (symmetric) by construction up to rounding in the sums; make it exact.

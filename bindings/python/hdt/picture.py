@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import cmath
 import math
-from typing import TYPE_CHECKING, Iterable, List, Optional, Sequence, Tuple
+from typing import TYPE_CHECKING, Iterable, List, Optional, Sequence, Tuple, cast
 
 from ._arrays import Matrix, Point, as_lists
 from .group import neighbour_words, word_matrix
@@ -204,12 +204,13 @@ class Scene:
         (both ends beyond one side of F_g are left out), in the library's
         order; edges shorter than `pixel` are left out, as the library does
         at size 800."""
-        result = []
+        result: List[Tuple[Tuple[float, float], ...]] = []
         for p, q in self.voronoi:
             if math.hypot(q[0] - p[0], q[1] - p[1]) <= pixel:
                 continue
             for h, matrix in enumerate(self.neighbours):
-                ends = (p, q) if h == 0 else (_apply(matrix, *p), _apply(matrix, *q))
+                ends = cast(Tuple[Tuple[float, float], ...],
+                            (p, q) if h == 0 else (_apply(matrix, *p), _apply(matrix, *q)))
                 if self._may_meet_polygon(ends):
                     result.append(ends)
         return result

@@ -13,7 +13,7 @@ candidates that are clearly outside before the library is asked.
 from __future__ import annotations
 
 import math
-from typing import Iterator
+from typing import Iterator, List, Tuple
 
 from . import _arrays
 from ._arrays import Points
@@ -55,7 +55,7 @@ def random_points(genus: int, n: int, seed: int = 1) -> Points:
     mu = math.hypot(mx, my)
     c, step = (mu + 1.0 / mu) / 2.0, pi / (2.0 * genus)
     stream = _splitmix64(seed)
-    points = []
+    points: List[Tuple[float, float]] = []
     while len(points) < n:
         ch = 1.0 + (next(stream) >> 11) * 2.0 ** -53 * (cosh_r_max - 1.0)
         rho = math.sqrt((ch - 1.0) / (ch + 1.0))
