@@ -496,22 +496,26 @@ double text_width(const char *text, std::size_t n) {
 }
 
 // The text cut into lines at spaces, each (but a single word) estimated to
-// fit `width` pixels at font size `font`; each piece but the last keeps its
-// space at its end, so that the pieces joined are the text.
+// fit `width` pixels at font size `font`: at the line's last space after a
+// ',' or ';' if it has one, else at its last space. Each piece but the last
+// keeps its space at its end, so that the pieces joined are the text.
 std::vector<std::string> wrap(const std::string &text, double width, double font) {
   const double limit = width * 1000 / (font * 1.05);
   std::vector<std::string> lines;
-  std::size_t start = 0, end = 0; // the current line, and where it can end
+  // The current line, where it can end, and its last space after ',' or ';'.
+  std::size_t start = 0, end = 0, clause = 0;
   while (end < text.size()) {
     std::size_t next = text.find(' ', end + 1);
     if (next == std::string::npos) next = text.size();
     if (end > start && text_width(text.data() + start, next - start) > limit) {
-      lines.push_back(text.substr(start, end + 1 - start)); // with its space
-      start = end + 1;
+      const std::size_t cut = clause > start ? clause : end;
+      lines.push_back(text.substr(start, cut + 1 - start)); // with its space
+      start = cut + 1;
       end = start;
       continue;
     }
     end = next;
+    if (end < text.size() && (text[end - 1] == ',' || text[end - 1] == ';')) clause = end;
   }
   if (start < text.size() || lines.empty()) lines.push_back(text.substr(start));
   return lines;

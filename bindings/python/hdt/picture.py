@@ -13,7 +13,9 @@ filled lightly and outlined; user vertices are dark dots, dummy vertices
 larger red ones, with a dot at each place a vertex has in the closed F_g (a
 vertex on a side also on the paired side, one at the corner v_0 at every
 corner). Optionally (neighbours=True) the 4g tiles g_k(F_g) across the sides
-are drawn too, lighter, each with the triangulation cut at it.
+are drawn too, lighter, each with the triangulation (faces, vertices, and
+with voronoi=True the Voronoi edges) cut at it. The caption is wrapped at
+spaces (:func:`wrap`) to fit the picture's width.
 
 :func:`plot` (matplotlib) computes the same pieces as the library, with the
 same double arithmetic, and cuts them with a matplotlib clip path. Points
@@ -32,8 +34,60 @@ from .surface import polygon_side_midpoint, polygon_vertex
 DISK_FILL, DISK_EDGE = "#f4f6fb", "#333333"
 POLYGON_FILL, POLYGON_EDGE = "#ffd98a", "#c05a00"
 FACE_EDGE, NEIGHBOUR_FACE_EDGE, NEIGHBOUR_POLYGON_EDGE = "#1f2a44", "#8a9ac0", "#e0b070"
-VORONOI_EDGE = "#2a8a3a"
+VORONOI_EDGE, NEIGHBOUR_VORONOI_EDGE = "#2a8a3a", "#8cc498"
 USER_VERTEX, DUMMY_VERTEX = "#1f2a44", "#d62728"
+NEIGHBOUR_USER_VERTEX, NEIGHBOUR_DUMMY_VERTEX = "#8a9ac0", "#e89a9b"
+
+# The caption's width estimate (lib/picture/svg.cpp's numbers): the advance
+# widths of DejaVu Sans for ' ' to '~', in thousandths of an em, rounded up;
+# 1 em for a character beyond ASCII; 5% more for the font's differences.
+_ASCII_WIDTH = (
+    318, 401, 460, 838, 637, 950, 780, 276, 391, 391, 500, 838, 318, 361, 318, 337,
+    637, 637, 637, 637, 637, 637, 637, 637, 637, 637, 337, 337, 838, 838, 838, 531,
+    1000, 685, 687, 699, 771, 632, 576, 775, 752, 295, 295, 656, 558, 863, 749, 788,
+    604, 788, 695, 635, 611, 732, 685, 989, 686, 611, 686, 391, 337, 391, 838, 500,
+    500, 613, 635, 550, 635, 616, 353, 635, 634, 278, 278, 580, 278, 975, 634, 613,
+    635, 635, 412, 521, 393, 634, 592, 819, 592, 592, 525, 637, 337, 637, 838)
+
+
+def text_width(text):
+    """The estimated width of the text, in thousandths of an em (generous:
+    the SVG picture and plot() wrap their captions with it)."""
+    width = 0
+    for c in text:
+        if c == "\t":
+            width += _ASCII_WIDTH[0]
+        elif " " <= c <= "~":
+            width += _ASCII_WIDTH[ord(c) - 32]
+        elif ord(c) < 32:
+            width += _ASCII_WIDTH[ord("?") - 32]
+        else:
+            width += 1000
+    return width
+
+
+def wrap(text, width, font_size):
+    """The text cut at spaces into lines estimated to fit `width` at font
+    size `font_size` (in the same unit), as the library wraps its caption:
+    at the line's last space after a ',' or ';' if it has one; each line but
+    the last keeps its space at its end."""
+    limit = width * 1000 / (font_size * 1.05)
+    lines, start, end, clause = [], 0, 0, 0
+    while end < len(text):
+        following = text.find(" ", end + 1)
+        if following < 0:
+            following = len(text)
+        if end > start and text_width(text[start:following]) > limit:
+            cut = clause if clause > start else end
+            lines.append(text[start:cut + 1])
+            start = end = cut + 1
+            continue
+        end = following
+        if end < len(text) and text[end - 1] in ",;":
+            clause = end
+    if start < len(text) or not lines:
+        lines.append(text[start:])
+    return lines
 
 
 def svg(triangulation, *, size=800, dummies=True, neighbours=False, title=None, voronoi=False):
@@ -187,19 +241,25 @@ class Scene:
                 result.append(corners)
         return result
 
-    def voronoi_pieces(self, pixel=2.0 / (800 * 0.97)):
+    def voronoi_pieces(self, pixel=2.0 / (800 * 0.97), then=None):
         """The copies h(e), h in N, of the Voronoi edges that may meet F_g
         (both ends beyond one side of F_g are left out), in the library's
         order; edges shorter than `pixel` are left out, as the library does
-        at size 800."""
+        at size 800. With the real matrix `then`, each copy is mapped by it,
+        and left out when it is then shorter than `pixel`."""
         result = []
         for p, q in self.voronoi:
             if math.hypot(q[0] - p[0], q[1] - p[1]) <= pixel:
                 continue
             for h, matrix in enumerate(self.neighbours):
                 ends = (p, q) if h == 0 else (_apply(matrix, *p), _apply(matrix, *q))
-                if self._may_meet_polygon(ends):
-                    result.append(ends)
+                if not self._may_meet_polygon(ends):
+                    continue
+                if then is not None:
+                    ends = (_apply(then, *ends[0]), _apply(then, *ends[1]))
+                    if math.hypot(ends[1][0] - ends[0][0], ends[1][1] - ends[0][1]) <= pixel:
+                        continue
+                result.append(ends)
         return result
 
     def places(self, point):
@@ -283,6 +343,20 @@ def plot(triangulation, ax=None, *, dummies=True, neighbours=False, voronoi=Fals
                                    linewidths=line * 2 / 3, zorder=2)
             ax.add_collection(faces)
             faces.set_clip_path(tile)
+            if voronoi:
+                cells = LineCollection([[p] + [(z.real, z.imag) for z in geodesic_points(complex(*p), complex(*q))]
+                                        for p, q in scene.voronoi_pieces(pixel, generator)],
+                                       colors=NEIGHBOUR_VORONOI_EDGE, linewidths=line, zorder=2)
+                ax.add_collection(cells)
+                cells.set_clip_path(tile)
+            kinds = [(scene.user_points, NEIGHBOUR_USER_VERTEX, dot)]
+            if dummies:
+                kinds.append((scene.dummy_points, NEIGHBOUR_DUMMY_VERTEX, dot + 1))
+            for points, colour, size in kinds:
+                places = [_apply(generator, *place) for point in points for place in scene.places(point)]
+                if places:
+                    ax.scatter([x for x, _ in places], [y for _, y in places], s=(1.3 * size * 2 / 3) ** 2, c=colour,
+                               zorder=2)
     clip = Polygon(boundary, closed=True, facecolor="none", edgecolor="none")
     ax.add_patch(clip)
     faces = LineCollection([_outline(p) for p in scene.pieces()], colors=FACE_EDGE, linewidths=line, zorder=3,
@@ -309,5 +383,9 @@ def plot(triangulation, ax=None, *, dummies=True, neighbours=False, voronoi=Fals
     ax.set_ylim(-1.03, 1.03)
     ax.set_aspect("equal")
     ax.set_axis_off()
-    ax.set_title(scene.caption(neighbours, dummies, voronoi), fontsize=9)
+    # The caption wrapped to the Axes' width (matplotlib does not wrap it).
+    width = ax.figure.get_figwidth() * 72 * ax.get_position().width  # points
+    title, line = scene.caption(neighbours, dummies, voronoi).split("\n")
+    lines = [part.rstrip() for text in (title, line) for part in wrap(text, width, 9)]
+    ax.set_title("\n".join(lines), fontsize=9)
     return ax

@@ -810,7 +810,8 @@ class Triangulation:
         copy of a face that meets F_g, with geodesic edges, cut at F_g's
         sides; F_g outlined, user vertices dark dots and (when dummies is
         true) dummy vertices red and larger. neighbours also draws the 4g
-        tiles across F_g's sides, lighter. size is the width in pixels
+        tiles across F_g's sides, lighter, with their faces, vertices and
+        Voronoi edges. The caption wraps at spaces to fit the width. size is the width in pixels
         (0 < size <= 100000, else :class:`hdt.InvalidArgument`); title
         replaces the caption's first line (plain text; the library escapes
         it), by default "Delaunay triangulation of N points on M_g". voronoi

@@ -57,7 +57,7 @@ def test_to_svg_is_well_formed_and_complete(small, tmp_path):
     assert clip.get("id") == "hdt-polygon"
     faces = [p for p in root.iter(f"{SVG}path") if p.get("clip-path") == "url(#hdt-polygon)"]
     assert len(faces) == 1 and faces[0].get("d").count("M") >= small.face_count
-    captions = [t.text for t in root.iter(f"{SVG}text")]
+    captions = ["".join(t.itertext()) for t in root.iter(f"{SVG}text")]
     assert captions[0] == "Delaunay triangulation of 60 points on M_2"
     assert captions[1].startswith(f"{small.vertex_count} vertices ({small.dummy_count} dummies, red), "
                                   f"{small.face_count} faces")
