@@ -178,14 +178,14 @@ START_TEST(length_and_determinism) {
     char *a = picture(t, 800, "x", flag_sets[i]); /* picture() checks length == strlen */
     char *b = picture(t, 800, "x", flag_sets[i]);
     expect(strcmp(a, b) == 0, "flags %u: two calls drew different pictures", flag_sets[i]);
-    /* With the tiles or the Voronoi diagram, the caption's second part wraps: one line more. */
+    /* With the tiles, the caption's second part wraps: one line more. */
     expect(strncmp(a,
-                   flag_sets[i] & (HDT_SVG_NEIGHBOURS | HDT_SVG_VORONOI)
+                   flag_sets[i] & HDT_SVG_NEIGHBOURS
                        ? "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"873\""
                        : "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"856\"",
                    62) == 0,
            "flags %u: the text starts with \"%.70s\"", flag_sets[i], a);
-    expect(count(a, "<tspan") == (flag_sets[i] & (HDT_SVG_NEIGHBOURS | HDT_SVG_VORONOI) ? 1u : 0u),
+    expect(count(a, "<tspan") == (flag_sets[i] & HDT_SVG_NEIGHBOURS ? 1u : 0u),
            "flags %u: %zu wrapped lines", flag_sets[i], count(a, "<tspan"));
     expect(count(a, "stroke=\"#8cc498\"") ==
                (flag_sets[i] & HDT_SVG_NEIGHBOURS && flag_sets[i] & HDT_SVG_VORONOI ? 8u : 0u),
