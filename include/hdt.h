@@ -382,6 +382,9 @@ HDT_API hdt_status hdt_validate(const hdt_triangulation *t) HDT_NOEXCEPT;
                                     (with HDT_SVG_VORONOI) Voronoi edges in them, lighter */
 #define HDT_SVG_HIDE_DUMMIES 2u  /* do not mark the dummy vertices (the faces around them are drawn either way) */
 #define HDT_SVG_VORONOI 4u       /* also the Voronoi diagram, cut at the sides like the faces (HDT_0.4 on) */
+#define HDT_SVG_SIDE_LABELS 8u   /* label the sides of F_g beside their midpoints: s_k with g_k (which maps
+                                    s_{k+2g} onto it) and s_{k+2g} with g_k^-1, k < 2g (from version 0.6.0;
+                                    earlier libraries refuse it with HDT_EINVAL) */
 /* Largest picture width hdt_svg accepts, in pixels. */
 #define HDT_SVG_SIZE_MAX 100000.0
 

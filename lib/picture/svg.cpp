@@ -40,7 +40,7 @@ constexpr double kTitleStep = 20.0;      // the band grows by this for each furt
 constexpr double kInfoStep = 17.0;       // and by this for each further line of the second part
 constexpr double kDiskScale = 0.97;      // the unit circle's radius, in half picture widths
 constexpr double kSizeMax = HDT_SVG_SIZE_MAX;
-constexpr unsigned kKnownFlags = HDT_SVG_NEIGHBOURS | HDT_SVG_HIDE_DUMMIES | HDT_SVG_VORONOI;
+constexpr unsigned kKnownFlags = HDT_SVG_NEIGHBOURS | HDT_SVG_HIDE_DUMMIES | HDT_SVG_VORONOI | HDT_SVG_SIDE_LABELS;
 
 // A failed call of the public API inside hdt_svg: its status, and its message
 // (which names the function) after "hdt_svg: ".
@@ -176,6 +176,7 @@ void take_voronoi(const hdt_triangulation *t, Snapshot &s) {
 struct Geometry {
   int n = 0;                            // 4g sides
   std::vector<double> vx, vy;           // F_g's vertices v_0 .. v_{n-1}
+  std::vector<double> mx, my;           // the sides' midpoints m_0 .. m_{n-1}
   std::vector<double> cx, cy;           // centres of the sides' circles (orthogonal to the unit circle)
   std::vector<Matrix> generator;        // g_0 .. g_{n-1}
   std::vector<Matrix> neighbour;        // the elements of N, by translation id
@@ -186,6 +187,8 @@ void take_geometry(int genus, Geometry &g) {
   g.n = n;
   g.vx.resize(std::size_t(n));
   g.vy.resize(std::size_t(n));
+  g.mx.resize(std::size_t(n));
+  g.my.resize(std::size_t(n));
   g.cx.resize(std::size_t(n));
   g.cy.resize(std::size_t(n));
   g.generator.resize(std::size_t(n));
@@ -197,6 +200,8 @@ void take_geometry(int genus, Geometry &g) {
     check(hdt_word_matrix(genus, &letter, 1, g.generator[std::size_t(k)].data()));
     // The circle through m_k orthogonal to the unit circle has its centre on
     // the ray through m_k, at |c| = (|m| + 1/|m|) / 2.
+    g.mx[std::size_t(k)] = mx;
+    g.my[std::size_t(k)] = my;
     const double m2 = mx * mx + my * my, scale = (1 + m2) / (2 * m2);
     g.cx[std::size_t(k)] = mx * scale;
     g.cy[std::size_t(k)] = my * scale;
@@ -537,7 +542,7 @@ void put_lines(Text &f, const std::vector<std::string> &lines, double x, double 
 
 void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char *title, unsigned flags) {
   const bool neighbours = flags & HDT_SVG_NEIGHBOURS, hide_dummies = flags & HDT_SVG_HIDE_DUMMIES;
-  const bool voronoi = flags & HDT_SVG_VORONOI;
+  const bool voronoi = flags & HDT_SVG_VORONOI, side_labels = flags & HDT_SVG_SIDE_LABELS;
   const double scale = size / kReferenceSize; // the caption's layout
 
   // The caption: the title, and what the picture shows, each wrapped to the
@@ -551,6 +556,7 @@ void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char
     t.put(", %zu faces, drawn in F_%d and cut at its sides", s.face_count, s.genus);
     if (neighbours) t.put(", and in the %d tiles across them", g.n);
     if (voronoi) t.puts("; Voronoi diagram green");
+    if (side_labels) t.puts("; side s_k labelled g_k: g_k maps s_(k+2g), labelled g_k^-1, onto it");
     t.puts("; Poincare disk");
     info = t.str();
   }
@@ -608,8 +614,8 @@ void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char
     for (int k = 0; k < g.n; ++k) p.polygon_copy(f, g.generator[std::size_t(k)].data());
     f.puts("\"/>\n</g>\n");
     // And their vertices, lighter and smaller.
-    p.vertex_dots(f, false, "#8a9ac0", dot * 2 / 3, &g.generator);
-    if (!hide_dummies) p.vertex_dots(f, true, "#e89a9b", (dot + 1.0) * 2 / 3, &g.generator);
+    p.vertex_dots(f, false, "#7585b0", dot * 0.85, &g.generator);
+    if (!hide_dummies) p.vertex_dots(f, true, "#e89a9b", (dot + 1.0) * 0.85, &g.generator);
   }
 
   // The triangulation in F_g, cut at its sides.
@@ -637,6 +643,30 @@ void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char
   p.vertex_dots(f, false, "#1f2a44", dot);
   if (!hide_dummies) p.vertex_dots(f, true, "#d62728", dot + 1.0);
 
+  // The sides' labels, outside F_g beside their midpoints, over a white halo.
+  if (side_labels) {
+    const double font = 12 * scale;
+    f.put("<g font-family=\"sans-serif\" font-size=\"%.10g\" text-anchor=\"middle\" fill=\"#c05a00\" "
+          "stroke=\"white\" stroke-width=\"%.10g\" stroke-linejoin=\"round\" paint-order=\"stroke\">\n",
+          font, 3 * scale);
+    for (int k = 0; k < g.n; ++k) {
+      char label[32];
+      if (k < g.n / 2) std::snprintf(label, sizeof label, "g_%d", k);
+      else std::snprintf(label, sizeof label, "g_%d^-1", k - g.n / 2);
+      // The outward unit vector at m_k in SVG's coordinates (y down), and the
+      // distance from m_k to the label's centre: a gap and half the label's
+      // extent in that direction.
+      const double mx = g.mx[std::size_t(k)], my = g.my[std::size_t(k)], m = std::hypot(mx, my);
+      const double ux = mx / m, uy = -my / m;
+      const double w = text_width(label, std::strlen(label)) * font * 1.05 / 1000;
+      const double gap = 4 * scale + std::fabs(ux) * w / 2 + std::fabs(uy) * font / 2;
+      f.put("<text x=\"%.2f\" y=\"%.2f\">", p.sx(mx) + ux * gap, p.sy(my) + uy * gap + 0.35 * font);
+      put_escaped(f, label);
+      f.puts("</text>\n");
+    }
+    f.puts("</g>\n");
+  }
+
   put_lines(f, title_lines, 12 * scale, 22 * scale, 16 * scale, kTitleStep * scale, nullptr);
   put_lines(f, info_lines, 12 * scale, (42 + more_title) * scale, 13 * scale, kInfoStep * scale, "#555");
   f.puts("</svg>\n");
@@ -658,7 +688,8 @@ HDT_API hdt_status hdt_svg(const hdt_triangulation *t, double size, const char *
     }
     if (flags & ~kKnownFlags)
       throw ApiError(HDT_EINVAL, "unknown flags " + std::to_string(flags & ~kKnownFlags) +
-                                     " (HDT_SVG_NEIGHBOURS = 1, HDT_SVG_HIDE_DUMMIES = 2 and HDT_SVG_VORONOI = 4 are known)");
+                                     " (HDT_SVG_NEIGHBOURS = 1, HDT_SVG_HIDE_DUMMIES = 2, HDT_SVG_VORONOI = 4 and "
+                                     "HDT_SVG_SIDE_LABELS = 8 are known)");
     if (capacity > 0 && !text)
       throw ApiError(HDT_EINVAL, "text is NULL but capacity is " + std::to_string(capacity));
 

@@ -36,7 +36,7 @@ POLYGON_FILL, POLYGON_EDGE = "#ffd98a", "#c05a00"
 FACE_EDGE, NEIGHBOUR_FACE_EDGE, NEIGHBOUR_POLYGON_EDGE = "#1f2a44", "#8a9ac0", "#e0b070"
 VORONOI_EDGE, NEIGHBOUR_VORONOI_EDGE = "#2a8a3a", "#8cc498"
 USER_VERTEX, DUMMY_VERTEX = "#1f2a44", "#d62728"
-NEIGHBOUR_USER_VERTEX, NEIGHBOUR_DUMMY_VERTEX = "#8a9ac0", "#e89a9b"
+NEIGHBOUR_USER_VERTEX, NEIGHBOUR_DUMMY_VERTEX = "#7585b0", "#e89a9b"
 
 # The caption's width estimate (lib/picture/svg.cpp's numbers): the advance
 # widths of DejaVu Sans for ' ' to '~', in thousandths of an em, rounded up;
@@ -90,10 +90,17 @@ def wrap(text, width, font_size):
     return lines
 
 
-def svg(triangulation, *, size=800, dummies=True, neighbours=False, title=None, voronoi=False):
+def svg(triangulation, *, size=800, dummies=True, neighbours=False, title=None, voronoi=False, side_labels=False):
     """The picture of the triangulation as the text of an SVG document, drawn
     by libhdt: the same as ``triangulation.to_svg(...)`` (see there)."""
-    return triangulation.to_svg(size=size, dummies=dummies, neighbours=neighbours, title=title, voronoi=voronoi)
+    return triangulation.to_svg(size=size, dummies=dummies, neighbours=neighbours, title=title, voronoi=voronoi,
+                                side_labels=side_labels)
+
+
+def side_label(genus, k):
+    """The label of side s_k of F_g in the pictures: "g_k" for k < 2g, the
+    generator that maps s_{k+2g} onto s_k, and "g_{k-2g}^-1" beyond."""
+    return f"g_{k}" if k < 2 * genus else f"g_{k - 2 * genus}^-1"
 
 
 # ---- Geometry ----
@@ -278,7 +285,7 @@ class Scene:
         """The corners of F_g, or of its image under the real matrix."""
         return list(self.polygon) if matrix is None else [_apply(matrix, x, y) for x, y in self.polygon]
 
-    def caption(self, neighbours, dummies=True, voronoi=False):
+    def caption(self, neighbours, dummies=True, voronoi=False, side_labels=False):
         """The library's default caption, both lines."""
         user = self.vertex_count - self.dummy_count
         if user == 0:
@@ -294,6 +301,8 @@ class Scene:
             line += f", and in the {4 * self.genus} tiles across them"
         if voronoi:
             line += "; Voronoi diagram green"
+        if side_labels:
+            line += "; side s_k labelled g_k: g_k maps s_(k+2g), labelled g_k^-1, onto it"
         return f"{title}\n{line}"
 
 
@@ -308,7 +317,7 @@ def _outline(corners):
     return [(z.real, z.imag) for z in geodesic_polygon_points(_complex(corners))]
 
 
-def plot(triangulation, ax=None, *, dummies=True, neighbours=False, voronoi=False):
+def plot(triangulation, ax=None, *, dummies=True, neighbours=False, voronoi=False, side_labels=False):
     """Draws the triangulation on the matplotlib Axes ax (a new figure's when
     None) and returns the Axes: the picture of :func:`svg`, the same pieces
     cut at F_g's sides by a clip path, with geodesic edges drawn as fine
@@ -355,7 +364,7 @@ def plot(triangulation, ax=None, *, dummies=True, neighbours=False, voronoi=Fals
             for points, colour, size in kinds:
                 places = [_apply(generator, *place) for point in points for place in scene.places(point)]
                 if places:
-                    ax.scatter([x for x, _ in places], [y for _, y in places], s=(1.3 * size * 2 / 3) ** 2, c=colour,
+                    ax.scatter([x for x, _ in places], [y for _, y in places], s=(1.3 * size * 0.85) ** 2, c=colour,
                                zorder=2)
     clip = Polygon(boundary, closed=True, facecolor="none", edgecolor="none")
     ax.add_patch(clip)
@@ -379,13 +388,19 @@ def plot(triangulation, ax=None, *, dummies=True, neighbours=False, voronoi=Fals
         places = [place for point in scene.dummy_points for place in scene.places(point)]
         ax.scatter([x for x, _ in places], [y for _, y in places], s=(1.3 * (dot + 1)) ** 2, c=DUMMY_VERTEX, zorder=6,
                    label="dummy vertices")
+    if side_labels:
+        for k in range(len(scene.polygon)):
+            mx, my = polygon_side_midpoint(scene.genus, k)
+            m = math.hypot(mx, my)
+            ax.text(mx + 0.05 * mx / m, my + 0.05 * my / m, side_label(scene.genus, k), fontsize=8, ha="center",
+                    va="center", color=POLYGON_EDGE, zorder=7)
     ax.set_xlim(-1.03, 1.03)
     ax.set_ylim(-1.03, 1.03)
     ax.set_aspect("equal")
     ax.set_axis_off()
     # The caption wrapped to the Axes' width (matplotlib does not wrap it).
     width = ax.figure.get_figwidth() * 72 * ax.get_position().width  # points
-    title, line = scene.caption(neighbours, dummies, voronoi).split("\n")
+    title, line = scene.caption(neighbours, dummies, voronoi, side_labels).split("\n")
     lines = [part.rstrip() for text in (title, line) for part in wrap(text, width, 9)]
     ax.set_title("\n".join(lines), fontsize=9)
     return ax

@@ -65,7 +65,7 @@ from ._errors import HandleClosed, InternalError, InvalidArgument, Status, check
 from ._lib import lib
 
 # hdt_svg's flags (include/hdt.h).
-_SVG_NEIGHBOURS, _SVG_HIDE_DUMMIES, _SVG_VORONOI = 1, 2, 4
+_SVG_NEIGHBOURS, _SVG_HIDE_DUMMIES, _SVG_VORONOI, _SVG_SIDE_LABELS = 1, 2, 4, 8
 
 #: :meth:`Triangulation.vertices`: the live vertices by increasing id.
 Vertices = collections.namedtuple("Vertices", "ids points dummy")
@@ -801,7 +801,8 @@ class Triangulation:
 
     # ---- pictures ----
 
-    def to_svg(self, path=None, *, size=800, dummies=True, neighbours=False, title=None, voronoi=False):
+    def to_svg(self, path=None, *, size=800, dummies=True, neighbours=False, title=None, voronoi=False,
+               side_labels=False):
         """The picture of the triangulation as SVG text, drawn by libhdt
         (hdt_svg, as hdt-triangulate's --svg), also written to path (a file
         name) when given; needs no third-party package.
@@ -816,11 +817,13 @@ class Triangulation:
         replaces the caption's first line (plain text; the library escapes
         it), by default "Delaunay triangulation of N points on M_g". voronoi
         also draws the Voronoi diagram (green), cut at the sides like the
-        faces. See :mod:`hdt.picture`.
+        faces. side_labels labels the sides of F_g: s_k with g_k (which maps
+        s_{k+2g} onto it) and s_{k+2g} with g_k^-1, k < 2g (libhdt 0.6.0 on).
+        See :mod:`hdt.picture`.
         """
         size = float(size)
         flags = ((0 if dummies else _SVG_HIDE_DUMMIES) | (_SVG_NEIGHBOURS if neighbours else 0)
-                 | (_SVG_VORONOI if voronoi else 0))
+                 | (_SVG_VORONOI if voronoi else 0) | (_SVG_SIDE_LABELS if side_labels else 0))
         if title is not None:
             # A NUL would end the C string: shown as '?', as the library shows
             # control characters; lone surrogates likewise.
@@ -846,11 +849,12 @@ class Triangulation:
                 file.write(data)
         return data.decode("utf-8")
 
-    def plot(self, ax=None, *, dummies=True, neighbours=False, voronoi=False):
+    def plot(self, ax=None, *, dummies=True, neighbours=False, voronoi=False, side_labels=False):
         """Draws the triangulation on a matplotlib Axes (a new figure's when
         ax is None) and returns the Axes; the picture of :meth:`to_svg`.
         Raises ImportError when matplotlib is not installed."""
-        return picture.plot(self, ax, dummies=dummies, neighbours=neighbours, voronoi=voronoi)
+        return picture.plot(self, ax, dummies=dummies, neighbours=neighbours, voronoi=voronoi,
+                            side_labels=side_labels)
 
     def to_meshio(self, layout="representatives"):
         """The triangulation as a ``meshio.Mesh`` (needs meshio and NumPy;
