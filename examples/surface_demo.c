@@ -13,6 +13,7 @@
 #include <stdlib.h>
 
 #define PICTURE_SIZE 800.0
+#define TITLE_HEIGHT 40.0 /* a band above the disk for the title */
 
 static int check(hdt_status s, const char *what) {
   if (s == HDT_OK) return 1;
@@ -22,7 +23,7 @@ static int check(hdt_status s, const char *what) {
 
 /* Disk coordinates to SVG coordinates (y points down in SVG). */
 static double sx(double x) { return PICTURE_SIZE / 2 * (1 + 0.97 * x); }
-static double sy(double y) { return PICTURE_SIZE / 2 * (1 - 0.97 * y); }
+static double sy(double y) { return TITLE_HEIGHT + PICTURE_SIZE / 2 * (1 - 0.97 * y); }
 
 /* An SVG path command drawing the geodesic from p to q: an arc of the
  * circle orthogonal to the unit circle, or a segment through the centre. */
@@ -73,10 +74,10 @@ static int write_picture(const char *path, int genus, size_t neighbours) {
     return 0;
   }
   fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%g\" height=\"%g\" viewBox=\"0 0 %g %g\">\n",
-          PICTURE_SIZE, PICTURE_SIZE, PICTURE_SIZE, PICTURE_SIZE);
+          PICTURE_SIZE, PICTURE_SIZE + TITLE_HEIGHT, PICTURE_SIZE, PICTURE_SIZE + TITLE_HEIGHT);
   fprintf(f, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
   fprintf(f, "<circle cx=\"%g\" cy=\"%g\" r=\"%g\" fill=\"#f4f6fb\" stroke=\"#333\" stroke-width=\"1.5\"/>\n",
-          PICTURE_SIZE / 2, PICTURE_SIZE / 2, PICTURE_SIZE / 2 * 0.97);
+          PICTURE_SIZE / 2, TITLE_HEIGHT + PICTURE_SIZE / 2, PICTURE_SIZE / 2 * 0.97);
   int ok = 1;
   for (size_t id = 1; ok && id < neighbours; ++id)
     ok = draw_tile(f, genus, id, "fill=\"none\" stroke=\"#7a8bb0\" stroke-width=\"0.6\"");

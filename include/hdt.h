@@ -378,9 +378,13 @@ HDT_API hdt_status hdt_validate(const hdt_triangulation *t) HDT_NOEXCEPT;
 
 /* ---- Pictures ---- */
 
-#define HDT_SVG_NEIGHBOURS 1u    /* also the 4g copies of F_g across its sides, and the faces in them, lighter */
+#define HDT_SVG_NEIGHBOURS 1u    /* also the 4g copies of F_g across its sides, and the faces, vertices and
+                                    (with HDT_SVG_VORONOI) Voronoi edges in them, lighter */
 #define HDT_SVG_HIDE_DUMMIES 2u  /* do not mark the dummy vertices (the faces around them are drawn either way) */
 #define HDT_SVG_VORONOI 4u       /* also the Voronoi diagram, cut at the sides like the faces (HDT_0.4 on) */
+#define HDT_SVG_SIDE_LABELS 8u   /* label the sides of F_g beside their midpoints: s_k with g_k (which maps
+                                    s_{k+2g} onto it) and s_{k+2g} with g_k^-1, k < 2g (from version 0.6.0;
+                                    earlier libraries refuse it with HDT_EINVAL) */
 /* Largest picture width hdt_svg accepts, in pixels. */
 #define HDT_SVG_SIZE_MAX 100000.0
 
@@ -390,10 +394,15 @@ HDT_API hdt_status hdt_validate(const hdt_triangulation *t) HDT_NOEXCEPT;
    geodesic edges, cut at F_g's sides, so that F_g is tiled exactly; F_g
    filled lightly and outlined; user vertices dark dots, dummy vertices
    larger red ones (a vertex on F_g's boundary gets a dot at each of its
-   places there: 2 on a side, 4g at the corners); below a two-line caption.
+   places there: 2 on a side, 4g at the corners); above them a caption of
+   two parts, the title and what the picture shows, each wrapped at spaces
+   where an estimate of its width (generous: DejaVu Sans's advance widths
+   and 5%) would not fit the picture's width.
    Coordinates are rounded to 0.01 px. The triangulation is not changed.
    size: the width in pixels, finite, > 0 and <= HDT_SVG_SIZE_MAX (the
-   height adds a caption band of 0.07 size; hdt-triangulate uses 800).
+   height adds a caption band of 0.07 size, and 0.025 size for each further
+   title line and 0.02125 size for each further line of the second part
+   when they wrap; hdt-triangulate uses 800).
    title: the caption's first line, plain UTF-8 text (markup is escaped;
    control characters and bytes that are not UTF-8 show as '?'); NULL for
    "Delaunay triangulation of N points on M_g" (N user vertices), or, with

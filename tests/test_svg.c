@@ -110,7 +110,8 @@ START_TEST(bad_arguments_write_nothing) {
     expect_refused(hdt_svg(t, bad_sizes[i], NULL, 0, NULL, 0, &length), HDT_EINVAL, what, buffer, 0, length);
   }
 
-  const unsigned bad_flags[] = {8u, 16u, 1u << 31, HDT_SVG_NEIGHBOURS | HDT_SVG_VORONOI | 8u, ~0u};
+  const unsigned bad_flags[] = {16u, 32u, 1u << 31, HDT_SVG_NEIGHBOURS | HDT_SVG_VORONOI | HDT_SVG_SIDE_LABELS | 16u,
+                                ~0u};
   for (size_t i = 0; i < sizeof bad_flags / sizeof bad_flags[0]; ++i) {
     char what[64];
     snprintf(what, sizeof what, "flags %#x", bad_flags[i]);
@@ -173,13 +174,31 @@ START_TEST(length_and_determinism) {
   expect(hdt_faces(t, before, before_tr, faces, &n) == HDT_OK && n == faces, "hdt_faces");
 
   const unsigned flag_sets[] = {0, HDT_SVG_NEIGHBOURS, HDT_SVG_HIDE_DUMMIES, HDT_SVG_NEIGHBOURS | HDT_SVG_HIDE_DUMMIES,
-                                HDT_SVG_VORONOI, HDT_SVG_VORONOI | HDT_SVG_NEIGHBOURS};
+                                HDT_SVG_VORONOI, HDT_SVG_VORONOI | HDT_SVG_NEIGHBOURS, HDT_SVG_SIDE_LABELS};
   for (size_t i = 0; i < sizeof flag_sets / sizeof flag_sets[0]; ++i) {
     char *a = picture(t, 800, "x", flag_sets[i]); /* picture() checks length == strlen */
     char *b = picture(t, 800, "x", flag_sets[i]);
     expect(strcmp(a, b) == 0, "flags %u: two calls drew different pictures", flag_sets[i]);
-    expect(strncmp(a, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"856\"", 62) == 0,
+    /* With the tiles or the side labels, the caption's second part wraps: one line more. */
+    const int wraps = (flag_sets[i] & (HDT_SVG_NEIGHBOURS | HDT_SVG_SIDE_LABELS)) != 0;
+    expect(strncmp(a,
+                   wraps
+                       ? "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"873\""
+                       : "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"856\"",
+                   62) == 0,
            "flags %u: the text starts with \"%.70s\"", flag_sets[i], a);
+    expect(count(a, "<tspan") == (wraps ? 1u : 0u),
+           "flags %u: %zu wrapped lines", flag_sets[i], count(a, "<tspan"));
+    expect(count(a, "stroke=\"#8cc498\"") ==
+               (flag_sets[i] & HDT_SVG_NEIGHBOURS && flag_sets[i] & HDT_SVG_VORONOI ? 8u : 0u),
+           "flags %u: the tiles' Voronoi paths", flag_sets[i]);
+    expect(count(a, "<g fill=\"#7585b0\">") == (flag_sets[i] & HDT_SVG_NEIGHBOURS ? 1u : 0u),
+           "flags %u: the tiles' vertices", flag_sets[i]);
+    /* The sides' labels: g_0 .. g_3 on s_0 .. s_3, g_0^-1 .. g_3^-1 on s_4 .. s_7. */
+    const int labels = (flag_sets[i] & HDT_SVG_SIDE_LABELS) != 0;
+    expect(count(a, ">g_") == (labels ? 8u : 0u) && count(a, "^-1</text>") == (labels ? 4u : 0u) &&
+               count(a, ">g_3^-1</text>") == (labels ? 1u : 0u),
+           "flags %u: %zu side labels", flag_sets[i], count(a, ">g_"));
     const size_t len = strlen(a);
     expect(len > 7 && strcmp(a + len - 7, "</svg>\n") == 0, "flags %u: the text ends with \"%s\"", flag_sets[i],
            a + (len > 20 ? len - 20 : 0));

@@ -73,6 +73,8 @@ static void usage(FILE *f) {
           "                      given (standard input is then read only as \"-\")\n"
           "      --neighbours    with --svg: also the copies across the 4g sides of F_g\n"
           "                      (also spelled --neighbors)\n"
+          "      --side-labels   with --svg: label the sides of F_g, s_k with g_k (which\n"
+          "                      maps s_(k+2g) onto it) and s_(k+2g) with g_k^-1\n"
           "      --voronoi       also the Voronoi diagram: in the output, drawn with\n"
           "                      --svg, and in the viewer of --html\n"
           "      --refine R[,B]  then refine: circumradius <= R, circumradius / shortest\n"
@@ -110,13 +112,14 @@ typedef struct options {
   const char *load;
   const char *input;
   int genus_given;
-  int keep_dummies, neighbours, voronoi, validate, stats, help, version;
+  int keep_dummies, neighbours, side_labels, voronoi, validate, stats, help, version;
   int refine;              /* 1: --refine, 2: --epsilon */
   double max_radius, max_ratio;
 } options;
 
 enum { OPT_GENUS, OPT_RANDOM, OPT_SEED, OPT_FORMAT, OPT_OUTPUT, OPT_SVG, OPT_NEIGHBOURS, OPT_VORONOI, OPT_KEEP,
-       OPT_VALIDATE, OPT_STATS, OPT_HELP, OPT_VERSION, OPT_SAVE, OPT_LOAD, OPT_REFINE, OPT_EPSILON, OPT_HTML };
+       OPT_VALIDATE, OPT_STATS, OPT_HELP, OPT_VERSION, OPT_SAVE, OPT_LOAD, OPT_REFINE, OPT_EPSILON, OPT_HTML,
+       OPT_SIDE_LABELS };
 
 typedef struct option_spec {
   const char *long_name; /* without "--" */
@@ -135,7 +138,7 @@ static const option_spec option_table[] = {
     {"version", 'V', 0, OPT_VERSION},    {"save", 0, 1, OPT_SAVE},
     {"load", 0, 1, OPT_LOAD},            {"voronoi", 0, 0, OPT_VORONOI},
     {"refine", 0, 1, OPT_REFINE},        {"epsilon", 0, 1, OPT_EPSILON},
-    {"html", 0, 1, OPT_HTML},
+    {"html", 0, 1, OPT_HTML},            {"side-labels", 0, 0, OPT_SIDE_LABELS},
 };
 #define N_OPTIONS (sizeof option_table / sizeof option_table[0])
 
@@ -245,6 +248,7 @@ static int apply_option(options *o, const option_spec *spec, const char *shown, 
     case OPT_SAVE: o->save = value; return 1;
     case OPT_LOAD: o->load = value; return 1;
     case OPT_NEIGHBOURS: o->neighbours = 1; return 1;
+    case OPT_SIDE_LABELS: o->side_labels = 1; return 1;
     case OPT_VORONOI: o->voronoi = 1; return 1;
     case OPT_KEEP: o->keep_dummies = 1; return 1;
     case OPT_VALIDATE: o->validate = 1; return 1;
@@ -304,6 +308,7 @@ static int parse_options(int argc, char **argv, options *o) {
   if (o->seed_given && !o->random) return usage_error("--seed needs --random");
   if (refine_options > 1) return usage_error("--refine and --epsilon exclude each other, and each is given once");
   if (o->neighbours && !o->svg) return usage_error("--neighbours needs --svg");
+  if (o->side_labels && !o->svg) return usage_error("--side-labels needs --svg");
   if (o->mesh && o->voronoi && !o->svg && !o->html)
     return usage_error("--voronoi goes with the text and json formats (or --svg, --html)");
   if (o->svg && strcmp(o->svg, "-") == 0 && (!o->output || strcmp(o->output, "-") == 0))
@@ -442,8 +447,10 @@ static void picture_title(const options *o, const counts *c, char *title, size_t
 
 /* The picture, drawn by libhdt, written to f. 0 on a failure (reported);
    the stream's error state is left for the caller to check. */
-static int write_picture(FILE *f, const hdt_triangulation *t, const char *title, int neighbours, int voronoi) {
-  const unsigned flags = (neighbours ? HDT_SVG_NEIGHBOURS : 0u) | (voronoi ? HDT_SVG_VORONOI : 0u);
+static int write_picture(FILE *f, const hdt_triangulation *t, const char *title, int neighbours, int voronoi,
+                         int side_labels) {
+  const unsigned flags = (neighbours ? HDT_SVG_NEIGHBOURS : 0u) | (voronoi ? HDT_SVG_VORONOI : 0u) |
+                         (side_labels ? HDT_SVG_SIDE_LABELS : 0u);
   /* A guess at the size (about 200 bytes a face, in F_g and in each tile),
      so that one call usually does (each call draws the whole picture); the
      exact size when it is too small. */
@@ -607,7 +614,7 @@ static int run(const options *given) {
     picture_title(o, &c, title, sizeof title);
     /* A loaded triangulation: libhdt's caption (and the viewer's default
        heading) counts all its user vertices. */
-    if (o->svg && !write_picture(svg.f, t, o->load ? NULL : title, o->neighbours, o->voronoi)) goto done;
+    if (o->svg && !write_picture(svg.f, t, o->load ? NULL : title, o->neighbours, o->voronoi, o->side_labels)) goto done;
     if (o->html && !html_writer_write(html.f, t, o->load ? NULL : title, o->voronoi)) goto done;
   }
   if (o->save && !saved_file_write(saved.f, t)) goto done;

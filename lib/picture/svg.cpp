@@ -36,9 +36,11 @@ namespace {
 
 constexpr double kReferenceSize = 800.0; // the tool's width: the caption's layout is given for it
 constexpr double kTitleHeight = 56.0;    // a band above the disk for the caption, at size 800
+constexpr double kTitleStep = 20.0;      // the band grows by this for each further title line, at size 800
+constexpr double kInfoStep = 17.0;       // and by this for each further line of the second part
 constexpr double kDiskScale = 0.97;      // the unit circle's radius, in half picture widths
 constexpr double kSizeMax = HDT_SVG_SIZE_MAX;
-constexpr unsigned kKnownFlags = HDT_SVG_NEIGHBOURS | HDT_SVG_HIDE_DUMMIES | HDT_SVG_VORONOI;
+constexpr unsigned kKnownFlags = HDT_SVG_NEIGHBOURS | HDT_SVG_HIDE_DUMMIES | HDT_SVG_VORONOI | HDT_SVG_SIDE_LABELS;
 
 // A failed call of the public API inside hdt_svg: its status, and its message
 // (which names the function) after "hdt_svg: ".
@@ -174,6 +176,7 @@ void take_voronoi(const hdt_triangulation *t, Snapshot &s) {
 struct Geometry {
   int n = 0;                            // 4g sides
   std::vector<double> vx, vy;           // F_g's vertices v_0 .. v_{n-1}
+  std::vector<double> mx, my;           // the sides' midpoints m_0 .. m_{n-1}
   std::vector<double> cx, cy;           // centres of the sides' circles (orthogonal to the unit circle)
   std::vector<Matrix> generator;        // g_0 .. g_{n-1}
   std::vector<Matrix> neighbour;        // the elements of N, by translation id
@@ -184,6 +187,8 @@ void take_geometry(int genus, Geometry &g) {
   g.n = n;
   g.vx.resize(std::size_t(n));
   g.vy.resize(std::size_t(n));
+  g.mx.resize(std::size_t(n));
+  g.my.resize(std::size_t(n));
   g.cx.resize(std::size_t(n));
   g.cy.resize(std::size_t(n));
   g.generator.resize(std::size_t(n));
@@ -195,6 +200,8 @@ void take_geometry(int genus, Geometry &g) {
     check(hdt_word_matrix(genus, &letter, 1, g.generator[std::size_t(k)].data()));
     // The circle through m_k orthogonal to the unit circle has its centre on
     // the ray through m_k, at |c| = (|m| + 1/|m|) / 2.
+    g.mx[std::size_t(k)] = mx;
+    g.my[std::size_t(k)] = my;
     const double m2 = mx * mx + my * my, scale = (1 + m2) / (2 * m2);
     g.cx[std::size_t(k)] = mx * scale;
     g.cy[std::size_t(k)] = my * scale;
@@ -229,14 +236,17 @@ bool may_meet_polygon(const Geometry &g, const double x[3], const double y[3]) {
 
 class Picture {
  public:
-  Picture(const Snapshot &s, const Geometry &g, double size) : s_(s), g_(g), size_(size) {}
+  // band: the caption band's height at size 800 (kTitleHeight for a
+  // caption of two lines).
+  Picture(const Snapshot &s, const Geometry &g, double size, double band)
+      : s_(s), g_(g), size_(size), band_(band) {}
 
   // Disk coordinates to SVG coordinates (y points down in SVG), rounded to
   // 0.01 px when printed (about 3e-5 in the disk at size 800): enough for
   // the eye and for zooming in, and it keeps the files small.
   double sx(double x) const { return size_ / 2 * (1 + kDiskScale * x); }
   double sy(double y) const { return title_height() + size_ / 2 * (1 - kDiskScale * y); }
-  double title_height() const { return kTitleHeight * size_ / kReferenceSize; }
+  double title_height() const { return band_ * size_ / kReferenceSize; }
 
   // Path data for the geodesic from p to q: an arc of the circle orthogonal
   // to the unit circle through both, or a segment when p, q and 0 are
@@ -314,8 +324,10 @@ class Picture {
   // beyond one side: all of the geodesic segment is), as in pieces(): the
   // edge is placed in its left face's canonical frame, within the circumdisks
   // of that copy and of the neighbour's copy beside it. Segments shorter
-  // than a pixel (cocircular faces give length 0) are left out.
-  void voronoi_pieces(Text &f) const {
+  // than a pixel (cocircular faces give length 0) are left out, and with
+  // `then` (nullptr: the identity) each copy is mapped by it, and left out
+  // when it is then below a pixel.
+  void voronoi_pieces(Text &f, const double *then) const {
     const double pixel = 2.0 / (size_ * kDiskScale);
     std::size_t drawn = 0;
     for (std::size_t e = 0; 4 * e < s_.voronoi.size(); ++e) {
@@ -328,6 +340,10 @@ class Picture {
         bool away = false;
         for (int k = 0; k < g_.n && !away; ++k) away = beyond(g_, k, x[0], y[0]) && beyond(g_, k, x[1], y[1]);
         if (away) continue;
+        if (then) {
+          for (int c = 0; c < 2; ++c) moebius_apply(then, x[c], y[c], &x[c], &y[c]);
+          if (std::hypot(x[1] - x[0], y[1] - y[0]) <= pixel) continue;
+        }
         f.put("M%.2f %.2f", sx(x[0]), sy(y[0]));
         geodesic_to(f, x[0], y[0], x[1], y[1]);
         if (++drawn % 8 == 0) f.putc('\n');
@@ -345,14 +361,36 @@ class Picture {
 
   // A dot at each place a vertex appears in the closed F_g: its
   // representative, and for a vertex on F_g's boundary its other copies
-  // there (on the paired side; at every corner for a vertex at v_0).
-  void vertex_dots(Text &f, bool dummies, const char *colour, double radius) const {
-    const double eps = 1e-9;
+  // there (on the paired side; at every corner for a vertex at v_0). With
+  // `tiles`, those places mapped by each of the matrices instead (the dots
+  // of the tiles across F_g's sides).
+  void vertex_dots(Text &f, bool dummies, const char *colour, double radius,
+                   const std::vector<Matrix> *tiles = nullptr) const {
     f.put("<g fill=\"%s\">\n", colour);
-    for (std::size_t v = 0; v < s_.vertex_count; ++v) {
-      if (bool(s_.dummy[v]) != dummies) continue;
+    if (!tiles) {
+      for (std::size_t v = 0; v < s_.vertex_count; ++v)
+        if (bool(s_.dummy[v]) == dummies) vertex_places(f, v, radius, nullptr);
+    } else {
+      for (const Matrix &m : *tiles)
+        for (std::size_t v = 0; v < s_.vertex_count; ++v)
+          if (bool(s_.dummy[v]) == dummies) vertex_places(f, v, radius, m.data());
+    }
+    f.puts("</g>\n");
+  }
+
+ private:
+  // A dot of vertex_dots at (x, y), mapped by then (nullptr: the identity).
+  void dot(Text &f, double x, double y, double radius, const double *then) const {
+    if (then) moebius_apply(then, x, y, &x, &y);
+    f.put("<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%g\"/>\n", sx(x), sy(y), radius);
+  }
+
+  // The dots of vertex v at its places in the closed F_g, mapped by then.
+  void vertex_places(Text &f, std::size_t v, double radius, const double *then) const {
+    const double eps = 1e-9;
+    {
       const double px = s_.x[v], py = s_.y[v];
-      f.put("<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%g\"/>\n", sx(px), sy(py), radius);
+      dot(f, px, py, radius, then);
       bool on_boundary = false;
       for (int k = 0; k < g_.n && !on_boundary; ++k) on_boundary = std::fabs(side_power(g_, k, px, py)) < eps;
       for (std::size_t h = 1; on_boundary && h < g_.neighbour.size(); ++h) {
@@ -360,16 +398,14 @@ class Picture {
         moebius_apply(g_.neighbour[h].data(), px, py, &x, &y);
         bool inside = true;
         for (int k = 0; k < g_.n && inside; ++k) inside = side_power(g_, k, x, y) > -eps;
-        if (inside) f.put("<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%g\"/>\n", sx(x), sy(y), radius);
+        if (inside) dot(f, x, y, radius, then);
       }
     }
-    f.puts("</g>\n");
   }
 
- private:
   const Snapshot &s_;
   const Geometry &g_;
-  double size_;
+  double size_, band_;
 };
 
 // The length of the valid UTF-8 sequence at p (1 to 4 bytes), or 0.
@@ -428,11 +464,108 @@ std::string default_title(const Snapshot &s) {
   return text;
 }
 
+// ---- The caption's lines ----
+//
+// SVG cannot wrap text, so the caption is wrapped here, at spaces, from an
+// estimate of its width: the advance widths of DejaVu Sans (the widest of
+// the usual sans-serif fonts, matplotlib's default), in thousandths of an
+// em and rounded up, plus 5%; 1 em for a character beyond ASCII. The numbers
+// are bindings/python/hdt/picture.py's too.
+constexpr unsigned short kAsciiWidth[95] = {
+    // ' ' to '/'
+    318, 401, 460, 838, 637, 950, 780, 276, 391, 391, 500, 838, 318, 361, 318, 337,
+    // '0' to '?'
+    637, 637, 637, 637, 637, 637, 637, 637, 637, 637, 337, 337, 838, 838, 838, 531,
+    // '@' to 'O'
+    1000, 685, 687, 699, 771, 632, 576, 775, 752, 295, 295, 656, 558, 863, 749, 788,
+    // 'P' to '_'
+    604, 788, 695, 635, 611, 732, 685, 989, 686, 611, 686, 391, 337, 391, 838, 500,
+    // '`' to 'o'
+    500, 613, 635, 550, 635, 616, 353, 635, 634, 278, 278, 580, 278, 975, 634, 613,
+    // 'p' to '~'
+    635, 635, 412, 521, 393, 634, 592, 819, 592, 592, 525, 637, 337, 637, 838};
+
+// The estimated width of n bytes of caption text, in thousandths of an em,
+// character by character as put_escaped writes it ('?' for what it replaces).
+double text_width(const char *text, std::size_t n) {
+  const unsigned char *p = reinterpret_cast<const unsigned char *>(text), *end = p + n;
+  double width = 0;
+  while (p < end) {
+    const int k = utf8_sequence(p);
+    if (k == 0 || (*p < 0x20 && *p != '\t')) width += kAsciiWidth['?' - ' '], ++p;
+    else if (*p == '\t') width += kAsciiWidth[0], ++p;
+    else if (k == 1) width += kAsciiWidth[*p - ' '], ++p;
+    else width += 1000, p += k;
+  }
+  return width;
+}
+
+// The text cut into lines at spaces, each (but a single word) estimated to
+// fit `width` pixels at font size `font`: at the line's last space after a
+// ',' or ';' if it has one, else at its last space. Each piece but the last
+// keeps its space at its end, so that the pieces joined are the text.
+std::vector<std::string> wrap(const std::string &text, double width, double font) {
+  const double limit = width * 1000 / (font * 1.05);
+  std::vector<std::string> lines;
+  // The current line, where it can end, and its last space after ',' or ';'.
+  std::size_t start = 0, end = 0, clause = 0;
+  while (end < text.size()) {
+    std::size_t next = text.find(' ', end + 1);
+    if (next == std::string::npos) next = text.size();
+    if (end > start && text_width(text.data() + start, next - start) > limit) {
+      const std::size_t cut = clause > start ? clause : end;
+      lines.push_back(text.substr(start, cut + 1 - start)); // with its space
+      start = cut + 1;
+      end = start;
+      continue;
+    }
+    end = next;
+    if (end < text.size() && (text[end - 1] == ',' || text[end - 1] == ';')) clause = end;
+  }
+  if (start < text.size() || lines.empty()) lines.push_back(text.substr(start));
+  return lines;
+}
+
+// One part of the caption as a <text> element: the lines after the first in
+// tspans, step apart.
+void put_lines(Text &f, const std::vector<std::string> &lines, double x, double y, double font, double step,
+               const char *fill) {
+  f.put("<text x=\"%.10g\" y=\"%.10g\" font-family=\"sans-serif\" font-size=\"%.10g\"%s%s%s>", x, y, font,
+        fill ? " fill=\"" : "", fill ? fill : "", fill ? "\"" : "");
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (i > 0) f.put("<tspan x=\"%.10g\" dy=\"%.10g\">", x, step);
+    put_escaped(f, lines[i].c_str());
+    if (i > 0) f.puts("</tspan>");
+  }
+  f.puts("</text>\n");
+}
+
 void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char *title, unsigned flags) {
   const bool neighbours = flags & HDT_SVG_NEIGHBOURS, hide_dummies = flags & HDT_SVG_HIDE_DUMMIES;
-  const bool voronoi = flags & HDT_SVG_VORONOI;
-  const Picture p(s, g, size);
+  const bool voronoi = flags & HDT_SVG_VORONOI, side_labels = flags & HDT_SVG_SIDE_LABELS;
   const double scale = size / kReferenceSize; // the caption's layout
+
+  // The caption: the title, and what the picture shows, each wrapped to the
+  // width less the margins.
+  std::string info;
+  {
+    Text t;
+    t.put("%zu vertices", s.vertex_count);
+    if (s.dummy_count)
+      t.put(" (%zu dumm%s, %s)", s.dummy_count, s.dummy_count == 1 ? "y" : "ies", hide_dummies ? "not marked" : "red");
+    t.put(", %zu faces, drawn in F_%d and cut at its sides", s.face_count, s.genus);
+    if (neighbours) t.put(", and in the %d tiles across them", g.n);
+    if (voronoi) t.puts("; Voronoi diagram green");
+    if (side_labels) t.puts("; side s_k labelled g_k: g_k maps s_(k+2g), labelled g_k^-1, onto it");
+    t.puts("; Poincare disk");
+    info = t.str();
+  }
+  const double text_width_px = size - 24 * scale;
+  const std::vector<std::string> title_lines = wrap(title ? title : default_title(s), text_width_px, 16 * scale);
+  const std::vector<std::string> info_lines = wrap(info, text_width_px, 13 * scale);
+  const double more_title = kTitleStep * double(title_lines.size() - 1);
+  const double band = kTitleHeight + more_title + kInfoStep * double(info_lines.size() - 1);
+  const Picture p(s, g, size, band);
   // Sizes are printed with 10 digits (%g's 6 would round a width such as
   // 1234.567); at size 800 they are the integers the tool always wrote.
   const double height = size + p.title_height(), r = size / 2 * kDiskScale;
@@ -469,9 +602,20 @@ void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char
       p.pieces(f, g.generator[std::size_t(k)].data(), true);
       f.puts("\"/>\n");
     }
+    // Their Voronoi diagrams, lighter green, cut at each tile.
+    for (int k = 0; voronoi && k < g.n; ++k) {
+      f.put("<path clip-path=\"url(#hdt-tile-%d)\" stroke=\"#8cc498\" stroke-width=\"%g\" stroke-linecap=\"round\" "
+            "d=\"",
+            k, line);
+      p.voronoi_pieces(f, g.generator[std::size_t(k)].data());
+      f.puts("\"/>\n");
+    }
     f.puts("<path stroke=\"#e0b070\" stroke-width=\"1\" d=\"");
     for (int k = 0; k < g.n; ++k) p.polygon_copy(f, g.generator[std::size_t(k)].data());
     f.puts("\"/>\n</g>\n");
+    // And their vertices, lighter and smaller.
+    p.vertex_dots(f, false, "#7585b0", dot * 0.85, &g.generator);
+    if (!hide_dummies) p.vertex_dots(f, true, "#e89a9b", (dot + 1.0) * 0.85, &g.generator);
   }
 
   // The triangulation in F_g, cut at its sides.
@@ -486,7 +630,7 @@ void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char
     f.put("<path clip-path=\"url(#hdt-polygon)\" fill=\"none\" stroke=\"#2a8a3a\" stroke-width=\"%g\" "
           "stroke-linecap=\"round\" d=\"",
           line * 1.5);
-    p.voronoi_pieces(f);
+    p.voronoi_pieces(f, nullptr);
     f.puts("\"/>\n");
   }
 
@@ -499,18 +643,32 @@ void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char
   p.vertex_dots(f, false, "#1f2a44", dot);
   if (!hide_dummies) p.vertex_dots(f, true, "#d62728", dot + 1.0);
 
-  f.put("<text x=\"%.10g\" y=\"%.10g\" font-family=\"sans-serif\" font-size=\"%.10g\">", 12 * scale, 22 * scale, 16 * scale);
-  if (title) put_escaped(f, title);
-  else put_escaped(f, default_title(s).c_str());
-  f.puts("</text>\n");
-  f.put("<text x=\"%.10g\" y=\"%.10g\" font-family=\"sans-serif\" font-size=\"%.10g\" fill=\"#555\">%zu vertices",
-        12 * scale, 42 * scale, 13 * scale, s.vertex_count);
-  if (s.dummy_count)
-    f.put(" (%zu dumm%s, %s)", s.dummy_count, s.dummy_count == 1 ? "y" : "ies", hide_dummies ? "not marked" : "red");
-  f.put(", %zu faces, drawn in F_%d and cut at its sides", s.face_count, s.genus);
-  if (neighbours) f.put(", and in the %d tiles across them", g.n);
-  if (voronoi) f.puts("; Voronoi diagram green");
-  f.puts("; Poincare disk</text>\n");
+  // The sides' labels, outside F_g beside their midpoints, over a white halo.
+  if (side_labels) {
+    const double font = 12 * scale;
+    f.put("<g font-family=\"sans-serif\" font-size=\"%.10g\" text-anchor=\"middle\" fill=\"#c05a00\" "
+          "stroke=\"white\" stroke-width=\"%.10g\" stroke-linejoin=\"round\" paint-order=\"stroke\">\n",
+          font, 3 * scale);
+    for (int k = 0; k < g.n; ++k) {
+      char label[32];
+      if (k < g.n / 2) std::snprintf(label, sizeof label, "g_%d", k);
+      else std::snprintf(label, sizeof label, "g_%d^-1", k - g.n / 2);
+      // The outward unit vector at m_k in SVG's coordinates (y down), and the
+      // distance from m_k to the label's centre: a gap and half the label's
+      // extent in that direction.
+      const double mx = g.mx[std::size_t(k)], my = g.my[std::size_t(k)], m = std::hypot(mx, my);
+      const double ux = mx / m, uy = -my / m;
+      const double w = text_width(label, std::strlen(label)) * font * 1.05 / 1000;
+      const double gap = 4 * scale + std::fabs(ux) * w / 2 + std::fabs(uy) * font / 2;
+      f.put("<text x=\"%.2f\" y=\"%.2f\">", p.sx(mx) + ux * gap, p.sy(my) + uy * gap + 0.35 * font);
+      put_escaped(f, label);
+      f.puts("</text>\n");
+    }
+    f.puts("</g>\n");
+  }
+
+  put_lines(f, title_lines, 12 * scale, 22 * scale, 16 * scale, kTitleStep * scale, nullptr);
+  put_lines(f, info_lines, 12 * scale, (42 + more_title) * scale, 13 * scale, kInfoStep * scale, "#555");
   f.puts("</svg>\n");
 }
 
@@ -530,7 +688,8 @@ HDT_API hdt_status hdt_svg(const hdt_triangulation *t, double size, const char *
     }
     if (flags & ~kKnownFlags)
       throw ApiError(HDT_EINVAL, "unknown flags " + std::to_string(flags & ~kKnownFlags) +
-                                     " (HDT_SVG_NEIGHBOURS = 1, HDT_SVG_HIDE_DUMMIES = 2 and HDT_SVG_VORONOI = 4 are known)");
+                                     " (HDT_SVG_NEIGHBOURS = 1, HDT_SVG_HIDE_DUMMIES = 2, HDT_SVG_VORONOI = 4 and "
+                                     "HDT_SVG_SIDE_LABELS = 8 are known)");
     if (capacity > 0 && !text)
       throw ApiError(HDT_EINVAL, "text is NULL but capacity is " + std::to_string(capacity));
 

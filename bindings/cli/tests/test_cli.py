@@ -325,7 +325,7 @@ def test_bad_input(tmp):
 
 def test_usage_errors(tmp):
     for args in (["--bogus"], ["--genus", "1"], ["--genus", "x"], ["-g"], ["--format", "xml"],
-                 ["--random", "5", "file.txt"], ["--seed", "3"], ["--neighbours"], ["--random", "-1"],
+                 ["--random", "5", "file.txt"], ["--seed", "3"], ["--neighbours"], ["--side-labels"], ["--random", "-1"],
                  ["a.txt", "b.txt"], ["--random", "3", "-o", "same.svg", "--svg", "same.svg"],
                  ["--keep-dummies=yes"]):
         code, stdout, err = run(*args, cwd=tmp)

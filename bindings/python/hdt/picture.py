@@ -13,7 +13,9 @@ filled lightly and outlined; user vertices are dark dots, dummy vertices
 larger red ones, with a dot at each place a vertex has in the closed F_g (a
 vertex on a side also on the paired side, one at the corner v_0 at every
 corner). Optionally (neighbours=True) the 4g tiles g_k(F_g) across the sides
-are drawn too, lighter, each with the triangulation cut at it.
+are drawn too, lighter, each with the triangulation (faces, vertices, and
+with voronoi=True the Voronoi edges) cut at it. The caption is wrapped at
+spaces (:func:`wrap`) to fit the picture's width.
 
 :func:`plot` (matplotlib) computes the same pieces as the library, with the
 same double arithmetic, and cuts them with a matplotlib clip path. Points
@@ -43,15 +45,75 @@ RealMatrix = Tuple[float, float, float, float]
 DISK_FILL, DISK_EDGE = "#f4f6fb", "#333333"
 POLYGON_FILL, POLYGON_EDGE = "#ffd98a", "#c05a00"
 FACE_EDGE, NEIGHBOUR_FACE_EDGE, NEIGHBOUR_POLYGON_EDGE = "#1f2a44", "#8a9ac0", "#e0b070"
-VORONOI_EDGE = "#2a8a3a"
+VORONOI_EDGE, NEIGHBOUR_VORONOI_EDGE = "#2a8a3a", "#8cc498"
 USER_VERTEX, DUMMY_VERTEX = "#1f2a44", "#d62728"
+NEIGHBOUR_USER_VERTEX, NEIGHBOUR_DUMMY_VERTEX = "#7585b0", "#e89a9b"
+
+# The caption's width estimate (lib/picture/svg.cpp's numbers): the advance
+# widths of DejaVu Sans for ' ' to '~', in thousandths of an em, rounded up;
+# 1 em for a character beyond ASCII; 5% more for the font's differences.
+_ASCII_WIDTH = (
+    318, 401, 460, 838, 637, 950, 780, 276, 391, 391, 500, 838, 318, 361, 318, 337,
+    637, 637, 637, 637, 637, 637, 637, 637, 637, 637, 337, 337, 838, 838, 838, 531,
+    1000, 685, 687, 699, 771, 632, 576, 775, 752, 295, 295, 656, 558, 863, 749, 788,
+    604, 788, 695, 635, 611, 732, 685, 989, 686, 611, 686, 391, 337, 391, 838, 500,
+    500, 613, 635, 550, 635, 616, 353, 635, 634, 278, 278, 580, 278, 975, 634, 613,
+    635, 635, 412, 521, 393, 634, 592, 819, 592, 592, 525, 637, 337, 637, 838)
+
+
+def text_width(text: str) -> int:
+    """The estimated width of the text, in thousandths of an em (generous:
+    the SVG picture and plot() wrap their captions with it)."""
+    width = 0
+    for c in text:
+        if c == "\t":
+            width += _ASCII_WIDTH[0]
+        elif " " <= c <= "~":
+            width += _ASCII_WIDTH[ord(c) - 32]
+        elif ord(c) < 32:
+            width += _ASCII_WIDTH[ord("?") - 32]
+        else:
+            width += 1000
+    return width
+
+
+def wrap(text: str, width: float, font_size: float) -> List[str]:
+    """The text cut at spaces into lines estimated to fit `width` at font
+    size `font_size` (in the same unit), as the library wraps its caption:
+    at the line's last space after a ',' or ';' if it has one; each line but
+    the last keeps its space at its end."""
+    limit = width * 1000 / (font_size * 1.05)
+    lines: List[str] = []
+    start = end = clause = 0
+    while end < len(text):
+        following = text.find(" ", end + 1)
+        if following < 0:
+            following = len(text)
+        if end > start and text_width(text[start:following]) > limit:
+            cut = clause if clause > start else end
+            lines.append(text[start:cut + 1])
+            start = end = cut + 1
+            continue
+        end = following
+        if end < len(text) and text[end - 1] in ",;":
+            clause = end
+    if start < len(text) or not lines:
+        lines.append(text[start:])
+    return lines
 
 
 def svg(triangulation: Triangulation, *, size: float = 800, dummies: bool = True, neighbours: bool = False,
-        title: Optional[str] = None, voronoi: bool = False) -> str:
+        title: Optional[str] = None, voronoi: bool = False, side_labels: bool = False) -> str:
     """The picture of the triangulation as the text of an SVG document, drawn
     by libhdt: the same as ``triangulation.to_svg(...)`` (see there)."""
-    return triangulation.to_svg(size=size, dummies=dummies, neighbours=neighbours, title=title, voronoi=voronoi)
+    return triangulation.to_svg(size=size, dummies=dummies, neighbours=neighbours, title=title, voronoi=voronoi,
+                                side_labels=side_labels)
+
+
+def side_label(genus: int, k: int) -> str:
+    """The label of side s_k of F_g in the pictures: "g_k" for k < 2g, the
+    generator that maps s_{k+2g} onto s_k, and "g_{k-2g}^-1" beyond."""
+    return f"g_{k}" if k < 2 * genus else f"g_{k - 2 * genus}^-1"
 
 
 # ---- Geometry ----
@@ -199,11 +261,13 @@ class Scene:
                 result.append(corners)
         return result
 
-    def voronoi_pieces(self, pixel: float = 2.0 / (800 * 0.97)) -> List[Tuple[Point, ...]]:
+    def voronoi_pieces(self, pixel: float = 2.0 / (800 * 0.97),
+                       then: Optional[RealMatrix] = None) -> List[Tuple[Point, ...]]:
         """The copies h(e), h in N, of the Voronoi edges that may meet F_g
         (both ends beyond one side of F_g are left out), in the library's
         order; edges shorter than `pixel` are left out, as the library does
-        at size 800."""
+        at size 800. With the real matrix `then`, each copy is mapped by it,
+        and left out when it is then shorter than `pixel`."""
         result: List[Tuple[Tuple[float, float], ...]] = []
         for p, q in self.voronoi:
             if math.hypot(q[0] - p[0], q[1] - p[1]) <= pixel:
@@ -211,8 +275,13 @@ class Scene:
             for h, matrix in enumerate(self.neighbours):
                 ends = cast(Tuple[Tuple[float, float], ...],
                             (p, q) if h == 0 else (_apply(matrix, *p), _apply(matrix, *q)))
-                if self._may_meet_polygon(ends):
-                    result.append(ends)
+                if not self._may_meet_polygon(ends):
+                    continue
+                if then is not None:
+                    ends = (_apply(then, *ends[0]), _apply(then, *ends[1]))
+                    if math.hypot(ends[1][0] - ends[0][0], ends[1][1] - ends[0][1]) <= pixel:
+                        continue
+                result.append(ends)
         return result
 
     def places(self, point: Point) -> List[Point]:
@@ -231,7 +300,7 @@ class Scene:
         """The corners of F_g, or of its image under the real matrix."""
         return list(self.polygon) if matrix is None else [_apply(matrix, x, y) for x, y in self.polygon]
 
-    def caption(self, neighbours: bool, dummies: bool = True, voronoi: bool = False) -> str:
+    def caption(self, neighbours: bool, dummies: bool = True, voronoi: bool = False, side_labels: bool = False) -> str:
         """The library's default caption, both lines."""
         user = self.vertex_count - self.dummy_count
         if user == 0:
@@ -247,6 +316,8 @@ class Scene:
             line += f", and in the {4 * self.genus} tiles across them"
         if voronoi:
             line += "; Voronoi diagram green"
+        if side_labels:
+            line += "; side s_k labelled g_k: g_k maps s_(k+2g), labelled g_k^-1, onto it"
         return f"{title}\n{line}"
 
 
@@ -262,7 +333,7 @@ def _outline(corners: Iterable[Point]) -> List[Point]:
 
 
 def plot(triangulation: Triangulation, ax: Optional[matplotlib.axes.Axes] = None, *, dummies: bool = True,
-         neighbours: bool = False, voronoi: bool = False) -> matplotlib.axes.Axes:
+         neighbours: bool = False, voronoi: bool = False, side_labels: bool = False) -> matplotlib.axes.Axes:
     """Draws the triangulation on the matplotlib Axes ax (a new figure's when
     None) and returns the Axes: the picture of :func:`svg`, the same pieces
     cut at F_g's sides by a clip path, with geodesic edges drawn as fine
@@ -297,6 +368,20 @@ def plot(triangulation: Triangulation, ax: Optional[matplotlib.axes.Axes] = None
                                    linewidths=line * 2 / 3, zorder=2)
             ax.add_collection(faces)
             faces.set_clip_path(tile)
+            if voronoi:
+                cells = LineCollection([[p] + [(z.real, z.imag) for z in geodesic_points(complex(*p), complex(*q))]
+                                        for p, q in scene.voronoi_pieces(pixel, generator)],
+                                       colors=NEIGHBOUR_VORONOI_EDGE, linewidths=line, zorder=2)
+                ax.add_collection(cells)
+                cells.set_clip_path(tile)
+            kinds = [(scene.user_points, NEIGHBOUR_USER_VERTEX, dot)]
+            if dummies:
+                kinds.append((scene.dummy_points, NEIGHBOUR_DUMMY_VERTEX, dot + 1))
+            for points, colour, size in kinds:
+                places = [_apply(generator, *place) for point in points for place in scene.places(point)]
+                if places:
+                    ax.scatter([x for x, _ in places], [y for _, y in places], s=(1.3 * size * 0.85) ** 2, c=colour,
+                               zorder=2)
     clip = Polygon(boundary, closed=True, facecolor="none", edgecolor="none")
     ax.add_patch(clip)
     faces = LineCollection([_outline(p) for p in scene.pieces()], colors=FACE_EDGE, linewidths=line, zorder=3,
@@ -319,9 +404,19 @@ def plot(triangulation: Triangulation, ax: Optional[matplotlib.axes.Axes] = None
         places = [place for point in scene.dummy_points for place in scene.places(point)]
         ax.scatter([x for x, _ in places], [y for _, y in places], s=(1.3 * (dot + 1)) ** 2, c=DUMMY_VERTEX, zorder=6,
                    label="dummy vertices")
+    if side_labels:
+        for k in range(len(scene.polygon)):
+            mx, my = polygon_side_midpoint(scene.genus, k)
+            m = math.hypot(mx, my)
+            ax.text(mx + 0.05 * mx / m, my + 0.05 * my / m, side_label(scene.genus, k), fontsize=8, ha="center",
+                    va="center", color=POLYGON_EDGE, zorder=7)
     ax.set_xlim(-1.03, 1.03)
     ax.set_ylim(-1.03, 1.03)
     ax.set_aspect("equal")
     ax.set_axis_off()
-    ax.set_title(scene.caption(neighbours, dummies, voronoi), fontsize=9)
+    # The caption wrapped to the Axes' width (matplotlib does not wrap it).
+    width = ax.figure.get_figwidth() * 72 * ax.get_position().width  # points
+    first, second = scene.caption(neighbours, dummies, voronoi, side_labels).split("\n")
+    lines = [part.rstrip() for text in (first, second) for part in wrap(text, width, 9)]
+    ax.set_title("\n".join(lines), fontsize=9)
     return ax

@@ -76,7 +76,7 @@ if TYPE_CHECKING:  # for the annotations only: matplotlib and meshio are optiona
 _T = TypeVar("_T", bound="Triangulation")
 
 # hdt_svg's flags (include/hdt.h).
-_SVG_NEIGHBOURS, _SVG_HIDE_DUMMIES, _SVG_VORONOI = 1, 2, 4
+_SVG_NEIGHBOURS, _SVG_HIDE_DUMMIES, _SVG_VORONOI, _SVG_SIDE_LABELS = 1, 2, 4, 8
 
 #: :meth:`Triangulation.vertices`: the live vertices by increasing id.
 class Vertices(NamedTuple):
@@ -867,7 +867,8 @@ class Triangulation:
     # ---- pictures ----
 
     def to_svg(self, path: Union[str, os.PathLike, None] = None, *, size: float = 800, dummies: bool = True,
-               neighbours: bool = False, title: Optional[str] = None, voronoi: bool = False) -> str:
+               neighbours: bool = False, title: Optional[str] = None, voronoi: bool = False,
+               side_labels: bool = False) -> str:
         """The picture of the triangulation as SVG text, drawn by libhdt
         (hdt_svg, as hdt-triangulate's --svg), also written to path (a file
         name) when given; needs no third-party package.
@@ -876,16 +877,19 @@ class Triangulation:
         copy of a face that meets F_g, with geodesic edges, cut at F_g's
         sides; F_g outlined, user vertices dark dots and (when dummies is
         true) dummy vertices red and larger. neighbours also draws the 4g
-        tiles across F_g's sides, lighter. size is the width in pixels
+        tiles across F_g's sides, lighter, with their faces, vertices and
+        Voronoi edges. The caption wraps at spaces to fit the width. size is the width in pixels
         (0 < size <= 100000, else :class:`hdt.InvalidArgument`); title
         replaces the caption's first line (plain text; the library escapes
         it), by default "Delaunay triangulation of N points on M_g". voronoi
         also draws the Voronoi diagram (green), cut at the sides like the
-        faces. See :mod:`hdt.picture`.
+        faces. side_labels labels the sides of F_g: s_k with g_k (which maps
+        s_{k+2g} onto it) and s_{k+2g} with g_k^-1, k < 2g (libhdt 0.6.0 on).
+        See :mod:`hdt.picture`.
         """
         size = float(size)
         flags = ((0 if dummies else _SVG_HIDE_DUMMIES) | (_SVG_NEIGHBOURS if neighbours else 0)
-                 | (_SVG_VORONOI if voronoi else 0))
+                 | (_SVG_VORONOI if voronoi else 0) | (_SVG_SIDE_LABELS if side_labels else 0))
         c_title = None
         if title is not None:
             # A NUL would end the C string: shown as '?', as the library shows
@@ -913,11 +917,12 @@ class Triangulation:
         return data.decode("utf-8")
 
     def plot(self, ax: Optional[matplotlib.axes.Axes] = None, *, dummies: bool = True, neighbours: bool = False,
-             voronoi: bool = False) -> matplotlib.axes.Axes:
+             voronoi: bool = False, side_labels: bool = False) -> matplotlib.axes.Axes:
         """Draws the triangulation on a matplotlib Axes (a new figure's when
         ax is None) and returns the Axes; the picture of :meth:`to_svg`.
         Raises ImportError when matplotlib is not installed."""
-        return picture.plot(self, ax, dummies=dummies, neighbours=neighbours, voronoi=voronoi)
+        return picture.plot(self, ax, dummies=dummies, neighbours=neighbours, voronoi=voronoi,
+                            side_labels=side_labels)
 
     def to_meshio(self, layout: str = "representatives") -> meshio.Mesh:
         """The triangulation as a ``meshio.Mesh`` (needs meshio and NumPy;

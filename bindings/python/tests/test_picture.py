@@ -131,8 +131,38 @@ def test_the_scene_has_the_pieces_of_the_library(small):
     root = ElementTree.fromstring(text.encode("utf-8"))
     dummy_group = [g for g in root.iter(f"{SVG}g") if g.get("fill") == picture.DUMMY_VERTEX][0]
     assert len(dummy_group) == sum(len(scene.places(p)) for p in scene.dummy_points)
-    captions = [t.text for t in root.iter(f"{SVG}text")]
+    # Wrapped into tspans, whose pieces joined are the caption.
+    captions = ["".join(t.itertext()) for t in root.iter(f"{SVG}text")]
     assert "\n".join(captions) == scene.caption(True) + "; Poincare disk"
+    # The tiles' vertices, lighter: each place of each vertex, in each tile.
+    light = [g for g in root.iter(f"{SVG}g") if g.get("fill") == picture.NEIGHBOUR_DUMMY_VERTEX][0]
+    assert len(light) == len(scene.generators) * sum(len(scene.places(p)) for p in scene.dummy_points)
+
+
+def test_the_caption_fits(small):
+    """The caption wraps where its estimated width would pass the picture's
+    (issue 37: "Voronoi diagran" was cut off), and the band grows with it."""
+    text = small.to_svg(neighbours=True, voronoi=True)
+    root = ElementTree.fromstring(text.encode("utf-8"))
+    texts = list(root.iter(f"{SVG}text"))
+    assert len(texts) == 2 and len(list(texts[0])) == 0 and len(list(texts[1])) == 1
+    assert root.get("height") == "873"
+    for piece in [texts[1].text] + [t.text for t in texts[1]]:
+        assert picture.text_width(piece.rstrip()) * 13 * 1.05 / 1000 <= 800 - 24
+    assert "".join(texts[1].itertext()).endswith("; Voronoi diagram green; Poincare disk")
+    assert picture.wrap("ab, cd ef", 4.0 * 13 * 1.05, 13) == ["ab, ", "cd ef"]
+    assert picture.wrap("", 10, 13) == [""]
+
+
+def test_tiles_show_voronoi_edges(small):
+    scene = picture.Scene(small, voronoi=True)
+    text = small.to_svg(neighbours=True, voronoi=True)
+    root = ElementTree.fromstring(text.encode("utf-8"))
+    pixel = 2.0 / (800 * 0.97)
+    paths = [p for p in root.iter(f"{SVG}path") if p.get("stroke") == picture.NEIGHBOUR_VORONOI_EDGE]
+    assert [p.get("clip-path") for p in paths] == [f"url(#hdt-tile-{k})" for k in range(len(scene.generators))]
+    for path, generator in zip(paths, scene.generators):
+        assert path.get("d").count("M") == len(scene.voronoi_pieces(pixel, generator))
 
 
 def test_svg_is_to_svg(small):

@@ -57,7 +57,7 @@ def test_to_svg_is_well_formed_and_complete(small, tmp_path):
     assert clip.get("id") == "hdt-polygon"
     faces = [p for p in root.iter(f"{SVG}path") if p.get("clip-path") == "url(#hdt-polygon)"]
     assert len(faces) == 1 and faces[0].get("d").count("M") >= small.face_count
-    captions = [t.text for t in root.iter(f"{SVG}text")]
+    captions = ["".join(t.itertext()) for t in root.iter(f"{SVG}text")]
     assert captions[0] == "Delaunay triangulation of 60 points on M_2"
     assert captions[1].startswith(f"{small.vertex_count} vertices ({small.dummy_count} dummies, red), "
                                   f"{small.face_count} faces")
@@ -81,10 +81,16 @@ def test_options(small):
     assert len(dots(plain, picture.USER_VERTEX)) == 60
     assert "not marked" in list(plain.iter(f"{SVG}text"))[1].text
     with_neighbours = parse(small.to_svg(neighbours=True, size=400))
-    assert (with_neighbours.get("width"), with_neighbours.get("height")) == ("400", "428")
+    # The caption's second part wraps into one line more (17 at size 800).
+    assert (with_neighbours.get("width"), with_neighbours.get("height")) == ("400", "436.5")
     tiles = [c.get("id") for c in with_neighbours.iter(f"{SVG}clipPath")]
     assert tiles == ["hdt-polygon"] + [f"hdt-tile-{k}" for k in range(8)]
     assert parse(small.to_svg(size=123.25)).get("width") == "123.25"
+    labelled = small.to_svg(side_labels=True)
+    labels = [t.text for t in parse(labelled).iter(f"{SVG}text")][:-2]  # before the caption
+    assert labels == [picture.side_label(2, k) for k in range(8)]
+    assert labels[:5] == ["g_0", "g_1", "g_2", "g_3", "g_0^-1"]
+    assert "g_k maps s_(k+2g)" in "".join(list(parse(labelled).iter(f"{SVG}text"))[-1].itertext())
 
 
 @pytest.mark.parametrize("size", [0, -1, float("nan"), float("inf"), 1e6])
