@@ -80,25 +80,60 @@ def colour(value, levels=8):
     return f"#ff{fade:02x}{fade:02x}" if step > 0 else f"#{fade:02x}{fade:02x}ff"
 
 
-def write_svg(triangulation, values, path, size=600):
+def write_svg(triangulation, values, path, size=600, lam=None):
     """The faces' canonical copies in the Poincare disk as straight
-    triangles, each filled with the colour of the mean of u at its corners."""
+    triangles, each filled with the colour of the mean of u at its corners;
+    F_g outlined (its sides as geodesic arcs), a title above, and a colour
+    bar of the levels on the right."""
     faces = triangulation.faces()
     corners = triangulation.face_points()
+    top, bar = 44, 90  # the title band above the disk, the colour bar's band on the right
     half = size / 2
     scale = half - 4
-    lines = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{size}" height="{size}" '
-             f'viewBox="0 0 {size} {size}">',
+    cx, cy = half, top + half
+
+    def place(x, y):
+        return cx + scale * x, cy - scale * y
+
+    width, height = size + bar, size + top
+    title = "An eigenfunction of lambda_1 on the Bolza surface M_2"
+    detail = (f"lambda = {lam:.6f}, " if lam is not None else "") + f"{triangulation.vertex_count:,} vertices; F_2 outlined"
+    lines = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+             f'viewBox="0 0 {width} {height}" font-family="DejaVu Sans, sans-serif">',
              '<rect width="100%" height="100%" fill="white"/>',
-             f'<circle cx="{half:g}" cy="{half:g}" r="{scale:g}" fill="none" stroke="#333" stroke-width="1"/>']
+             f'<text x="{cx:g}" y="20" text-anchor="middle" font-size="15">{title}</text>',
+             f'<text x="{cx:g}" y="37" text-anchor="middle" font-size="11" fill="#444">{detail}</text>',
+             f'<circle cx="{cx:g}" cy="{cy:g}" r="{scale:g}" fill="none" stroke="#333" stroke-width="1"/>']
     # One path per colour: a few kilobytes per thousand faces.
     paths = {}
     for face, points in zip(faces.vertices, corners):
         fill = colour(sum(values[int(v)] for v in face) / 3)
-        (a, b, c) = ((half + scale * float(x), half - scale * float(y)) for x, y in points)
+        (a, b, c) = (place(float(x), float(y)) for x, y in points)
         paths.setdefault(fill, []).append(f"M{a[0]:.1f} {a[1]:.1f}L{b[0]:.1f} {b[1]:.1f}L{c[0]:.1f} {c[1]:.1f}Z")
     for fill in sorted(paths):
         lines.append(f'<path fill="{fill}" stroke="{fill}" stroke-width="0.4" d="{"".join(paths[fill])}"/>')
+    # F_g: each side the arc of the circle through its ends orthogonal to
+    # the unit circle (centre c with |c|^2 = 1 + r^2), drawn as an SVG arc.
+    n = 4 * triangulation.genus
+    vertex = [place(*hdt.polygon_vertex(triangulation.genus, k)) for k in range(n)]
+    outline = [f"M{vertex[-1][0]:.2f} {vertex[-1][1]:.2f}"]
+    for k in range(n):  # side s_k joins v_{k-1} and v_k
+        mx, my = hdt.polygon_side_midpoint(triangulation.genus, k)
+        m = math.hypot(mx, my)
+        radius = (1 / m - m) / 2 * scale  # its circle's centre lies at (m + 1/m) / 2 beyond the midpoint
+        # counterclockwise in the disk, clockwise on the page (y down): the arc bends towards O
+        outline.append(f"A{radius:.2f} {radius:.2f} 0 0 1 {vertex[k][0]:.2f} {vertex[k][1]:.2f}")
+    lines.append(f'<path fill="none" stroke="#b5651d" stroke-width="1.6" d="{"".join(outline)}Z"/>')
+    # The colour bar: the 2 levels + 1 colours from +1 (top) to -1.
+    levels = 8
+    x0, y0, h = size + 24, top + 40, (size - 80) / (2 * levels + 1)
+    for i in range(2 * levels + 1):
+        value = 1 - i / levels
+        lines.append(f'<rect x="{x0}" y="{y0 + i * h:.2f}" width="18" height="{h + 0.3:.2f}" fill="{colour(value)}"/>')
+    lines.append(f'<rect x="{x0}" y="{y0}" width="18" height="{(2 * levels + 1) * h:.2f}" fill="none" stroke="#333"/>')
+    for label, y in (("+1", y0 + h / 2), ("0", y0 + (levels + 0.5) * h), ("-1", y0 + (2 * levels + 0.5) * h)):
+        lines.append(f'<text x="{x0 + 24}" y="{y + 4:.2f}" font-size="11">{label}</text>')
+    lines.append(f'<text x="{x0 + 9}" y="{y0 - 12}" text-anchor="middle" font-size="11">u / max |u|</text>')
     lines.append("</svg>")
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
@@ -174,7 +209,7 @@ def main(argv=None):
     if args.svg:
         t = mesh(SVG_RADIUS)
         lam, u = first_eigenfunction(t, chart=args.chart, lumped=lumped)
-        write_svg(t, u, args.svg)
+        write_svg(t, u, args.svg, lam=lam)
         print(f"V = {t.vertex_count}, lambda = {lam:.6f}: {args.svg}")
         return 0
 
