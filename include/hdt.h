@@ -610,7 +610,8 @@ HDT_API hdt_status hdt_voronoi_cells(const hdt_triangulation *t, size_t *offsets
    below sys(M_g)/4 anyway); max_ratio: >= 1, +INFINITY for no bound on
    the shape (the proof needs >= 1). *added (may be NULL) receives the
    number of points inserted, *unmet (may be NULL) the number of faces that
-   still break a bound, both written on every return. *unmet is 0 when the
+   still break a bound, both written on every return with a usable handle
+   (nothing is written for t NULL or busy). *unmet is 0 when the
    call completed; > 0 when the cap stopped it, the triangulation then
    valid and Delaunay with the points added so far (HDT_OK: check *unmet),
    or when a bad face is below what a double Steiner point can refine:

@@ -287,6 +287,13 @@ START_TEST(bad_arguments_change_nothing) {
   /* the counts are written on every return: nothing added, nothing looked at */
   expect(added == 0 && unmet == 0, "after a refused call: added %zu, unmet %zu", added, unmet);
   expect(hdt_refine(NULL, 0.2, 2, SIZE_MAX, NULL, NULL) == HDT_EINVAL, "NULL handle");
+  added = unmet = 7; /* a NULL handle writes nothing, as everywhere */
+  expect(hdt_refine(NULL, 0.2, 2, SIZE_MAX, &added, &unmet) == HDT_EINVAL && added == 7 && unmet == 7,
+         "NULL handle: outputs written");
+  expect(hdt_epsilon_net(NULL, 0.2, SIZE_MAX, &added, &unmet) == HDT_EINVAL && added == 7 && unmet == 7,
+         "NULL handle: outputs written");
+  expect(hdt_epsilon_net(t, NAN, SIZE_MAX, &added, &unmet) == HDT_EINVAL && added == 0 && unmet == 0,
+         "a refused epsilon: the counts not written");
   expect(hdt_epsilon_net(NULL, 0.2, SIZE_MAX, NULL, NULL) == HDT_EINVAL, "NULL handle");
   /* no bound at all, or max_points 0: nothing to do */
   OK(hdt_refine(t, INFINITY, INFINITY, SIZE_MAX, &added, &unmet));

@@ -52,14 +52,17 @@ void check_room(const char *what, const hdt::triangulation::Triangulation &tri, 
   throw ApiError(HDT_ENOMEM, message);
 }
 
-// *added and *unmet are written on every return: 0 and 0 when the
-// arguments are refused (nothing was looked at).
-hdt_status run(const char *function, hdt_triangulation *t, double max_radius, double max_ratio,
+// *added and *unmet are written on every return past the handle's check:
+// 0 and 0 when the arguments are refused (nothing was looked at). A NULL or
+// busy handle writes nothing, as everywhere in the API.
+// net: hdt_epsilon_net's call (max_radius is its epsilon, which must be finite).
+hdt_status run(const char *function, bool net, hdt_triangulation *t, double max_radius, double max_ratio,
                size_t max_points, size_t *added, size_t *unmet) {
+  const hdt::capi::LongCall call(t, function);
   if (added) *added = 0;
   if (unmet) *unmet = 0;
-  const hdt::capi::LongCall call(t, function);
   const hdt::triangulation::Triangulation &tri = call.tri();
+  if (net && !(max_radius > 0 && !std::isinf(max_radius))) throw ApiError(HDT_EINVAL, "epsilon must be finite and > 0");
   if (!(max_radius > 0)) throw ApiError(HDT_EINVAL, "the radius bound must be > 0 (and not NaN)");
   if (!(max_ratio >= 1)) throw ApiError(HDT_EINVAL, "max_ratio must be >= 1 (and not NaN)");
   check_room(std::isinf(max_ratio) ? "an epsilon-net" : "a refinement", tri, max_radius, max_points);
@@ -80,15 +83,13 @@ extern "C" {
 
 HDT_API hdt_status hdt_refine(hdt_triangulation *t, double max_radius, double max_ratio, size_t max_points,
                               size_t *added, size_t *unmet) HDT_NOEXCEPT {
-  return guarded("hdt_refine", [&] { return run("hdt_refine", t, max_radius, max_ratio, max_points, added, unmet); });
+  return guarded("hdt_refine", [&] { return run("hdt_refine", false, t, max_radius, max_ratio, max_points, added, unmet); });
 }
 
 HDT_API hdt_status hdt_epsilon_net(hdt_triangulation *t, double epsilon, size_t max_points, size_t *added,
                                    size_t *unmet) HDT_NOEXCEPT {
-  return guarded("hdt_epsilon_net", [&] {
-    if (!(epsilon > 0) || std::isinf(epsilon)) throw ApiError(HDT_EINVAL, "epsilon must be finite and > 0");
-    return run("hdt_epsilon_net", t, epsilon, INFINITY, max_points, added, unmet);
-  });
+  return guarded("hdt_epsilon_net",
+                 [&] { return run("hdt_epsilon_net", true, t, epsilon, INFINITY, max_points, added, unmet); });
 }
 
 HDT_API hdt_status hdt_quality(const hdt_triangulation *t, double *min_angle, double *max_ratio, double *max_radius,
