@@ -1392,9 +1392,11 @@ static void op_svg(reader *r, state *s) {
   static const double sizes[] = {200, 64, HDT_SVG_SIZE_MAX, 0, -1, NAN, INFINITY, HDT_SVG_SIZE_MAX * 2};
   const uint8_t b = u8(r);
   const double size = sizes[b % 8];
-  const unsigned flags = (b & 0x80) ? 8u : (unsigned)((b >> 3) & 7) & ~(unsigned)HDT_SVG_NEIGHBOURS;
+  // Bit 7: side labels (HDT_SVG_SIDE_LABELS, 8), or 16, a bit no version defines.
+  const unsigned flags = (b & 0x80) ? ((b & 1) ? 16u : (unsigned)HDT_SVG_SIDE_LABELS)
+                                    : (unsigned)((b >> 3) & 7) & ~(unsigned)HDT_SVG_NEIGHBOURS;
   const char *title = (b & 0x40) ? "<&\x01\xff>" : NULL;
-  const int valid = size > 0 && size <= HDT_SVG_SIZE_MAX && flags < 8;
+  const int valid = size > 0 && size <= HDT_SVG_SIZE_MAX && flags < 16;
   size_t len = SIZE_MAX;
   hdt_status st_ = hdt_svg(t, size, title, flags, NULL, 0, &len);
   trace("hdt_svg(t%d, %g, flags %u, capacity 0) = %d, length %zu", slot, size, flags, (int)st_, len);
