@@ -229,6 +229,48 @@ START_TEST(large_sets_without_dummies) {
 }
 END_TEST
 
+/* Points within 2e-15 of the unit circle: their homes are long words, and
+   the library evaluates them from their images in F_g (home images); the
+   brute force reads the representatives hdt_vertex_point rounds from its
+   own multiprecision image. Half inserted at once, half one by one. */
+START_TEST(points_near_the_circle_match_brute_force) {
+  for (int g = 2; g <= 3; ++g) {
+    bf_nset ns = nset_make(g);
+    size_t exact = 0, runs = 0;
+    for (int seed = 1; seed <= 3; ++seed) {
+      const size_t n = 60;
+      uint64_t rng = 0x51ed2701u * (uint64_t)(100 * g + seed);
+      double xy[2 * 60];
+      for (size_t i = 0; i < n; ++i) {
+        const double r = 1 - 1e-15 * (1 + (double)(rng_next(&rng) >> 11) * 0x1p-53);
+        const double a = 2 * acos(-1.0) * (double)(rng_next(&rng) >> 11) * 0x1p-53;
+        xy[2 * i] = r * cos(a), xy[2 * i + 1] = r * sin(a);
+      }
+      for (int remove = 0; remove <= 1; ++remove) {
+        hdt_triangulation *t = NULL;
+        ck_assert_int_eq(hdt_create(&t, g), HDT_OK);
+        hdt_status s = hdt_insert_many(t, xy, n / 2, NULL);
+        expect(s == HDT_OK, "insert_many: %s (%s)", hdt_status_string(s), hdt_last_error_message());
+        for (size_t i = n / 2; i < n; ++i) {
+          s = hdt_insert(t, xy[2 * i], xy[2 * i + 1], NULL);
+          expect(s == HDT_OK, "insert (%a, %a): %s (%s)", xy[2 * i], xy[2 * i + 1], hdt_status_string(s),
+                 hdt_last_error_message());
+        }
+        ck_assert_int_eq(hdt_validate(t), HDT_OK);
+        if (remove) ck_assert_int_eq(hdt_remove_dummies(t, NULL), HDT_OK);
+        char what[96];
+        snprintf(what, sizeof what, "g=%d seed %d, points near the circle%s", g, seed, remove ? ", dummies removed" : "");
+        exact += (size_t)cross_check(&ns, t, what);
+        ++runs;
+        hdt_destroy(t);
+      }
+    }
+    expect(2 * exact >= runs, "g=%d: only %zu of %zu runs were exact equalities", g, exact, runs);
+    bf_nset_free(&ns);
+  }
+}
+END_TEST
+
 int main(void) {
   const TTest *const tests[] = {
       half_systole_balls_lie_in_d_n,
@@ -236,6 +278,7 @@ int main(void) {
       genus2_matches_brute_force,
       genus3_matches_brute_force,
       large_sets_without_dummies,
+      points_near_the_circle_match_brute_force,
   };
   return run_tests("brute_force", tests, sizeof tests / sizeof tests[0]);
 }

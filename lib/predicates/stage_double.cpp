@@ -7,6 +7,7 @@
 namespace hdt::predicates {
 
 FilteredPoint DoubleStage::compute_point(const TranslatedPoint &p) {
+  if (has_home_image(p)) return image_point(p);
   if (p.site < 0 && p.translation == 0) return filtered_point(p.x, p.y);
   if (p.site < 0) return filtered_point(p.x, p.y, surface_.table().moebius(p.translation));
   const group::Lorentz<double> &L = surface_.table().lorentz(p.translation);
@@ -20,6 +21,25 @@ FilteredPoint DoubleStage::compute_point(const TranslatedPoint &p) {
     worst = std::max(worst, std::abs(L.m[i][0] * n[0]) + std::abs(L.m[i][1] * n[1]) + std::abs(L.m[i][2] * n[2]));
   }
   r.error = 10 * kUnit * worst * 1.01;
+  return r;
+}
+
+FilteredPoint DoubleStage::image_point(const TranslatedPoint &p) {
+  // p's point is s(h(z)), s = t h^-1, from h(z)'s vector (each entry within
+  // vector_error): L_s moves those errors by at most its row sums; its own
+  // error and the three roundings stay within the sites' 10u (above).
+  group::TranslationTable &table = surface_.table();
+  const surface::HomeImage &image = surface_.home_image(home_image_of(p));
+  const group::Lorentz<double> &L = table.lorentz(table.compose(p.translation, image.home_inverse));
+  const std::array<double, 3> &n = image.vector;
+  FilteredPoint r;
+  double worst = 0, row = 0;
+  for (int i = 0; i < 3; ++i) {
+    r.n[i] = L.m[i][0] * n[0] + L.m[i][1] * n[1] + L.m[i][2] * n[2];
+    worst = std::max(worst, std::abs(L.m[i][0] * n[0]) + std::abs(L.m[i][1] * n[1]) + std::abs(L.m[i][2] * n[2]));
+    row = std::max(row, std::abs(L.m[i][0]) + std::abs(L.m[i][1]) + std::abs(L.m[i][2]));
+  }
+  r.error = (10 * kUnit * worst + row * image.vector_error) * 1.01;
   return r;
 }
 

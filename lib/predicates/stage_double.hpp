@@ -97,6 +97,8 @@ class DoubleStage {
 
  private:
   FilteredPoint compute_point(const TranslatedPoint &p);
+  // A point with a home image (home_image.hpp).
+  FilteredPoint image_point(const TranslatedPoint &p);
 
   surface::Surface &surface_;
   double quarter_systole_cosh2_;  // within 4u of exact (cos rounded, one sum)

@@ -26,6 +26,7 @@
 #include "group/moebius.hpp"
 #include "group/presentation.hpp"
 #include "group/translation_table.hpp"
+#include "surface/home_image.hpp"
 #include "surface/site.hpp"
 
 namespace hdt::surface {
@@ -99,6 +100,17 @@ class Surface {
   const Site &site(int32_t id) const { return sites_.at(std::size_t(id)); }
   std::size_t site_count() const { return sites_.size(); }
 
+  // ---- Home images (home_image.hpp) ----
+  // Registers one; returns its index (0, 1, ... in order). Nothing caches
+  // by index alone, so the last one may be dropped again (an insertion that
+  // made no vertex) and its index reused.
+  int32_t add_home_image(const HomeImage &image) {
+    images_.push_back(image);
+    return int32_t(images_.size() - 1);
+  }
+  void drop_last_home_image() { images_.pop_back(); }
+  const HomeImage &home_image(int32_t k) const { return images_[std::size_t(k)]; }
+
  private:
   group::Presentation presentation_;
   const exact::Field &field_;
@@ -111,6 +123,7 @@ class Surface {
   exact::Cyclotomic sin2_;
   exact::FieldElement quarter_systole_cosh2_;
   std::vector<Site> sites_;
+  std::vector<HomeImage> images_;
 };
 
 }  // namespace hdt::surface
