@@ -41,8 +41,18 @@ TranslationId TranslationTable::add_canonical(const Word &canonical) {
   if (const TranslationId id = find_canonical(canonical); id >= 0) return id;
   if (size() >= std::size_t(INT32_MAX)) throw std::length_error("translation table is full");
   const auto id = static_cast<TranslationId>(size());
+  // One pass in double over the letters (far_ is a vector<bool>: room for
+  // it first, so that a failure adds nothing).
+  const bool is_far = norm_log2_lower_bound(presentation_, canonical.data(), canonical.size()) > kFarLog2Norm;
+  far_.reserve(extra_words_.size() + 1);
   extra_words_.push_back(canonical);
-  ids_.emplace(canonical, id);
+  try {
+    ids_.emplace(canonical, id);
+  } catch (...) {
+    extra_words_.pop_back();
+    throw;
+  }
+  far_.push_back(is_far);
   return id;
 }
 
@@ -95,6 +105,18 @@ TranslationId TranslationTable::intern(const Word &w) {
 
 TranslationId TranslationTable::compose_cached(TranslationId a, TranslationId b) {
   if (const TranslationId known = products_.find(a, b); known >= 0) return known;
+  // Factors of long words (the homes of points near the circle, and their
+  // corners): their double matrices would cost a multiprecision product
+  // each, and a centre from them is too coarse to name the product anyway.
+  // The words name it.
+  if (far(a) || far(b)) {
+    Word w = word(a);
+    const Word &wb = word(b);
+    w.insert(w.end(), wb.begin(), wb.end());
+    const TranslationId id = intern(w);
+    products_.add(a, b, id);
+    return id;
+  }
   double p1, p2, error;
   product_centre(a, b, &p1, &p2, &error);
   TranslationId id = centres_.find(p1, p2, error);

@@ -106,6 +106,15 @@ class TranslationTable {
   };
   TranslationId add_canonical(const Word &canonical);
   TranslationId compose_cached(TranslationId a, TranslationId b);
+  // Elements that move O far (log2 of their matrix norm above
+  // kFarLog2Norm: the homes of points near the unit circle, and their
+  // corners): a centre from their double matrices is too coarse to name a
+  // product, and those matrices would cost a multiprecision product each,
+  // so compose_cached names their products by the words alone.
+  static constexpr double kFarLog2Norm = 24;
+  bool far(TranslationId id) const {
+    return std::size_t(id) >= neighbour_count_ && far_[std::size_t(id) - neighbour_count_];
+  }
   TranslationId inverse_interned(TranslationId a);
   const Moebius<double> &compute_matrices(TranslationId id);
   const Lorentz<double> &compute_lorentz(TranslationId id);
@@ -116,6 +125,7 @@ class TranslationTable {
   Presentation presentation_;
   std::size_t neighbour_count_ = 0;
   std::vector<Word> extra_words_;  // ids from |N| on
+  std::vector<bool> far_;          // by id from |N| on: far() (above)
   mutable std::unordered_map<TranslationId, Word> neighbour_words_;  // the words of N asked for
   PagedVector<Hot> moebius_;
   PagedVector<Low> low_;

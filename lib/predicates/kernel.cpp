@@ -18,6 +18,24 @@ TranslatedPoint Kernel::site_point(int32_t site, TranslationId translation) cons
   return {d.x, d.y, translation, site};
 }
 
+bool Kernel::add_home_image(double x, double y, TranslationId home) {
+  if (!surface::far_from_domain(x, y, home) || surface_.home_image(x, y)) return false;
+  const std::optional<surface::HomeImage> image =
+      surface::make_home_image(surface_.presentation(), surface_.table(), x, y, home);
+  if (!image) return false;
+  surface_.add_home_image(*image);
+  // Points cached before were evaluated without it (the representative
+  // walk's last steps): as certified, but far less sharp.
+  double_.forget(x, y);
+  double_double_.forget(x, y);
+  return true;
+}
+
+void Kernel::forget_home_image(double x, double y) {
+  // Points cached with it stay true: the image is a function of (x, y).
+  surface_.remove_home_image(x, y);
+}
+
 // Built with -Dcheck_predicates=true (HDT_CHECK_PREDICATES), every decision
 // of a stage before the exact one is compared with the exact evaluation: a
 // wrong sign then throws (HDT_EINTERNAL at the C API) instead of corrupting

@@ -172,6 +172,13 @@ class Kernel {
   bool same_point_exact(const TranslatedPoint &p, const TranslatedPoint &q);
   int compare_distance_exact(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b);
 
+  // Registers the home image of the stored point (x, y) with home `home`
+  // when it lies far from F_g (home_image.hpp) and has none yet; true when
+  // one was added (remove it with forget_home_image). The floating stages
+  // read it from then on.
+  bool add_home_image(double x, double y, TranslationId home);
+  void forget_home_image(double x, double y);
+
   // The surface's site `site` under `translation`.
   TranslatedPoint site_point(int32_t site, TranslationId translation) const;
 

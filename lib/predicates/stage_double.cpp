@@ -7,9 +7,11 @@
 namespace hdt::predicates {
 
 FilteredPoint DoubleStage::compute_point(const TranslatedPoint &p) {
-  if (has_home_image(p)) return image_point(p);
   if (p.site < 0 && p.translation == 0) return filtered_point(p.x, p.y);
-  if (p.site < 0) return filtered_point(p.x, p.y, surface_.table().moebius(p.translation));
+  if (p.site < 0) {
+    if (const surface::HomeImage *image = surface_.home_image(p.x, p.y)) return image_point(p, *image);
+    return filtered_point(p.x, p.y, surface_.table().moebius(p.translation));
+  }
   const group::Lorentz<double> &L = surface_.table().lorentz(p.translation);
   // A site's hyperboloid vector is stored rounded (4u per entry): apply L
   // (u per entry) with three more roundings.
@@ -24,12 +26,11 @@ FilteredPoint DoubleStage::compute_point(const TranslatedPoint &p) {
   return r;
 }
 
-FilteredPoint DoubleStage::image_point(const TranslatedPoint &p) {
+FilteredPoint DoubleStage::image_point(const TranslatedPoint &p, const surface::HomeImage &image) {
   // p's point is s(h(z)), s = t h^-1, from h(z)'s vector (each entry within
   // vector_error): L_s moves those errors by at most its row sums; its own
   // error and the three roundings stay within the sites' 10u (above).
   group::TranslationTable &table = surface_.table();
-  const surface::HomeImage &image = surface_.home_image(home_image_of(p));
   const group::Lorentz<double> &L = table.lorentz(table.compose(p.translation, image.home_inverse));
   const std::array<double, 3> &n = image.vector;
   FilteredPoint r;

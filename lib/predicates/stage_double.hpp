@@ -40,6 +40,8 @@ class DoubleStage {
   FilteredPoint point(const TranslatedPoint &p) {
     return cache_.get(p, [this](const TranslatedPoint &q) { return compute_point(q); });
   }
+  // The stored point (x, y) got a home image: its cached points go.
+  void forget(double x, double y) { cache_.forget(x, y); }
 
   static Sign orientation(const FilteredPoint &a, const FilteredPoint &b, const FilteredPoint &c) {
     // det[N_p; N_q; N_r] = det[N_p; N_q - N_p; N_r - N_p].
@@ -97,8 +99,8 @@ class DoubleStage {
 
  private:
   FilteredPoint compute_point(const TranslatedPoint &p);
-  // A point with a home image (home_image.hpp).
-  FilteredPoint image_point(const TranslatedPoint &p);
+  // A stored point with a home image (home_image.hpp) under its translation.
+  FilteredPoint image_point(const TranslatedPoint &p, const surface::HomeImage &image);
 
   surface::Surface &surface_;
   double quarter_systole_cosh2_;  // within 4u of exact (cos rounded, one sum)

@@ -68,15 +68,6 @@ bool DoubleDoubleStage::point(const TranslatedPoint &p, FastPoint *out) {
 
 DoubleDoubleStage::Entry DoubleDoubleStage::compute_point(const TranslatedPoint &p) {
   Entry e{};
-  if (has_home_image(p)) {
-    // As a site's: h(z) within 2^-128, rounded (2^-106), under s = t h^-1.
-    group::TranslationTable &table = surface_.table();
-    const surface::HomeImage &image = surface_.home_image(home_image_of(p));
-    const FastReal zx = round_mp(image.approximation.re), zy = round_mp(image.approximation.im);
-    e.ok = refined_point(zx, zy, 0x1p-128 + 0x1p-106, &matrix(table.compose(p.translation, image.home_inverse)),
-                         kUnit, &e.point);
-    return e;
-  }
   if (p.site >= 0) {
     // The MPFR coordinates (within 2^-128 of the exact ones) rounded
     // (2^-106 |.| < 2^-106 more, |x|, |y| < 1).
@@ -87,6 +78,14 @@ DoubleDoubleStage::Entry DoubleDoubleStage::compute_point(const TranslatedPoint 
   }
   if (p.translation == 0) {
     e.ok = refined_point<FastReal>(FastReal(p.x), FastReal(p.y), 0, nullptr, kUnit, &e.point);
+    return e;
+  }
+  if (const surface::HomeImage *image = surface_.home_image(p.x, p.y)) {
+    // As a site's: h(z) within 2^-128, rounded (2^-106), under s = t h^-1.
+    group::TranslationTable &table = surface_.table();
+    const FastReal zx = round_mp(image->approximation.re), zy = round_mp(image->approximation.im);
+    e.ok = refined_point(zx, zy, 0x1p-128 + 0x1p-106, &matrix(table.compose(p.translation, image->home_inverse)),
+                         kUnit, &e.point);
     return e;
   }
   // The table's Moebius matrix split into two doubles per part: no

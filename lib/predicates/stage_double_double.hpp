@@ -36,6 +36,8 @@ class DoubleDoubleStage : public RefinedPredicates<DoubleDoubleStage, FastReal> 
 
   // p's hyperboloid vector (cached); false when the stage does not apply.
   bool point(const TranslatedPoint &p, FastPoint *out);
+  // The stored point (x, y) got a home image: its cached points go.
+  void forget(double x, double y) { cache_.forget(x, y); }
 
   // Each entry within 2^-106 |L_ij| + 2^-121 L_00 <= U L_00, by translation id, lazily:
   // for sites and the sides' generators (stored points use the table's split

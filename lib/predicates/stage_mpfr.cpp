@@ -18,20 +18,21 @@ const group::Lorentz<MidReal> &MpfrStage::matrix(TranslationId id) {
 }
 
 bool MpfrStage::point(const TranslatedPoint &p, MidPoint *out) {
-  if (has_home_image(p)) {
-    // As a site's: h(z) within 2^-128 under s = t h^-1.
-    group::TranslationTable &table = surface_.table();
-    const surface::HomeImage &image = surface_.home_image(home_image_of(p));
-    return refined_point(image.approximation.re, image.approximation.im, 0x1p-128,
-                         &matrix(table.compose(p.translation, image.home_inverse)), kUnit, out);
-  }
   if (p.site >= 0) {
     const surface::Site &site = surface_.site(p.site);
     if (!site.has_approximation) return false;
     return refined_point(site.approximation.re, site.approximation.im, 0x1p-128, &matrix(p.translation), kUnit,
                          out);
   }
-  const group::Lorentz<MidReal> *L = p.translation == 0 ? nullptr : &matrix(p.translation);
+  if (p.translation == 0)
+    return refined_point(MidReal(p.x), MidReal(p.y), 0, static_cast<const group::Lorentz<MidReal> *>(nullptr), kUnit, out);
+  if (const surface::HomeImage *image = surface_.home_image(p.x, p.y)) {
+    // As a site's: h(z) within 2^-128 under s = t h^-1.
+    group::TranslationTable &table = surface_.table();
+    return refined_point(image->approximation.re, image->approximation.im, 0x1p-128,
+                         &matrix(table.compose(p.translation, image->home_inverse)), kUnit, out);
+  }
+  const group::Lorentz<MidReal> *L = &matrix(p.translation);
   return refined_point(MidReal(p.x), MidReal(p.y), 0, L, kUnit, out);
 }
 

@@ -19,16 +19,8 @@ using group::TranslationId;
 struct TranslatedPoint {
   double x, y;  // the stored point, |x + iy| < 1: exact, or a site's rounding
   TranslationId translation;
-  // >= 0: the point is the surface's site `site`, (x, y) its rounding;
-  // -1: the stored point itself; <= -2: the stored point, whose image under
-  // its home is the surface's home image -2 - site (home_image.hpp), which
-  // the floating stages read instead.
-  int32_t site = -1;
+  int32_t site = -1;  // >= 0: the point is the surface's site `site`, (x, y) its rounding
 };
-
-inline int32_t home_image_code(int32_t image) { return -2 - image; }
-inline bool has_home_image(const TranslatedPoint &p) { return p.site <= -2; }
-inline int32_t home_image_of(const TranslatedPoint &p) { return -2 - p.site; }
 
 // The point is (x, y) itself, exactly: the disk filters apply.
 inline bool untranslated(const TranslatedPoint &p) { return p.translation == 0 && p.site < 0; }
@@ -72,6 +64,12 @@ class PointCache {
       c.key = p;
     }
     return c.point;
+  }
+  // Forgets every entry of the stored point (x, y), under any translation:
+  // how that point is evaluated has changed (it got a home image).
+  void forget(double x, double y) {
+    for (Slot &c : slots_)
+      if (c.key.x == x && c.key.y == y) c.key = Slot{}.key;
   }
 
  private:

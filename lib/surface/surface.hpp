@@ -16,7 +16,9 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "exact/cyclotomic.hpp"
@@ -100,16 +102,17 @@ class Surface {
   const Site &site(int32_t id) const { return sites_.at(std::size_t(id)); }
   std::size_t site_count() const { return sites_.size(); }
 
-  // ---- Home images (home_image.hpp) ----
-  // Registers one; returns its index (0, 1, ... in order). Nothing caches
-  // by index alone, so the last one may be dropped again (an insertion that
-  // made no vertex) and its index reused.
-  int32_t add_home_image(const HomeImage &image) {
-    images_.push_back(image);
-    return int32_t(images_.size() - 1);
+  // ---- Home images (home_image.hpp), by the stored point ----
+  // The image registered for the stored point (x, y), or null.
+  const HomeImage *home_image(double x, double y) const {
+    if (images_.empty()) return nullptr;
+    const auto it = images_.find(PointKey::of(x, y));
+    return it == images_.end() ? nullptr : &it->second;
   }
-  void drop_last_home_image() { images_.pop_back(); }
-  const HomeImage &home_image(int32_t k) const { return images_[std::size_t(k)]; }
+  bool has_home_images() const { return !images_.empty(); }
+  // Registers it unless the point has one; false if it had.
+  bool add_home_image(const HomeImage &image) { return images_.emplace(PointKey::of(image.x, image.y), image).second; }
+  void remove_home_image(double x, double y) { images_.erase(PointKey::of(x, y)); }
 
  private:
   group::Presentation presentation_;
@@ -123,7 +126,21 @@ class Surface {
   exact::Cyclotomic sin2_;
   exact::FieldElement quarter_systole_cosh2_;
   std::vector<Site> sites_;
-  std::vector<HomeImage> images_;
+  // The bits of a stored point's coordinates.
+  struct PointKey {
+    uint64_t x, y;
+    static PointKey of(double x, double y) {
+      PointKey k;
+      std::memcpy(&k.x, &x, sizeof x);
+      std::memcpy(&k.y, &y, sizeof y);
+      return k;
+    }
+    bool operator==(const PointKey &o) const { return x == o.x && y == o.y; }
+  };
+  struct PointKeyHash {
+    std::size_t operator()(const PointKey &k) const { return std::size_t(k.x * 0x9e3779b97f4a7c15ull ^ k.y); }
+  };
+  std::unordered_map<PointKey, HomeImage, PointKeyHash> images_;
 };
 
 }  // namespace hdt::surface

@@ -8,7 +8,6 @@
 #include <string>
 
 #include "predicates/representative.hpp"
-#include "surface/home_image.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
@@ -46,23 +45,12 @@ uint32_t Triangulation::vertex_at(const Walk &at) const {
 
 Triangulation::Inserted Triangulation::insert(double x, double y) {
   const predicates::Representative r = predicates::representative(*kernel_, x, y);
-  QueryCode q(*this, x, y, r.translation);
+  HomeImageScope image(*this, x, y, r.translation);
   const std::size_t before = vertices_.size();
-  jump_near(x, y, r.translation, true, q.code);
-  const Inserted result = insert_walked(x, y, r.translation, walk_from_hint({x, y, r.translation, q.code}), q.code);
-  q.kept = vertices_.size() > before;
+  jump_near(x, y, r.translation);
+  const Inserted result = insert_walked(x, y, r.translation, walk_from_hint({x, y, r.translation, -1}));
+  if (vertices_.size() > before) image.keep();
   return result;
-}
-
-int32_t Triangulation::query_code(double x, double y, TranslationId home) const {
-  if (!surface::far_from_domain(x, y, home)) return -1;
-  const std::optional<surface::HomeImage> image =
-      surface::make_home_image(surface_->presentation(), table(), x, y, home);
-  return image ? predicates::home_image_code(surface_->add_home_image(*image)) : -1;
-}
-
-void Triangulation::drop_query_code(int32_t code) const {
-  if (code <= -2) surface_->drop_last_home_image();
 }
 
 Triangulation::Inserted Triangulation::insert_in_circle(double x, double y, uint32_t face,
@@ -77,15 +65,14 @@ Triangulation::Inserted Triangulation::insert_in_circle(double x, double y, uint
   // before anything changes: refinement leaves that face.
   if (kernel_->in_circle(corner(F, 0), corner(F, 1), corner(F, 2), q) <= 0) return {kNone, false};
   const predicates::Representative r = predicates::representative(*kernel_, x, y);
-  QueryCode code(*this, x, y, r.translation);
-  const uint32_t v = insert_located(x, y, r.translation, false, {face, 0, 0}, code.code);
-  code.kept = true;
+  HomeImageScope image(*this, x, y, r.translation);
+  const uint32_t v = insert_located(x, y, r.translation, false, {face, 0, 0});
+  image.keep();
   created->assign(scratch_.new_ids.begin(), scratch_.new_ids.end());
   return {v, false};
 }
 
-Triangulation::Inserted Triangulation::insert_walked(double x, double y, TranslationId home, const Walk &at,
-                                                     int32_t code) {
+Triangulation::Inserted Triangulation::insert_walked(double x, double y, TranslationId home, const Walk &at) {
   const uint32_t existing = vertex_at(at);
   if (existing != kNone) {
     last_vertex_ = existing;
@@ -94,11 +81,10 @@ Triangulation::Inserted Triangulation::insert_walked(double x, double y, Transla
     --dummies_;
     return {existing, false};
   }
-  return {insert_located(x, y, home, false, at, code), false};
+  return {insert_located(x, y, home, false, at), false};
 }
 
-uint32_t Triangulation::insert_located(double x, double y, TranslationId home, bool dummy, const Walk &at,
-                                       int32_t code) {
+uint32_t Triangulation::insert_located(double x, double y, TranslationId home, bool dummy, const Walk &at) {
   group::TranslationTable &T = table();
   const auto id = uint32_t(vertices_.size());
   if (id == kNone) throw std::length_error("too many vertices");
@@ -135,7 +121,7 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, b
     const TranslationId sn = T.compose(sigma, F.nt[i]);
     const int back = twin(f, i);
     const Face &N = faces_[n];
-    const TranslatedPoint qn{x, y, T.compose(T.inverse(sn), at.query), code};
+    const TranslatedPoint qn{x, y, T.compose(T.inverse(sn), at.query), -1};
     if (kernel_->in_circle_perturbed({corner(N, 0), corner(N, 1), corner(N, 2), qn}, {N.v[0], N.v[1], N.v[2], id}) >
         0) {
       for (const uint32_t o : scratch_.old_faces)
@@ -156,7 +142,6 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, b
   // allocation failure anywhere leaves the triangulation as it was.
   grow_for_one(vertices_);
   grow_for_one(dummy_);
-  if (code != -1) vertex_images_.resize(std::size_t(id) + 1, -1);
   vertices_.push_back({x, y, home, kNone});
   dummy_.push_back(dummy);
   try {
@@ -166,7 +151,6 @@ uint32_t Triangulation::insert_located(double x, double y, TranslationId home, b
     dummy_.pop_back();
     throw;
   }
-  if (code != -1) vertex_images_[id] = code;
   ++live_vertices_;
   if (dummy) ++dummies_;
   last_vertex_ = id;
@@ -301,16 +285,16 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out, 
   for (const Item &item : order) {
     const double x = item.x, y = item.y;
     const TranslationId home = item.home;
-    QueryCode q(*this, x, y, home);
-    if (jump_each || item.round != round) round = item.round, jump_near(x, y, home, jump_each, q.code);
-    const Walk at = walk_from_hint({x, y, home, q.code});
+    HomeImageScope image(*this, x, y, home);
+    if (jump_each || item.round != round) round = item.round, jump_near(x, y, home, jump_each);
+    const Walk at = walk_from_hint({x, y, home, -1});
     uint32_t v = vertex_at(at);
     if (v != kNone) {
       last_vertex_ = v;
       if (dummy_[v]) dummy_[v] = false, --dummies_;
     } else {
-      v = insert_located(x, y, home, false, at, q.code);
-      q.kept = true;
+      v = insert_located(x, y, home, false, at);
+      image.keep();
     }
     if (out) out[item.index] = v;
     if (ticker.stop(++done)) return;

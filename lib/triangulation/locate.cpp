@@ -38,10 +38,9 @@ std::size_t grid_cell(const group::Complex<double> &q, uint32_t side, double hal
 
 }  // namespace
 
-group::Complex<double> Triangulation::at_home(double x, double y, TranslationId home, int32_t code) const {
+group::Complex<double> Triangulation::at_home(double x, double y, TranslationId home) const {
   if (home == 0) return {x, y};
-  // Far from F_g the double map would lose the point's digits.
-  if (code <= -2) return surface_->home_image(predicates::home_image_of({x, y, home, code})).rounded;
+  if (const surface::HomeImage *image = surface_->home_image(x, y)) return image->rounded;
   return table().moebius(home).apply({x, y});
 }
 
@@ -52,9 +51,9 @@ void Triangulation::build_grid() const {
   grid_built_ = vertices_.size();
   grid_.clear(), grid_side_ = 0;
   double half = 0;
-  for (uint32_t v = 0; v < vertices_.size(); ++v)
-    if (const Vertex &u = vertices_[v]; u.alive()) {
-      const group::Complex<double> z = at_home(u.x, u.y, u.home, code_of(v));
+  for (const Vertex &u : vertices_)
+    if (u.alive()) {
+      const group::Complex<double> z = at_home(u.x, u.y, u.home);
       if (std::isfinite(z.re) && std::isfinite(z.im)) half = std::max({half, std::abs(z.re), std::abs(z.im)});
     }
   const auto side = uint32_t(std::max(1.0, std::sqrt(double(live_vertices_) / 2)));
@@ -67,7 +66,7 @@ void Triangulation::build_grid() const {
   }
   for (uint32_t v = 0; v < vertices_.size(); ++v) {
     const Vertex &u = vertices_[v];
-    if (u.alive()) grid[grid_cell(at_home(u.x, u.y, u.home, code_of(v)), side, half)] = v;
+    if (u.alive()) grid[grid_cell(at_home(u.x, u.y, u.home), side, half)] = v;
   }
   grid_.swap(grid), grid_side_ = side, grid_half_ = half;
 }
@@ -77,7 +76,7 @@ uint32_t Triangulation::grid_vertex(const group::Complex<double> &q) const {
   return grid_side_ == 0 ? kNone : grid_[grid_cell(q, grid_side_, grid_half_)];
 }
 
-void Triangulation::jump_near(double x, double y, TranslationId home, bool grid, int32_t code) const {
+void Triangulation::jump_near(double x, double y, TranslationId home, bool grid) const {
   // Jump and walk (Devroye, Mucke, Zhu): of the last vertex and about n^(1/3)
   // random ones, the walk starts at the one nearest to the query, so that
   // queries in no particular order walk about n^(1/4) faces instead of
@@ -87,12 +86,12 @@ void Triangulation::jump_near(double x, double y, TranslationId home, bool grid,
   // exact predicates decide.
   const std::size_t n = vertices_.size();
   if (n < 64) return;
-  const group::Complex<double> q = at_home(x, y, home, code);
+  const group::Complex<double> q = at_home(x, y, home);
   const double wq = 1 - (q.re * q.re + q.im * q.im);
   // A monotone function of the hyperbolic distance: |z - q|^2 / (w_z w_q).
   auto farness = [&](uint32_t v) {
     const Vertex &u = vertices_[v];
-    const group::Complex<double> z = at_home(u.x, u.y, u.home, code_of(v));
+    const group::Complex<double> z = at_home(u.x, u.y, u.home);
     const double dx = z.re - q.re, dy = z.im - q.im;
     return (dx * dx + dy * dy) / ((1 - (z.re * z.re + z.im * z.im)) * wq);
   };
@@ -150,9 +149,9 @@ Triangulation::Walk Triangulation::walk(const TranslatedPoint &q, uint32_t start
 
 Triangulation::Located Triangulation::locate(double x, double y) const {
   const predicates::Representative r = predicates::representative(*kernel_, x, y);
-  const QueryCode q(*this, x, y, r.translation);
-  jump_near(x, y, r.translation, true, q.code);
-  const Walk w = walk_from_hint({x, y, r.translation, q.code});
+  const HomeImageScope image(*this, x, y, r.translation);
+  jump_near(x, y, r.translation);
+  const Walk w = walk_from_hint({x, y, r.translation, -1});
   return {w.face, table().inverse(w.query)};
 }
 
@@ -211,10 +210,10 @@ void Triangulation::corner_translations(std::vector<std::pair<std::size_t, Trans
 uint32_t Triangulation::nearest_vertex(double x, double y) const {
   group::TranslationTable &T = table();
   const predicates::Representative r = predicates::representative(*kernel_, x, y);
-  const QueryCode code(*this, x, y, r.translation);
-  jump_near(x, y, r.translation, true, code.code);
-  const Walk w = walk_from_hint({x, y, r.translation, code.code});
-  const TranslatedPoint q{x, y, w.query, code.code};  // the frame: w.face's canonical copy
+  const HomeImageScope image(*this, x, y, r.translation);
+  jump_near(x, y, r.translation);
+  const Walk w = walk_from_hint({x, y, r.translation, -1});
+  const TranslatedPoint q{x, y, w.query, -1};  // the frame: w.face's canonical copy
   // Start at the nearest corner, then move to a nearer Delaunay neighbour
   // while there is one: a vertex none of whose neighbours is nearer has q
   // in its Voronoi cell.

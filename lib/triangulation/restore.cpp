@@ -135,15 +135,9 @@ Triangulation Triangulation::rebuild(Snapshot &s) {
   t.last_vertex_ = s.last_vertex;
   t.rng_ = s.rng;
   // The home images of the vertices far from F_g, as their insertion made
-  // them (validate() and every later call read them).
-  for (uint32_t v = 0; v < t.vertices_.size(); ++v) {
-    const Vertex &u = t.vertices_[v];
-    if (!u.alive() || t.site_of(v) >= 0) continue;
-    if (const int32_t code = t.query_code(u.x, u.y, u.home); code != -1) {
-      t.vertex_images_.resize(t.vertices_.size(), -1);
-      t.vertex_images_[v] = code;
-    }
-  }
+  // them: validate() and every later call read them.
+  for (const Vertex &u : t.vertices_)
+    if (u.alive()) t.kernel_->add_home_image(u.x, u.y, u.home);
   return t;
 }
 

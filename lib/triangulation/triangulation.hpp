@@ -97,13 +97,9 @@ class Triangulation {
   bool is_dummy(uint32_t v) const { return dummy_[v]; }
   // The surface's site of vertex v, or -1: sites 0 .. 2g are vertices 1 .. 2g+1.
   int32_t site_of(uint32_t v) const { return v >= 1 && v <= uint32_t(2 * genus_ + 1) ? int32_t(v - 1) : -1; }
-  // What TranslatedPoint::site holds for vertex v: its site, its home image
-  // (home_image_code), or -1.
-  // (Sites are at home in F_g; only a vertex with a home can have an image.)
-  int32_t code_of(uint32_t v) const { return code_of(v, vertices_[v]); }
   TranslatedPoint point(uint32_t v, TranslationId t) const {
     const Vertex &u = vertices_[v];
-    return {u.x, u.y, t, code_of(v, u)};
+    return {u.x, u.y, t, site_of(v)};
   }
   TranslatedPoint corner(const Face &f, int i) const { return point(f.v[i], f.t[i]); }
   // The representative of v in F_g, rounded. A vertex away from F_g pays
@@ -196,33 +192,27 @@ class Triangulation {
   // nearest to (x, y), whose representative is home(x + iy), of itself and
   // the vertex the grid holds for that place (with grid; see grid_), or of
   // itself and a few random vertices.
-  // code: the point's TranslatedPoint::site (a home image's is read for
-  // its representative).
-  void jump_near(double x, double y, TranslationId home, bool grid = true, int32_t code = -1) const;
-  // The representative of the stored point (x, y) with home `home` and
-  // code `code`, in double.
-  group::Complex<double> at_home(double x, double y, TranslationId home, int32_t code) const;
-  // A new point's code: its home image, registered when the point lies far
-  // from F_g (home_image.hpp), else -1. A code that made no vertex is given
-  // back with drop_query_code.
-  int32_t code_of(uint32_t v, const Vertex &u) const {
-    if (u.home != 0) return v < vertex_images_.size() ? vertex_images_[v] : -1;
-    return site_of(v);
-  }
-  int32_t query_code(double x, double y, TranslationId home) const;
-  void drop_query_code(int32_t code) const;
-  // A query's code, given back as the query ends unless kept (its point
-  // became a vertex). Codes are given back last first.
-  struct QueryCode {
-    QueryCode(const Triangulation &t, double x, double y, TranslationId home)
-        : owner(t), code(t.query_code(x, y, home)) {}
-    QueryCode(const QueryCode &) = delete;
-    ~QueryCode() {
-      if (!kept) owner.drop_query_code(code);
+  void jump_near(double x, double y, TranslationId home, bool grid = true) const;
+  // The representative of the stored point (x, y) with home `home`, in
+  // double (from its home image when it has one: far from F_g the double
+  // map loses the point's digits).
+  group::Complex<double> at_home(double x, double y, TranslationId home) const;
+  // A query's home image (Kernel::add_home_image) for the query's length:
+  // kept when the point became a vertex, else given back.
+  class HomeImageScope {
+   public:
+    HomeImageScope(const Triangulation &t, double x, double y, TranslationId home)
+        : kernel_(*t.kernel_), x_(x), y_(y), added_(surface::far_from_domain(x, y, home) && kernel_.add_home_image(x, y, home)) {}
+    HomeImageScope(const HomeImageScope &) = delete;
+    ~HomeImageScope() {
+      if (added_ && !kept_) kernel_.forget_home_image(x_, y_);
     }
-    const Triangulation &owner;
-    const int32_t code;
-    bool kept = false;
+    void keep() { kept_ = true; }
+
+   private:
+    Kernel &kernel_;
+    double x_, y_;
+    bool added_, kept_ = false;
   };
   // The grid's vertex for the representative q (kNone if none), the grid
   // built first when the vertices have doubled since it was.
@@ -235,10 +225,9 @@ class Triangulation {
 
   // Bowyer-Watson insertion of the point (x, y) with home `home`, located in
   // `at`. Returns the new vertex id.
-  // code: the point's query_code, kept for the new vertex.
-  uint32_t insert_located(double x, double y, TranslationId home, bool dummy, const Walk &at, int32_t code = -1);
+  uint32_t insert_located(double x, double y, TranslationId home, bool dummy, const Walk &at);
   // insert()'s end, once the point is located: an existing vertex, or a new one.
-  Inserted insert_walked(double x, double y, TranslationId home, const Walk &at, int32_t code);
+  Inserted insert_walked(double x, double y, TranslationId home, const Walk &at);
   // The vertex of `at`'s face at the walked-to point, if it is one of its
   // corners (kNone otherwise).
   uint32_t vertex_at(const Walk &at) const;
@@ -252,9 +241,6 @@ class Triangulation {
   // change and ids are not reused, so entries stay true; it grows with the
   // ids lazily.
   mutable std::vector<group::Complex<double>> representatives_;
-  // The vertices' home image codes by id (-1: none), as long as the last
-  // vertex that has one: empty while no vertex lies far from F_g.
-  std::vector<int32_t> vertex_images_;
   std::vector<bool> dummy_;  // per vertex
   std::vector<Face> faces_;
   std::size_t live_vertices_ = 0, dummies_ = 0;
