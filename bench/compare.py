@@ -66,7 +66,7 @@ EXTRA_PROGRAMS = ["curves_bench", "predicates_bench"]
 # its output kept as printed, under the command that made it.
 CITED_RUNS = [
     ("batch_bench", ["--n", "100000", "--genus", "2", "--repeat", "3"],
-     "hdt.h at hdt_insert_many (calls of a few points) and hdt_locate; docs/README figures of batches"),
+     "hdt.h at hdt_insert_many (calls of a few points) and hdt_locate"),
     ("batch_bench", ["--n", "1000000", "--genus", "2", "--repeat", "1", "--calls", "1000"],
      "hdt.h at hdt_locate (queries at 10^6 vertices)"),
     ("dual_bench", ["--n", "1000000", "--genus", "2", "--calls", "4", "--load-rounds", "3"],

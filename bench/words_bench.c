@@ -19,8 +19,17 @@
 #include "bench_common.h"
 #include "hdt.h"
 
+static const char *status_name(hdt_status s) {
+  switch (s) {
+    case HDT_OK: return "HDT_OK";
+    case HDT_EDOMAIN: return "HDT_EDOMAIN";
+    case HDT_ENOTSUP: return "HDT_ENOTSUP";
+    default: return hdt_status_string(s);
+  }
+}
+
 static void row(const char *what, hdt_status s, double ms, long kib) {
-  printf("| %s | %s | %.3g | %s", what, hdt_status_string(s), ms, kib >= 0 ? "" : "- |\n");
+  printf("| %s | %s | %.3g | %s", what, status_name(s), ms, kib >= 0 ? "" : "- |\n");
   if (kib >= 0) printf("%.1f |\n", kib / 1024.0);
 }
 
