@@ -287,8 +287,9 @@ HDT_API hdt_status hdt_insert(hdt_triangulation *t, double x, double y, uint32_t
    points uniform on M_g the expected cost is O(log n) a point (randomized
    incremental construction: O(1) expected faces changed a point, short
    walks along the curve), and the order is computed in linear time. Points
-   along a curve, or given in many small calls, cost more per point, by a
-   bounded factor: the figures are in docs/benchmarks.md
+   along a curve, or given in many small calls, cost more per point (the
+   walks are longer and the order is sorted per call): the figures are in
+   docs/benchmarks.md
    (bench/curves_bench.c, bench/batch_bench.c). New vertices get their ids
    in that order, not in input order (the same call gives the same ids).
    vertices (may be NULL)
