@@ -61,6 +61,39 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PROGRAMS = {"libhdt": "triangulation_bench", "cgal-bolza": "cgal_bolza_bench", "cgal-euclid": "cgal_euclid_bench"}
 EXTRA_PROGRAMS = ["curves_bench", "predicates_bench"]
+# The figures include/hdt.h and the docs point to (its "docs/benchmarks.md"):
+# (the program, its arguments, where the figures are cited). Each runs once,
+# its output kept as printed, under the command that made it.
+CITED_RUNS = [
+    ("batch_bench", ["--n", "100000", "--genus", "2", "--repeat", "3"],
+     "hdt.h at hdt_insert_many (calls of a few points) and hdt_locate"),
+    ("batch_bench", ["--n", "1000000", "--genus", "2", "--repeat", "1", "--calls", "1000"],
+     "hdt.h at hdt_locate (queries at 10^6 vertices)"),
+    ("dual_bench", ["--n", "1000000", "--genus", "2", "--calls", "4", "--load-rounds", "3"],
+     "hdt.h at hdt_vertex_stars, hdt_voronoi_cells and hdt_load; docs/dual.md, docs/format.md"),
+    ("refine_bench", ["--genus", "2"], "hdt.h at hdt_refine and hdt_epsilon_net; docs/refinement.md"),
+    ("words_bench", ["--genus", "1024"],
+     "hdt.h at HDT_GENUS_MAX and HDT_WORD_MAX_LENGTH (the linear pass, the first call of a genus)"),
+]
+# Figures measured once, by a command this script does not rerun (too long
+# here, or a driver that is not a program of bench/): (figure, where it was
+# measured, where it is cited).
+RECORDED_FIGURES = [
+    ("first `hdt_create` of a genus: at most 0.6 to 0.7 s of CPU for every genus up to 128 (0.2 s at 64), "
+     "1.5 to 1.6 s and 146 MiB (10^5 points included) at 256; a cached one 0.9 ms at 128, 4 ms at 256",
+     "`/usr/bin/python3 bench/genus_table.py --build-dir build --genus 2-256 --n 10` (about an hour), "
+     "2 December 2026; docs/large_genus.md", "hdt.h at HDT_CREATE_GENUS_MAX"),
+    ("`hdt_point_representative` at genus 1024, points 10^-15 to 2 * 10^-15 from the unit circle: "
+     "mean 2.4 ms, slowest 0.23 s, longest word 1908 letters (300 points)",
+     "a driver calling `hdt_point_representative` at random angles, one process, the first call left out, "
+     "3 December 2026; docs/large_genus.md", "hdt.h at HDT_GENUS_MAX and hdt_point_representative"),
+    ("`hdt_word_reduce` of g_0^n, which takes the run-time precision: genus 2 g_0^1500 0.31 s, g_0^3000 1.6 s; "
+     "genus 1024 g_0^1000 1.4 s, g_0^2048 6.4 s, g_0^4096 43 s",
+     "3 December 2026; docs/large_genus.md", "hdt.h at hdt_word_reduce"),
+    ("a long reduced word that still fits in double at genus 1024 (a chain of half relators): up to about "
+     "10 µs a letter of it, 1.5 s in all", "1 December 2026 (commit f99c118, the figure hdt.h carried until now; no program of `bench/` makes such a word)",
+     "hdt.h at HDT_WORD_MAX_LENGTH"),
+]
 
 
 # The per-point time shown: "cpu_us_per_pt" (the process's CPU time: robust
@@ -109,7 +142,7 @@ def build(build_dir, cgal, jobs):
     subprocess.run(["ninja", "-C", build_dir, "-j", str(jobs)] + targets, check=True, cwd=ROOT,
                    stdout=subprocess.DEVNULL)
     failed = []
-    for program in EXTRA_PROGRAMS:
+    for program in EXTRA_PROGRAMS + sorted({run[0] for run in CITED_RUNS}):
         built = subprocess.run(["ninja", "-C", build_dir, "-j", str(jobs), "bench/" + program], cwd=ROOT,
                                capture_output=True, text=True)
         if built.returncode != 0:
@@ -282,6 +315,28 @@ def run_predicates(build_dir, calls, seconds_limit):
         if m:
             decided[int(m.group(1))] = (int(m.group(2)), int(m.group(3)), float(m.group(4)))
     return (rows, decided), None
+
+
+def run_cited(build_dir, seconds_limit, failed):
+    """Each of CITED_RUNS once: [(command text, where cited, output lines or None, why)]."""
+    done = []
+    for program, argv, cited in CITED_RUNS:
+        text = shlex.join([os.path.join(os.path.relpath(build_dir, ROOT), "bench", program)] + argv)
+        if program in failed:
+            done.append((text, cited, None, "did not build"))
+            continue
+        log("run " + text)
+        try:
+            proc = subprocess.run([os.path.join(build_dir, "bench", program)] + argv, capture_output=True,
+                                  text=True, timeout=seconds_limit)
+        except (OSError, subprocess.TimeoutExpired) as e:
+            done.append((text, cited, None, f"did not finish: {e}"))
+            continue
+        if proc.returncode != 0:
+            done.append((text, cited, None, f"failed (exit {proc.returncode}): {proc.stderr.strip()[:300]}"))
+            continue
+        done.append((text, cited, proc.stdout.rstrip("\n").splitlines(), None))
+    return done
 
 
 def callgrind_command(build_dir, g, n, out_file=None):
@@ -790,6 +845,36 @@ def make_document(runner, args, sizes, info):
                 w(f"| {g} | {total:,} | {total / args.callgrind_n:,.0f} | {seconds:.0f} |")
         w("")
 
+    w("## Figures cited by the header and the docs")
+    w("")
+    w("`include/hdt.h` states what a caller can rely on (complexity, bounds, limits) and points here for "
+      "measured times. Each command below ran once, in this run, from the release build above; its output "
+      "is as printed (CPU times unless it says otherwise).")
+    w("")
+    for text, cited, output, why in info.get("cited") or []:
+        w(f"`{text}` (cited in {cited}):")
+        w("")
+        if output is None:
+            w(f"not measured: {why}")
+        elif any(line.startswith("|") for line in output) and not any(line[:1].isspace() for line in output):
+            w("\n".join(output))
+        else:
+            w("```text")
+            w("\n".join(output))
+            w("```")
+        w("")
+    if info.get("cited") is None:
+        w("Not run (`--no-cited`).")
+        w("")
+    w("Figures measured once by a command this script does not rerun (too long for it, or a driver that is "
+      "not a program of `bench/`); the date is that of the measurement:")
+    w("")
+    w("| figure | measured by, when | cited in |")
+    w("|---|---|---|")
+    for figure, how, cited in RECORDED_FIGURES:
+        w(f"| {figure} | {how} | {cited} |")
+    w("")
+
     if runner.notes:
         w("## Notes")
         w("")
@@ -823,6 +908,8 @@ def main():
     ap.add_argument("--no-curves", action="store_true", help="skip curves_bench")
     ap.add_argument("--predicates-calls", type=int, default=50000, help="predicates_bench's calls per predicate")
     ap.add_argument("--no-predicates", action="store_true", help="skip predicates_bench")
+    ap.add_argument("--no-cited", action="store_true",
+                    help="skip the runs of the figures hdt.h and the docs cite (CITED_RUNS)")
     ap.add_argument("--callgrind", default="2,32",
                     help="genera whose hdt_insert_many instructions callgrind counts ('' for none)")
     ap.add_argument("--callgrind-n", type=int, default=100000, help="points of the callgrind runs")
@@ -897,6 +984,10 @@ def main():
         info["predicates"], why = run_predicates(build_dir, args.predicates_calls, max(3 * args.budget, 60))
         if why:
             runner.notes.append(why)
+    if not args.no_cited:
+        info["cited"] = run_cited(build_dir, max(3 * args.budget, 60), failed_extra)
+    else:
+        info["cited"] = None
     if callgrind_genera:
         if shutil.which("valgrind") is None:
             runner.notes.append("valgrind is not installed: no instruction counts")

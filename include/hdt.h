@@ -85,19 +85,20 @@ HDT_API int hdt_abi_version(void) HDT_NOEXCEPT;
 
 /* Largest genus the functions taking a genus accept (HDT_ENOTSUP above it;
    hdt_systole has no limit). May grow in later versions. Up to it each
-   finishes in bounded time and memory: at genus 1024, measured on a 2-core
-   x86-64 in a fresh process, hdt_point_representative takes 0.2 s and 11 MiB
-   (its first call for a genus; later calls at most 0.23 s for points 10^-16
-   to 2 * 10^-15 from the unit circle), the word functions as HDT_WORD_MAX_LENGTH
-   says, the others microseconds. hdt_create has a lower limit: */
+   finishes in bounded time and memory, for every point of the open disk
+   and every word up to HDT_WORD_MAX_LENGTH (the word functions' cost as
+   HDT_WORD_MAX_LENGTH says): the first call of hdt_point_representative
+   or a word function for a genus in a process builds that genus's tables,
+   later calls reuse them. Times and memory measured at genus 1024:
+   docs/benchmarks.md. hdt_create has a lower limit: */
 #define HDT_GENUS_MAX 1024
 
 /* Largest genus hdt_create accepts (HDT_ENOTSUP, naming this limit, above
    it), the largest at which a test builds and certifies the dummy points.
-   The first triangulation of a genus in a process builds them: measured as
-   above, at most 0.6 to 0.7 s of CPU for every genus up to 128 (0.2 s at
-   64), 1.6 s and 146 MiB (10^5 points included) at 256; later ones copy
-   them (0.9 ms at 128, 4 ms at 256). May grow in later versions. */
+   The first triangulation of a genus in a process builds and certifies
+   them (exact arithmetic; the costliest first call of the library at large
+   genus); later ones copy them. Times and memory of both, per genus:
+   docs/benchmarks.md. May grow in later versions. */
 #define HDT_CREATE_GENUS_MAX 256
 
 /* The systole of M_g: 2 arccosh(1 + 2 cos(pi / 2g)), correctly rounded (the
@@ -123,9 +124,9 @@ HDT_API hdt_status hdt_polygon_side_midpoint(int genus, int k, double *x, double
    vertex to v_0). (*rx, *ry) receives h(x + iy) rounded to double (may be
    NULL); the canonical word of h uses the two-call pattern of
    hdt_word_reduce (word may be NULL when capacity is 0); every point of the
-   open disk gets its word, however long (up to 1908 letters measured: genus
-   1024, 10^-15 to 2 * 10^-15 from the circle). HDT_EDOMAIN when (x, y) is
-   not a finite point of the open unit disk. */
+   open disk gets its word, however long (the two-call pattern sizes it;
+   the longest words met are listed in docs/benchmarks.md). HDT_EDOMAIN
+   when (x, y) is not a finite point of the open unit disk. */
 HDT_API hdt_status hdt_point_representative(int genus, double x, double y, double *rx, double *ry,
                                             int32_t *word, size_t capacity, size_t *length) HDT_NOEXCEPT;
 
@@ -134,14 +135,13 @@ HDT_API hdt_status hdt_point_representative(int genus, double x, double y, doubl
    length may be 0 (the identity; word may then be NULL). */
 
 /* Longest word the word functions accept, in letters. hdt_word_matrix,
-   hdt_word_lorentz and hdt_word_apply take time linear in the length: about
-   0.05 us a letter (45 ms for 10^6 letters, measured on a 2-core x86-64),
-   for Dehn's algorithm and one pass in double. When the result fits in
-   double they add a multiprecision product of the reduced word, which is
-   then short: at most 1 ms at genus 2 (g_0^464); only at large genus can a
-   long reduced word (a chain of half relators) still fit, costing up to
-   about 10 us a letter of it (1.5 s at genus 1024). The first call for a
-   genus also builds its tables (0.5 s at genus 1024). */
+   hdt_word_lorentz and hdt_word_apply take time linear in the length for
+   Dehn's algorithm and one pass in double. When the result fits in double
+   they add a multiprecision product of the reduced word, which is then
+   short at small genus (g_0^n at genus 2 overflows from n = 465); only at
+   large genus can a long reduced word (a chain of half relators) still
+   fit, and its product costs more per letter than the first pass. The first call
+   for a genus also builds its tables. Times: docs/benchmarks.md. */
 #define HDT_WORD_MAX_LENGTH 1000000
 
 /* The canonical word of the element: the shortlex-least geodesic word
@@ -154,10 +154,10 @@ HDT_API hdt_status hdt_point_representative(int genus, double x, double y, doubl
    too small. The canonical word is never longer than the input, so
    capacity >= length always suffices and saves the second call (each call
    does the whole reduction). Long reduced words whose points stay near O
-   (the words of hdt_point_representative: up to 1908 letters measured at
-   genus 1024) are certified at a few hundred bits; the others take a
-   precision that grows with the length (g_0^2048 at genus 1024: 6.4 s, see
-   docs/large_genus.md). HDT_ENOTSUP, nothing written, when such a word's
+   (the words of hdt_point_representative) are certified at a few hundred
+   bits; the others take a precision that grows with the length, so their
+   time grows faster than the length (docs/large_genus.md; times in
+   docs/benchmarks.md). HDT_ENOTSUP, nothing written, when such a word's
    reduced form has more than 2048 letters. */
 HDT_API hdt_status hdt_word_reduce(int genus, const int32_t *word, size_t length,
                                    int32_t *out, size_t capacity, size_t *out_length) HDT_NOEXCEPT;
@@ -236,6 +236,11 @@ HDT_API hdt_status hdt_neighbour_word(int genus, size_t id, int32_t *out,
    larger ids are given by a triangulation as it meets new elements and are
    valid for that handle only (hdt_translation_word, hdt_translation_matrix).
 
+   Memory is linear in V: at least 121 bytes a vertex (its record and
+   its two faces: F = 2 (V + 2g - 2)), more for the translation table,
+   the point-location grid and the caches some queries below keep (each
+   named there). Measured peaks per vertex: docs/benchmarks.md.
+
    Every function below that takes a handle and returns an hdt_status may
    return, beside the statuses its comment names, HDT_EINVAL for t NULL or
    busy (below) and HDT_ENOMEM when memory runs out; these are not repeated
@@ -278,11 +283,16 @@ HDT_API hdt_status hdt_insert(hdt_triangulation *t, double x, double y, uint32_t
    along a Hilbert curve on the representatives, each point located from
    the previous one (a round's first point from the nearest of a random
    sample of vertices; in a call of fewer than V/8 points among V
-   vertices, every point from a vertex near it, as hdt_insert). Points
-   given along a curve then cost about twice random ones, not 4 to 5
-   times; 10^5 random points in calls of 1 to 1000 points cost 2.8 to 1.5
-   times one call of them all (bench/batch_bench.c). New vertices get their ids in that
-   order, not in input order (the same call gives the same ids). vertices (may be NULL)
+   vertices, every point from a vertex near it, as hdt_insert). For n
+   points uniform on M_g the expected cost is O(log n) a point (randomized
+   incremental construction: O(1) expected faces changed a point, short
+   walks along the curve), and the order is computed in linear time. Points
+   along a curve, or given in many small calls, cost more per point (the
+   walks are longer and the order is sorted per call): the figures are in
+   docs/benchmarks.md
+   (bench/curves_bench.c, bench/batch_bench.c). New vertices get their ids
+   in that order, not in input order (the same call gives the same ids).
+   vertices (may be NULL)
    receives n ids: vertices[i] answers point i (a duplicate gets the
    existing vertex; that is not an error here, and a dummy met this way
    becomes a user vertex). Every point is checked first:
@@ -359,8 +369,11 @@ HDT_API hdt_status hdt_translation_homology(const hdt_triangulation *t, int32_t 
    in the closed triangle h(canonical copy). A point on an edge or vertex gets
    one of the faces around it. face or translation may be NULL. Queries in
    no particular order start their walk from a vertex near the point (a
-   grid over the representatives): 0.5 us a query at 10^5 vertices, 2.4 us
-   at 10^6 (bench/batch_bench.c, genus 2); hdt_nearest_vertex 0.9 and 3.2 us. */
+   grid over the representatives, rebuilt whenever the vertex count has
+   doubled), so that for vertices spread over M_g a walk crosses about a
+   grid cell's faces instead of the O(V^(1/2)) of a walk from afar; the
+   grid takes O(V) memory. hdt_nearest_vertex walks likewise. Times per
+   query: docs/benchmarks.md (bench/batch_bench.c). */
 HDT_API hdt_status hdt_locate(const hdt_triangulation *t, double x, double y, size_t *face,
                               int32_t *translation) HDT_NOEXCEPT;
 /* The vertex nearest to the disk point (x, y) on M_g (hyperbolic distance,
@@ -450,10 +463,10 @@ HDT_API hdt_status hdt_save(const hdt_triangulation *t, void *bytes, size_t capa
    that breaks an invariant. Memory is bounded by a small multiple of size
    (every count is checked against size before anything is allocated).
    *out is not written on failure. HDT_EINVAL also for out NULL or bytes
-   NULL with size > 0; HDT_ENOMEM when memory runs out. Time: about
-   hdt_validate's, 0.8 to 0.85 times hdt_insert_many of the same points at
-   10^6 on the median of several rounds, 0.7 to 1.0 in single ones (in the
-   fundamental polygon or spread over the disk; docs/format.md). */
+   NULL with size > 0; HDT_ENOMEM when memory runs out. Time: linear in
+   size, dominated by the validation (hdt_validate's exact predicates on
+   every edge), of the order of hdt_insert_many of the same points
+   (measured ratio: docs/benchmarks.md, docs/format.md). */
 HDT_API hdt_status hdt_load(hdt_triangulation **out, const void *bytes, size_t size) HDT_NOEXCEPT;
 
 /* ---- Adjacency, edges, corner points and the Voronoi diagram ----
@@ -475,11 +488,12 @@ HDT_API hdt_status hdt_load(hdt_triangulation **out, const void *bytes, size_t s
    smallest altitude, the sides come from the exact data in double-double
    or at 200 bits: they keep their relative accuracy however short (two
    distinct vertices 1e-16 apart have an edge of about that length, never
-   0). Measured against a 256-bit MPFR evaluation (tests/test_dual.c; random
-   sets of genus 2, 3 and 5, dummy sets of genus 2 and 4, and edges of
-   4e-18 to 1e-16 between a point and the rounded image of a nearby one):
-   radii, edge lengths and hdt_quality's figures within a relative 1e-14
-   (5.8e-15 at worst); corners within 5e-15 of the exact ones in the disk
+   0). Accuracy, measured (not proved) against a 256-bit MPFR evaluation
+   by tests/test_dual.c (random sets of genus 2, 3 and 5, dummy sets of
+   genus 2 and 4, and edges of 4e-18 to 1e-16 between a point and the
+   rounded image of a nearby one; the worst values in docs/dual.md):
+   radii, edge lengths and hdt_quality's figures within a relative 1e-14;
+   corners within 5e-15 of the exact ones in the disk
    (hyperbolic distance 1.1e-13, growing with the genus, with the entries
    of the translations' matrices), circumcentres within 1.3e-14
    (docs/dual.md). A face double cannot resolve (corners nearly collinear,
@@ -565,12 +579,14 @@ HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, doub
    offsets has hdt_vertex_id_bound(t) + 1 entries (offsets[0] = 0, the last
    3F); indexed by id so that v's row needs no search, a removed id having
    an empty row. Every face corner is in its vertex's row once: *count =
-   3F entries. Capacity in entries; each output may be NULL. At 10^6
-   vertices about 52 ms, where hdt_vertex_star for every vertex takes 250
-   (docs/dual.md). The handle keeps the call's scratch (about 92 bytes a
-   vertex) until hdt_destroy, and with it the rows: until the next call on
-   a non-const handle, a later hdt_vertex_stars or hdt_voronoi_cells writes
-   from them (12 ms at 10^6 for the stars). HDT_ENOMEM, nothing written but
+   3F entries. Capacity in entries; each output may be NULL. Time linear
+   in V, in one pass over the faces in memory order (hdt_vertex_star for
+   every vertex walks each star instead, out of order: several times
+   slower at large V). The handle keeps the call's scratch (about 92 bytes
+   a vertex) until hdt_destroy, and with it the rows: until the next call
+   on a non-const handle, a later hdt_vertex_stars or hdt_voronoi_cells
+   writes from them, a copy with no pass over the faces. Times:
+   docs/benchmarks.md (bench/dual_bench.c). HDT_ENOMEM, nothing written but
    *count, when the scratch cannot be had (and nothing either on
    HDT_EINTERNAL: every star is checked before the writing). */
 HDT_API hdt_status hdt_vertex_stars(const hdt_triangulation *t, size_t *offsets, uint32_t *faces, uint8_t *corners,
@@ -582,8 +598,8 @@ HDT_API hdt_status hdt_vertex_stars(const hdt_triangulation *t, size_t *offsets,
    offsets[v + 1] - 1 is the cell of v, the same bits as hdt_voronoi_cell(v).
    *count = 3F points; xy must not be NULL when capacity > 0. Capacity in
    points. Keeps the circumcentres on the handle as hdt_voronoi_cell does,
-   and reuses the rows as hdt_vertex_stars does (at 10^6 vertices about 62
-   ms with every centre kept, 17 ms from kept rows). */
+   and reuses the rows as hdt_vertex_stars does; time linear in V (times:
+   docs/benchmarks.md). */
 HDT_API hdt_status hdt_voronoi_cells(const hdt_triangulation *t, size_t *offsets, double *xy, size_t capacity,
                                      size_t *count) HDT_NOEXCEPT;
 
@@ -629,9 +645,11 @@ HDT_API hdt_status hdt_voronoi_cells(const hdt_triangulation *t, size_t *offsets
    vertex at the least); the message gives the count. Later
    HDT_ENOMEM when memory runs out: the *added points inserted so far stay,
    in a valid triangulation, and *unmet counts the faces still breaking a
-   bound (an upper bound). Time: about 0.1 s of CPU for the 86,000 points of
-   eps = 0.01 at genus 2, about in proportion to the count
-   (docs/refinement.md). */
+   bound (an upper bound). Time: each Steiner point goes straight into the
+   cavity of the face it refines (no point location), so the cost grows
+   with the points added, times the logarithm of the queue's size; a
+   packing argument bounds how many are added (docs/refinement.md; times
+   in docs/benchmarks.md). */
 HDT_API hdt_status hdt_refine(hdt_triangulation *t, double max_radius, double max_ratio, size_t max_points,
                               size_t *added, size_t *unmet) HDT_NOEXCEPT;
 

@@ -158,7 +158,8 @@ HDT_API hdt_status hdt_voronoi_vertices(const hdt_triangulation *t, double *xy, 
     // error, could stop it part way). Through the handle's centre cache
     // when hdt_voronoi_cell or hdt_voronoi_edges made one (hits read, misses
     // computed and kept); else computed directly: making the cache here
-    // (96 MB at 10^6 vertices, written once) doubled a single call's time.
+    // (48 bytes a face, written once to fresh pages) would cost a single
+    // call about as much as the centres themselves.
     hdt::triangulation::warm_corner_matrices(tri, false);
     hdt::triangulation::CentreCache &cache = t->centres;
     if (xy || radii) hdt::triangulation::voronoi_vertices(tri, xy, radii, cache.ready(tri) ? &cache : nullptr);

@@ -48,9 +48,10 @@ constexpr std::size_t kHeader = 44, kVertexBytes = 25, kFaceBytes = 48, kChecksu
 constexpr std::size_t kWordsAt = kHeader;
 
 // CRC-32 (ISO-HDLC: reflected, polynomial 0xEDB88320, as zlib's crc32),
-// eight bytes at a step with eight tables ("slicing by 8"): about 2
-// instructions a byte where Boost.CRC's byte-at-a-time table took 18, a
-// tenth of a load's time. tests/test_save.c checks it against a bit-by-bit
+// eight bytes at a step with eight tables ("slicing by 8"): one table
+// lookup a byte without the byte-at-a-time table's dependency from byte to
+// byte, so that the checksum stays a small part of a load. tests/test_save.c
+// checks it against a bit-by-bit
 // CRC of its own.
 struct CrcTables {
   uint32_t t[8][256];
@@ -105,9 +106,8 @@ class Writer {
 // Asks for transparent huge pages (2 MB) under the records' storage before
 // it is first written, where the system has them (Linux with THP in
 // "madvise" mode, as here). The 120 MB of a 10^6-vertex file's records are
-// fresh memory: in 4 KB pages their first touch cost a third of a load on
-// this VM (a page fault per 4 KB, 380 ms for 96 MB in a scratch test, 210
-// ms with the advice, 15-20 ms when freed huge pages are reused), and
+// fresh memory: in 4 KB pages their first touch takes a page fault per
+// 4 KB, a large part of a load (docs/format.md), and
 // validate() reads them in random order, where 2 MB pages spare most TLB
 // misses. Only a hint: nothing changes where it is refused or unknown.
 void advise_huge_pages(const void *p, std::size_t bytes) {

@@ -15,9 +15,9 @@ namespace hdt::surface {
 ExactSite exact_vertex(const exact::Field &field, int k);
 ExactSite exact_side_midpoint(const exact::Field &field, int k);
 // m_0 .. m_{count-1} (count <= 4g), each equal to exact_side_midpoint's,
-// from one rotation sequence instead of two products per midpoint (those
-// were 15% of the first hdt_create at genus 127, where the products are
-// dense).
+// from one rotation sequence instead of two products per midpoint (a
+// visible part of the first hdt_create at large genus, where the products
+// are dense).
 std::vector<ExactSite> exact_side_midpoints(const exact::Field &field, int count);
 
 }  // namespace hdt::surface

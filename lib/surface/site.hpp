@@ -24,8 +24,8 @@ using SiteReal = exact::mp_real<40>;
 // A registered site.
 struct Site {
   // Shared, never changed: a handle created from a cached dummy set adopts
-  // its sites by copying the pointer, not the coefficients (at genus 128 the
-  // copies were 50 of the 65 million instructions of a cached hdt_create).
+  // its sites by copying the pointer, not the coefficients (at large genus
+  // copying them was most of a cached hdt_create's work).
   std::shared_ptr<const ExactSite> exact;
   double x, y;  // the coordinates rounded to double (correctly when registered so)
   // Its hyperboloid vector N = (Z^2 + X^2 + Y^2, 2XZ, 2YZ) / (Z^2 - X^2 - Y^2),

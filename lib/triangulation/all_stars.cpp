@@ -18,8 +18,8 @@ namespace hdt::triangulation {
 
 // Faces ahead of the scatter to fetch their vertices' counts and slots
 // for: it writes by vertex id, which does not follow the faces' order.
-// (32: the pass over the faces took 17 ms at 10^6 vertices, against 20
-// for 16 and 18 for 64.)
+// (32 rather than 16 or 64: far enough ahead that a fetch from memory is
+// done when its face comes, near enough that it is still in cache.)
 constexpr std::size_t kAhead = 32;
 
 namespace {
@@ -72,7 +72,7 @@ void AllStars::build_rows(const Triangulation &tri, bool matrices, CentreCache *
     // The cells' centres in the same pass over the faces, through the
     // cache as hdt_voronoi_cell (the same bits): a hit here; the misses by
     // blocks of faces just passed, still in cache (a call a face to
-    // compute one cost 40 instructions a face more).
+    // compute one would pay the call's overhead on every face).
     if (cache) {
       if (!cache->holds(tri, uint32_t(f))) block_missing = true;
       if (block_missing && ((f + 1) % 256 == 0 || f + 1 == nf)) {
@@ -97,8 +97,7 @@ void AllStars::build_rows(const Triangulation &tri, bool matrices, CentreCache *
     }
     // Each corner into its vertex's next slot, in face order: its corner
     // index k = 4f + c and the next face about the vertex. (Spelled out
-    // corner by corner: as a loop it was not unrolled, 25 instructions a
-    // corner.)
+    // corner by corner: GCC does not unroll the loop.)
     if (A.v[0] >= n || A.v[1] >= n || A.v[2] >= n)
       throw std::logic_error("all stars: face " + std::to_string(f) + " names no vertex");
     const U base = U(4 * f);
@@ -165,8 +164,7 @@ void AllStars::order_rows(const Triangulation &tri, Rows<U> &rows) {
     // row's (at most 8: two vector comparisons). A face not in the row
     // gives lane 8, and an entry met twice shows in the used mask.
     // (Intrinsics, because a portable loop over the 8 lanes, which GCC
-    // vectorises too, made hdt_vertex_stars 1.7 times as slow at 10^6 in
-    // interleaved rounds.)
+    // vectorises too, made hdt_vertex_stars markedly slower at large V.)
     const uint32_t first = V[v].face;
     uint32_t f = first;
 #if defined(__SSE2__)

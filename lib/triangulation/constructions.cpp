@@ -28,8 +28,8 @@ namespace hdt::triangulation {
 
 namespace {
 
-// Forced inline: GCC keeps them as calls otherwise, a tenth of a
-// circumcentre's instructions.
+// Forced inline: GCC keeps them as calls otherwise, and these small
+// helpers run several times per circumcentre.
 #if defined(__GNUC__)
 #define HDT_INLINE inline __attribute__((always_inline))
 #else
@@ -284,8 +284,8 @@ HDT_INLINE bool centre_of(const FaceFrame &frame, Point *centre, double *radius,
 
 // From the corners alone, the sides and the cross product in double as
 // they come: refinement's circles, which refine no face thin or short
-// enough for the frame to matter (refine.hpp's resolution), at 19% fewer
-// of an epsilon-net's instructions (callgrind, eps 0.02 on M_2).
+// enough for the frame to matter (refine.hpp's resolution): the frame's
+// work would be paid for every new face of a refinement for nothing.
 HDT_INLINE bool centre_of_corners(const Point p[3], bool rounded, Point *centre, double *radius) {
   const Point a1 = to_origin_scaled(p[0], p[1]), a2 = to_origin_scaled(p[0], p[2]);
   const Point n1{p[1].re - p[0].re, p[1].im - p[0].im}, n2{p[2].re - p[0].re, p[2].im - p[0].im};
@@ -451,7 +451,7 @@ HDT_INLINE Point cached_centre(const Triangulation &tri, uint32_t f, double *rad
 
 void voronoi_vertices(const Triangulation &tri, double *xy, double *radii, CentreCache *cache) {
   const std::size_t F = tri.faces().size();
-  if (!cache) {  // the loop without the cache's tests (they cost 28 instructions a face)
+  if (!cache) {  // the loop without the cache's tests, which a call without a cache need not pay
     for (std::size_t f = 0; f < F; ++f) {
       fetch_ahead(tri, f);
       const Face &A = tri.faces()[f];

@@ -10,8 +10,8 @@
 
 #include "group/moebius.hpp"
 
-// Inlined always: as calls they were a tenth of a circumcentre's
-// instructions (GCC does not inline them by itself).
+// Inlined always: they are small and run several times per circumcentre,
+// and GCC does not inline them by itself.
 #if defined(__GNUC__)
 #define HDT_ISOMETRY_INLINE inline __attribute__((always_inline))
 #else

@@ -135,8 +135,8 @@ class DummyRelaxation {
     // The effort follows the cost: up to genus 32 six passes, three and two
     // smoothing sweeps, merges ranked by their searched fan estimate and
     // tried up to 1.2 times the limit (the repair saved almost none above);
-    // beyond, where the first hdt_create must stay within a second up to
-    // genus 128, two passes, one sweep each, ranked by the fan at the
+    // beyond, where the first hdt_create's cost grows fastest with the
+    // genus, two passes, one sweep each, ranked by the fan at the
     // midpoint, tried up to 1.15 (1.1 left 1.50 at genus 48..128). A merge
     // is kept when every circle near it is below ok, 1e-3 under the limit
     // in cosh(radius), which the exact removal then rarely refuses.
@@ -657,7 +657,7 @@ class DummyRelaxation {
 
 RelaxedDummies relax_dummy_points(Triangulation &t) {
   // Merges are tried below 1.2 times the limit up to genus 32 (1.15 beyond,
-  // where time counts). Up to genus 8, where a run takes a few ms, a second
+  // where time counts). Up to genus 8, where a run is cheap, a second
   // run tries up to 1.3 and the smaller set wins: genus 4 then has 27
   // dummies, not 28 of the 28.5 that 1.5 times its bound allows.
   if (t.genus() > 32) return DummyRelaxation(t, 1.15).run();

@@ -89,7 +89,8 @@ class DummyThinning {
   void run() {
     // Genus 3 and up: the relaxation alone, from the refined set (the
     // rounds below, run first, left it nothing more to find, and cost as
-    // much: 29 s at genus 256). Genus 2 keeps the 14-point set of the rounds.
+    // much as the relaxation, which grows fast with the genus). Genus 2
+    // keeps the 14-point set of the rounds.
     if (t_.genus() >= 3) {
       bool relaxed = false;
       try {

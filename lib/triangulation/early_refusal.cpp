@@ -52,7 +52,8 @@ Vec3 away(const Vec3 &x, const Vec3 &p, double s) {
 // star triangle (removed, p_i, p_i+1) of some i, certified; false also when
 // only the exact stage could tell (x was moved along the line from a link
 // vertex through the removed one: near-degenerate by construction, and the
-// exact stage's matrices over K_g cost seconds of removals at genus 256).
+// exact stage's matrices over K_g, dense at large genus, would cost far more
+// than the removal they might spare).
 // The star-shaped polygon is the union of those triangles.
 bool in_hole(Kernel &kernel, const std::vector<HoleVertex> &polygon, const HoleVertex &removed,
              const TranslatedPoint &x, const Vec3 &lift) {

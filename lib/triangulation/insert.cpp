@@ -179,13 +179,13 @@ uint32_t hilbert_index(uint32_t x, uint32_t y) {
 uint32_t grid(double c) { return std::isfinite(c) ? uint32_t(std::clamp((c + 1) * 16384.0, 0.0, 32767.0)) : 0; }
 
 // Sorts items by their key (30 bits), stably: three passes of 10 bits (an
-// LSD radix sort, a third of std::sort's instructions on these items). The
+// LSD radix sort: linear in the items, where std::sort compares). The
 // buffer is freed before the triangulation reserves room for the new faces,
 // so it does not raise the peak memory.
 template <class Item>
 void sort_along_curve(std::vector<Item> &items) {
   // A few items: the passes' 3 x 1024 buckets would cost more than the
-  // items (41,000 instructions a call of 10 points); the same stable order.
+  // items (a call of hdt_insert_many with a few points); the same stable order.
   if (items.size() < 256) {
     std::stable_sort(items.begin(), items.end(), [](const Item &a, const Item &b) { return a.key < b.key; });
     return;
@@ -235,8 +235,8 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out, 
   // The points are copied in Hilbert order of their representatives (reading
   // the caller's array in that order would miss the cache at every point),
   // each with its representative's translation: finding it again costs more
-  // than moving 8 more bytes per point through the sort (points outside
-  // F_g, as along a curve, pay some thousand instructions for it).
+  // than moving 8 more bytes per point through the sort (for a point
+  // outside F_g, as along a curve, finding it is a reduction into F_g).
   struct Item {
     uint32_t key, index;
     double x, y;

@@ -103,8 +103,8 @@ double bytes_needed(double vertices) { return vertices * (sizeof(Vertex) + 1 + 2
 bool resolvable(const Circle &c) {
   // The Euclidean radius of the hyperbolic circle of centre c and radius R
   // is (1 - |c|^2) t / (1 - |c|^2 t^2) >= (1 - |c|^2) t, t = tanh(R / 2),
-  // and t >= R / 4 for R <= 2: most faces pass without the tanh (which cost
-  // 3.7% of an epsilon-net's instructions).
+  // and t >= R / 4 for R <= 2: most faces pass without the tanh, which
+  // would otherwise run for every new face of a refinement.
   const double c2 = c.centre.re * c.centre.re + c.centre.im * c.centre.im, w = 1 - c2;
   if (c.radius <= 2 && w * c.radius >= 4 * kResolution) return true;
   const double t = std::tanh(c.radius / 2);

@@ -48,7 +48,8 @@ Triangulation Triangulation::rebuild(Snapshot &s) {
   if (V >= kNone) throw E(E::kCounts, 0, "too many vertices");
 
   // First every check that needs no surface: setting up a surface of large
-  // genus takes seconds, which a damaged file must not cost.
+  // genus (its tables and dummy set) is the dearest step of a load, which
+  // a damaged file must not cost.
   std::size_t live = 0;
   for (const Vertex &u : s.vertices) live += u.alive();
   if (F != 2 * (live + 2 * std::size_t(g) - 2))

@@ -35,7 +35,7 @@ struct Snapshot {
 // circle, and their products with elements of N, took at most 28 letters at
 // genus 2, 30 at genus 3 and 46 at genus 5 (300 such points each). The
 // bound keeps a hostile word from costing long multiprecision
-// canonicalisation (0.4 s for 1000 letters at genus 2).
+// canonicalisation (its precision grows with the word's length).
 inline std::size_t max_saved_word_length(int genus) { return 64 + 32 * std::size_t(genus); }
 
 // Why a snapshot is refused, with the part at fault (the genus, the counts,

@@ -25,8 +25,9 @@ std::string face_name(uint32_t f) { return "face " + std::to_string(f); }
 // The face loop reads face f + kAhead's vertices and neighbours in advance;
 // the vertex loop reads vertex v + 2 kAhead's stored face, then at v +
 // kAhead (that face in cache by then) its vertices and neighbours, which
-// hold three of the star's faces and most of its link. (8 and 16 gave the
-// same times, 0 a third more: docs/format.md.)
+// hold three of the star's faces and most of its link. (Any distance that
+// covers a miss will do; without the fetches the loops wait on memory:
+// docs/format.md.)
 constexpr uint32_t kAhead = 16;
 
 }  // namespace
