@@ -26,15 +26,6 @@ using hdt::triangulation::Face;
 using hdt::triangulation::Point;
 using hdt::triangulation::Triangulation;
 
-namespace {
-
-void check_vertex(const Triangulation &tri, uint32_t v) {
-  if (v >= tri.vertices().size() || !tri.vertices()[v].alive())
-    throw ApiError(HDT_EINVAL, "vertex " + std::to_string(v) + " is not a live vertex");
-}
-
-}  // namespace
-
 extern "C" {
 
 HDT_API hdt_status hdt_face_neighbours(const hdt_triangulation *t, uint32_t *faces, int32_t *translations,
@@ -59,7 +50,7 @@ HDT_API hdt_status hdt_vertex_star(const hdt_triangulation *t, uint32_t v, uint3
   return guarded("hdt_vertex_star", [&] {
     const Triangulation &tri = of(t);
     if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
-    check_vertex(tri, v);
+    tri.check_live(v);
     std::vector<hdt::triangulation::StarEntry> &star = t->star;
     hdt::triangulation::vertex_star(tri, v, &star);
     if (!list_fits(star.size(), capacity, count, "faces")) return HDT_OK;
@@ -220,7 +211,7 @@ HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, doub
   return guarded("hdt_voronoi_cell", [&] {
     const Triangulation &tri = of(t);
     if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
-    check_vertex(tri, v);
+    tri.check_live(v);
     std::vector<hdt::triangulation::StarEntry> &star = t->star;
     hdt::triangulation::vertex_star(tri, v, &star);
     if (!list_fits(star.size(), capacity, count, "corners")) return HDT_OK;

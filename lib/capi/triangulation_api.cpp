@@ -98,8 +98,7 @@ HDT_API hdt_status hdt_vertex_point(const hdt_triangulation *t, uint32_t v, doub
   return guarded("hdt_vertex_point", [&] {
     const Triangulation &tri = of(t);
     if (!x || !y) throw ApiError(HDT_EINVAL, "x and y must not be NULL");
-    if (v >= tri.vertices().size() || !tri.vertices()[v].alive())
-      throw ApiError(HDT_EINVAL, "vertex " + std::to_string(v) + " is not a live vertex");
+    tri.check_live(v);
     double px, py;
     tri.vertex_point(v, &px, &py);
     *x = px, *y = py;
@@ -108,7 +107,7 @@ HDT_API hdt_status hdt_vertex_point(const hdt_triangulation *t, uint32_t v, doub
 }
 
 HDT_API int hdt_vertex_is_dummy(const hdt_triangulation *t, uint32_t v) HDT_NOEXCEPT {
-  if (!t || v >= t->tri.vertices().size() || !t->tri.vertices()[v].alive()) return -1;
+  if (!t || !t->tri.is_live(v)) return -1;
   return t->tri.is_dummy(v) ? 1 : 0;
 }
 

@@ -12,10 +12,10 @@
 // written to. Everything here but hdt_svg has internal linkage (an anonymous
 // namespace), so nothing else is exported and no name clashes with hdt_*.
 //
-// The drawing came from the tool (bindings/cli/svg_picture.c): at size 800
-// the text is byte for byte what the tool wrote then (the meson test
-// `pictures` compares the committed pictures), which is why the arithmetic
-// below keeps the tool's formulas and their order of operations.
+// The drawing came from the tool (its svg_picture.c, since folded into this
+// file): at size 800 the text is byte for byte what the tool wrote then (the
+// meson test `pictures` compares the committed pictures), which is why the
+// arithmetic below keeps the tool's formulas and their order of operations.
 #include <array>
 #include <cmath>
 #include <cstdarg>

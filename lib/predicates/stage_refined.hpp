@@ -14,10 +14,10 @@
 // stage uses it for large_circumdisk. It assumes only the standard model
 // for each arithmetic operation of the stage's reals T:
 // |op~(a, b) - a op b| <= U |a op b|, with U = `unit`:
-//   MPFR at 133 bits rounds correctly: u = 2^-133, and U = kMidUnit = 2^-132
+//   MPFR at 133 bits rounds correctly: u = 2^-133, and U = MpfrStage::kUnit = 2^-132
 //     keeps a bit to spare;
 //   double-double operations are within 13u^2 < 2^-102 (u = 2^-53; see
-//     double_double.hpp): U = kFastUnit = 2^-100 keeps two bits to spare;
+//     double_double.hpp): U = DoubleDoubleStage::kUnit = 2^-100 keeps two bits to spare;
 //   double rounds correctly: U = u = 2^-53.
 // Inputs rounded into T are within U as well (matrices, sites' coordinates,
 // the constant of large_circumdisk, the side normals; see where they are

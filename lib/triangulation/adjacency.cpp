@@ -7,8 +7,7 @@
 namespace hdt::triangulation {
 
 void vertex_star(const Triangulation &tri, uint32_t v, std::vector<StarEntry> *out) {
-  if (v >= tri.vertices().size() || !tri.vertices()[v].alive())
-    throw std::invalid_argument("vertex " + std::to_string(v) + " is not a live vertex");
+  tri.check_live(v);
   group::TranslationTable &T = tri.table();
   const auto &faces = tri.faces();
   const uint32_t first = tri.vertices()[v].face;

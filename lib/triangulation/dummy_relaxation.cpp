@@ -20,40 +20,28 @@
 #include "group/word_matrix.hpp"
 #include "predicates/double_double.hpp"
 #include "predicates/stage_double_double.hpp"
+#include "triangulation/hyperboloid_vectors.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
 
 namespace {
 
-using Point = std::array<double, 3>;  // (t, u, v) on the hyperboloid
-
-double dot(const Point &p, const Point &q) { return p[0] * q[0] - p[1] * q[1] - p[2] * q[2]; }
-
-// The Minkowski normal of the plane through p, q, r: its dual is the centre.
-Point normal(const Point &p, const Point &q, const Point &r) {
-  const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, v[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
-  return {u[1] * v[2] - u[2] * v[1], -(u[2] * v[0] - u[0] * v[2]), -(u[0] * v[1] - u[1] * v[0])};
-}
-
-// cosh of the circumradius; infinite for a horocycle or hypercycle.
-double cosh_circumradius(const Point &p, const Point &q, const Point &r) {
-  const Point m = normal(p, q, r);
-  const double mm = dot(m, m);
-  if (!(mm > 0)) return INFINITY;
-  return (m[0] > 0 ? 1 : -1) * dot(m, p) / std::sqrt(mm);
-}
+using hyperboloid::cosh_circumradius;
+using hyperboloid::dot;
+using hyperboloid::normal;
+using Vector = hyperboloid::Vector;
 
 // Positive when p, q, r are counterclockwise.
-double orientation(const Point &p, const Point &q, const Point &r) {
+double orientation(const Vector &p, const Vector &q, const Vector &r) {
   return p[0] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[0] * r[2] - q[2] * r[0]) + p[2] * (q[0] * r[1] - q[1] * r[0]);
 }
 
 // Whether d lies clearly inside the circle of a, b, c: near-ties keep the
 // edge, so that rounding cannot make the flips cycle (the exact insertion
 // decides the final triangulation).
-bool in_circle(const Point &a, const Point &b, const Point &c, const Point &d) {
-  const Point m = normal(a, b, c);
+bool in_circle(const Vector &a, const Vector &b, const Vector &c, const Vector &d) {
+  const Vector m = normal(a, b, c);
   const double ma = dot(m, a), s = (m[0] > 0 ? 1 : -1) * (dot(m, d) - ma);
   return s < -1e-9 * std::abs(ma);
 }
@@ -61,7 +49,7 @@ bool in_circle(const Point &a, const Point &b, const Point &c, const Point &d) {
 using DD = predicates::DoubleDouble;
 using DDPoint = std::array<DD, 3>;
 
-DDPoint widen(const Point &p) { return {DD(p[0]), DD(p[1]), DD(p[2])}; }
+DDPoint widen(const Vector &p) { return {DD(p[0]), DD(p[1]), DD(p[2])}; }
 
 // Far from O at large genus (F_g's corners have coordinates near
 // cot(pi/4g)^2, 2.6e4 at genus 128; corner translations have matrix entries
@@ -85,7 +73,7 @@ struct Chart {
     m[2][0] = -a[2], m[2][1] = a[1] * a[2] * k, m[2][2] = DD(1) + a[2] * a[2] * k;
   }
   // m moves the centre to O; out of the chart: the inverse is J m^T J, J = diag(1, -1, -1).
-  Point back(const Point &q) const {
+  Vector back(const Vector &q) const {
     const DDPoint p = widen(q);
     return {double(m[0][0] * p[0] - m[1][0] * p[1] - m[2][0] * p[2]),
             double(-(m[0][1] * p[0]) + m[1][1] * p[1] + m[2][1] * p[2]),
@@ -93,7 +81,7 @@ struct Chart {
   }
 };
 
-Point from_disk(double x, double y) {
+Vector from_disk(double x, double y) {
   const double w = 1 - x * x - y * y;
   return {(2 - w) / w, 2 * x / w, 2 * y / w};
 }
@@ -119,13 +107,13 @@ class DummyRelaxation {
     const auto &vertices = t.vertices();
     // Each vertex gets a chart centred at its first point: P_ holds its
     // point in it (O at first).
-    P_.assign(vertices.size(), Point{1, 0, 0});
+    P_.assign(vertices.size(), Vector{1, 0, 0});
     vface_.resize(vertices.size(), kNone);
     charts_.reserve(vertices.size());
     transitions_.resize(vertices.size());
     for (uint32_t v = 0; v < vertices.size(); ++v) {
       const bool live = vertices[v].alive();
-      charts_.emplace_back(widen(live ? from_disk(vertices[v].x, vertices[v].y) : Point{1, 0, 0}));
+      charts_.emplace_back(widen(live ? from_disk(vertices[v].x, vertices[v].y) : Vector{1, 0, 0}));
       if (live) vface_[v] = vertices[v].face;
     }
     original_ = P_;
@@ -176,7 +164,7 @@ class DummyRelaxation {
       if (kept) continue;
       out.removed.push_back(v);
       if (vface_[v] != kNone) {
-        const Point p = charts_[v].back(P_[v]);
+        const Vector p = charts_[v].back(P_[v]);
         out.added.push_back({p[1] / (1 + p[0]), p[2] / (1 + p[0])});
         out.near.push_back(v);
       }
@@ -255,7 +243,7 @@ class DummyRelaxation {
   // neighbours: computed once in double-double from the words' accurate
   // matrices, it is rounded to double and cached (charts never move). Keyed
   // by both ids, which spares the translation table a product per query.
-  Point local(uint32_t v, TranslationId a, uint32_t w, TranslationId b) {
+  Vector local(uint32_t v, TranslationId a, uint32_t w, TranslationId b) {
     if (v == w && a == b) return P_[v];
     std::vector<Transition> &list = transitions_[v];
     auto it = std::find_if(list.begin(), list.end(),
@@ -294,18 +282,18 @@ class DummyRelaxation {
       it = list.end() - 1;
     }
     const std::array<double, 9> &M = it->m;
-    const Point &q = P_[w];
+    const Vector &q = P_[w];
     return {M[0] * q[0] + M[1] * q[1] + M[2] * q[2], M[3] * q[0] + M[4] * q[1] + M[5] * q[2],
             M[6] * q[0] + M[7] * q[1] + M[8] * q[2]};
   }
-  Point local(uint32_t v, uint32_t w, TranslationId t) { return local(v, 0, w, t); }
+  Vector local(uint32_t v, uint32_t w, TranslationId t) { return local(v, 0, w, t); }
   // Corner j of f in the chart of corner i's vertex.
-  Point local_corner(uint32_t f, int i, int j) {
+  Vector local_corner(uint32_t f, int i, int j) {
     const RFace &R = F_[f];
     return local(R.v[i], R.t[i], R.v[j], R.t[j]);
   }
   double face_radius(uint32_t f) {
-    const Point a = P_[F_[f].v[0]], b = local_corner(f, 0, 1), c = local_corner(f, 0, 2);
+    const Vector a = P_[F_[f].v[0]], b = local_corner(f, 0, 1), c = local_corner(f, 0, 2);
     if (!(orientation(a, b, c) > 0)) return INFINITY;
     return cosh_circumradius(a, b, c);
   }
@@ -348,12 +336,12 @@ class DummyRelaxation {
   // The largest circle of the fan from p over the closed polygon L; infinite
   // when a fan triangle is not counterclockwise. Stops at `stop`: the
   // search only asks whether a point beats the best so far.
-  static double fan(const Point &p, const std::vector<Point> &L, double stop = INFINITY, std::size_t *first = nullptr) {
+  static double fan(const Vector &p, const std::vector<Vector> &L, double stop = INFINITY, std::size_t *first = nullptr) {
     const std::size_t n = L.size(), start = first ? *first : 0;
     double r = 0;
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t i = start + k < n ? start + k : start + k - n;
-      const Point &a = L[i], &b = L[i + 1 == n ? 0 : i + 1];
+      const Vector &a = L[i], &b = L[i + 1 == n ? 0 : i + 1];
       if (!(orientation(p, a, b) > 0)) return INFINITY;
       const double c = cosh_circumradius(p, a, b);
       if (c > r) {
@@ -368,7 +356,7 @@ class DummyRelaxation {
   // The point near *p minimising fan(p, L), by compass steps in the disk.
   // The largest triangle at the best point so far is tested first: most
   // steps are refused by it.
-  static double best_fan_point(const std::vector<Point> &L, Point *p) {
+  static double best_fan_point(const std::vector<Vector> &L, Vector *p) {
     static const double kDirections[8][2] = {{1, 0}, {M_SQRT1_2, M_SQRT1_2}, {0, 1}, {-M_SQRT1_2, M_SQRT1_2},
                                              {-1, 0}, {-M_SQRT1_2, -M_SQRT1_2}, {0, -1}, {M_SQRT1_2, -M_SQRT1_2}};
     double x = (*p)[1] / (1 + (*p)[0]), y = (*p)[2] / (1 + (*p)[0]);
@@ -380,7 +368,7 @@ class DummyRelaxation {
       for (int d = 0; d < 8 && !moved; ++d) {
         const double nx = x + scale * kDirections[d][0], ny = y + scale * kDirections[d][1];
         if (!(nx * nx + ny * ny < 1)) continue;
-        const Point q = from_disk(nx, ny);
+        const Vector q = from_disk(nx, ny);
         std::size_t w = worst;
         const double fq = fan(q, L, f, &w);
         if (fq < f) x = nx, y = ny, f = fq, *p = q, moved = true, worst = w;
@@ -396,7 +384,7 @@ class DummyRelaxation {
     if (!movable(v) || !star(v, &s_)) return false;
     L_.clear();
     for (const Corner2 &c : s_.link) L_.push_back(local(v, c.v, c.t));
-    Point p = P_[v];
+    Vector p = P_[v];
     const double current = fan(p, L_);
     const double best = best_fan_point(L_, &p);
     if (!(best < current * (1 - 1e-7))) return false;
@@ -447,7 +435,7 @@ class DummyRelaxation {
     const Corner2 A{Fa.v[i], Fa.t[i]}, B{Fa.v[b], Fa.t[b]}, C{Fa.v[c], Fa.t[c]};
     const Corner2 D{N.v[k], T_.compose(Fa.nt[i], N.t[k])};
     if (A.v == D.v) return;  // not simplicial: leave it
-    const Point pa = P_[A.v], pb = local(A.v, A.t, B.v, B.t), pc = local(A.v, A.t, C.v, C.t),
+    const Vector pa = P_[A.v], pb = local(A.v, A.t, B.v, B.t), pc = local(A.v, A.t, C.v, C.t),
                 pd = local(A.v, A.t, D.v, D.t);
     if (!in_circle(pa, pb, pc, pd)) return;
     if (!(orientation(pa, pb, pd) > 0) || !(orientation(pa, pd, pc) > 0)) return;
@@ -530,10 +518,10 @@ class DummyRelaxation {
       if (std::binary_search(old_.begin(), old_.end(), o.face)) return false;
     L_.clear();
     for (const Corner2 &c : poly_) L_.push_back(local(u, c.v, c.t));
-    const Point pu = P_[u], pw = local(u, w, tw);
-    const Point m{pu[0] + pw[0], pu[1] + pw[1], pu[2] + pw[2]};
+    const Vector pu = P_[u], pw = local(u, w, tw);
+    const Vector m{pu[0] + pw[0], pu[1] + pw[1], pu[2] + pw[2]};
     const double s = 1 / std::sqrt(dot(m, m));
-    Point p{m[0] * s, m[1] * s, m[2] * s};
+    Vector p{m[0] * s, m[1] * s, m[2] * s};
     // Ranking takes the fan at the midpoint; a try searches the best point.
     estimate_ = apply || full_effort() ? best_fan_point(L_, &p) : fan(p, L_);
     if (!(estimate_ < cap) || !apply) return false;
@@ -641,11 +629,11 @@ class DummyRelaxation {
   std::vector<Chart> charts_;  // by vertex: centred at its first point
   std::vector<std::vector<Transition>> transitions_;  // by vertex: its neighbours' copies
   std::vector<RFace> F_, saved_F_;
-  std::vector<Point> P_, saved_P_, original_;
+  std::vector<Vector> P_, saved_P_, original_;
   std::vector<uint32_t> vface_, saved_vface_, free_, saved_free_;
   std::vector<std::pair<uint32_t, int>> stack_;
   Star s_, sw_;
-  std::vector<Point> L_;
+  std::vector<Vector> L_;
   std::vector<Corner2> poly_;
   std::vector<Outer> outer_;
   std::vector<uint32_t> ids_, old_, fan_, region_;

@@ -17,30 +17,21 @@
 
 #include "predicates/representative.hpp"
 #include "triangulation/dummy_relaxation.hpp"
+#include "triangulation/hyperboloid_vectors.hpp"
 #include "triangulation/triangulation.hpp"
 
 namespace hdt::triangulation {
 
 namespace {
 
-using Point = std::array<double, 3>;  // on the hyperboloid
-
-double dot(const Point &p, const Point &q) { return p[0] * q[0] - p[1] * q[1] - p[2] * q[2]; }
-
-// cosh of the circumradius of (p, q, r), infinite for a horocycle or
-// hypercycle (as the refinement computes it).
-double cosh_circumradius(const Point &p, const Point &q, const Point &r) {
-  const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, v[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
-  const Point m{u[1] * v[2] - u[2] * v[1], -(u[2] * v[0] - u[0] * v[2]), -(u[0] * v[1] - u[1] * v[0])};
-  const double mm = dot(m, m);
-  if (!(mm > 0)) return INFINITY;
-  return (m[0] > 0 ? 1 : -1) * dot(m, p) / std::sqrt(mm);
-}
+using hyperboloid::cosh_circumradius;
+using hyperboloid::dot;
+using Vector = hyperboloid::Vector;
 
 // The disk point of a p + b q + c r normalised: a point of the geodesic
 // triangle pqr for non-negative weights.
-bool blend(double a, const Point &p, double b, const Point &q, double c, const Point &r, double *x, double *y) {
-  const Point m{a * p[0] + b * q[0] + c * r[0], a * p[1] + b * q[1] + c * r[1], a * p[2] + b * q[2] + c * r[2]};
+bool blend(double a, const Vector &p, double b, const Vector &q, double c, const Vector &r, double *x, double *y) {
+  const Vector m{a * p[0] + b * q[0] + c * r[0], a * p[1] + b * q[1] + c * r[1], a * p[2] + b * q[2] + c * r[2]};
   const double mm = dot(m, m);
   if (!(mm > 0) || !(m[0] > 0)) return false;
   const double s = 1 / std::sqrt(mm);
@@ -52,11 +43,11 @@ bool blend(double a, const Point &p, double b, const Point &q, double c, const P
 // minimises the largest circle of the fan (p, L_i, L_i+1) over the closed
 // polygon L; returns that cosh(radius). A guess at the best new vertex for a
 // star-shaped hole (the Delaunay faces need not be the fan's).
-double best_fan_point(const std::vector<Point> &L, double *x, double *y) {
+double best_fan_point(const std::vector<Vector> &L, double *x, double *y) {
   auto largest = [&](double px, double py) {
     const double w = 1 - px * px - py * py;
     if (!(w > 0)) return double(INFINITY);
-    const Point P{(2 - w) / w, 2 * px / w, 2 * py / w};
+    const Vector P{(2 - w) / w, 2 * px / w, 2 * py / w};
     double r = 0;
     for (std::size_t i = 0; i < L.size(); ++i) r = std::max(r, cosh_circumradius(P, L[i], L[(i + 1) % L.size()]));
     return r;
@@ -134,7 +125,7 @@ class DummyThinning {
   // finds promising (a try costs an insertion and removals).
   bool exhaustive() const { return t_.dummy_count() < 64; }
   bool removable(uint32_t v) const { return v >= fixed_ && t_.vertices()[v].alive(); }
-  Point at(const Corner &c) { return K_.hyperboloid(t_.point(c.v, c.t)); }
+  Vector at(const Corner &c) { return K_.hyperboloid(t_.point(c.v, c.t)); }
 
   // Edges between two removable dummies, shortest first (the closest pairs
   // are the most redundant).
@@ -191,14 +182,14 @@ class DummyThinning {
   // estimates within 10%) also at their midpoint.
   void merge_pairs() {
     std::vector<Corner> polygon;
-    std::vector<Point> L;
+    std::vector<Vector> L;
     for (const auto &e : edges()) {
       const uint32_t u = e.second[0], v = e.second[1];
       Corner cu, cv;
       if (!removable(u) || !removable(v) || !edge_link(u, v, &polygon, &cu, &cv)) continue;
       L.clear();
       for (const Corner &c : polygon) L.push_back(at(c));
-      const Point pu = at(cu), pv = at(cv);
+      const Vector pu = at(cu), pv = at(cv);
       double mx, my;
       if (!blend(1, pu, 1, pv, 0, pu, &mx, &my)) continue;
       double x = mx, y = my;
@@ -214,7 +205,7 @@ class DummyThinning {
     for (uint32_t f = 0; f < t_.faces().size(); ++f) {
       const Face F = t_.faces()[f];
       if (!removable(F.v[0]) || !removable(F.v[1]) || !removable(F.v[2])) continue;
-      const Point p = K_.hyperboloid(t_.corner(F, 0)), q = K_.hyperboloid(t_.corner(F, 1)),
+      const Vector p = K_.hyperboloid(t_.corner(F, 0)), q = K_.hyperboloid(t_.corner(F, 1)),
                   r = K_.hyperboloid(t_.corner(F, 2));
       static const double weights[][3] = {{1, 1, 1}, {2, 1, 1}, {1, 2, 1}, {1, 1, 2}};
       for (const auto &w : weights) {
@@ -229,7 +220,7 @@ class DummyThinning {
   // merges.
   void smooth() {
     std::vector<Corner> link;
-    std::vector<Point> L;
+    std::vector<Vector> L;
     const auto end = uint32_t(t_.vertices().size());  // not the moved ones again
     for (uint32_t v = fixed_; v < end; ++v) {
       if (!removable(v)) continue;
@@ -237,7 +228,7 @@ class DummyThinning {
       link_of(v, 0, &link, &self);
       L.clear();
       for (const Corner &c : link) L.push_back(at(c));
-      const Point p = at(self);
+      const Vector p = at(self);
       double x = p[1] / (1 + p[0]), y = p[2] / (1 + p[0]);
       const double best = best_fan_point(L, &x, &y), current = [&] {
         double r = 0;

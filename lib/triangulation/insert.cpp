@@ -35,6 +35,14 @@ void grow_for(Vector &v, std::size_t k) {
 
 }  // namespace
 
+bool Triangulation::met_vertex(uint32_t v) {
+  last_vertex_ = v;
+  if (!dummy_[v]) return false;
+  dummy_[v] = false;  // the user's point is this dummy: it stays, as theirs
+  --dummies_;
+  return true;
+}
+
 uint32_t Triangulation::vertex_at(const Walk &at) const {
   // On the lines of two edges means at their common corner, exactly.
   if (at.zero_edges == 0 || (at.zero_edges & (at.zero_edges - 1)) == 0) return kNone;
@@ -75,11 +83,7 @@ Triangulation::Inserted Triangulation::insert_in_circle(double x, double y, uint
 Triangulation::Inserted Triangulation::insert_walked(double x, double y, TranslationId home, const Walk &at) {
   const uint32_t existing = vertex_at(at);
   if (existing != kNone) {
-    last_vertex_ = existing;
-    if (!dummy_[existing]) return {existing, true};
-    dummy_[existing] = false;  // the user's point is this dummy: it stays, as theirs
-    --dummies_;
-    return {existing, false};
+    return {existing, !met_vertex(existing)};
   }
   return {insert_located(x, y, home, false, at), false};
 }
@@ -290,8 +294,7 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out, 
     const Walk at = walk_from_hint({x, y, home, -1});
     uint32_t v = vertex_at(at);
     if (v != kNone) {
-      last_vertex_ = v;
-      if (dummy_[v]) dummy_[v] = false, --dummies_;
+      met_vertex(v);
     } else {
       v = insert_located(x, y, home, false, at);
       image.keep();

@@ -105,8 +105,7 @@ void Triangulation::jump_near(double x, double y, TranslationId home, bool grid)
   }
   const int samples = int(std::cbrt(double(live_vertices_)));
   for (int k = 0; k < samples; ++k) {
-    rng_ ^= rng_ << 13, rng_ ^= rng_ >> 7, rng_ ^= rng_ << 17;
-    const auto v = uint32_t(rng_ % n);
+    const auto v = uint32_t(next_random() % n);
     if (!vertices_[v].alive()) continue;
     const double f = farness(v);
     if (f < best_farness) best = v, best_farness = f;
@@ -125,8 +124,7 @@ Triangulation::Walk Triangulation::walk(const TranslatedPoint &q, uint32_t start
   for (std::size_t step = 0; step < limit; ++step) {
     const Face &F = faces_[f];
     const TranslatedPoint x{q.x, q.y, qt, q.site};
-    rng_ ^= rng_ << 13, rng_ ^= rng_ >> 7, rng_ ^= rng_ << 17;
-    const int first = int(rng_ % 3);  // a random first edge: no cycles
+    const int first = int(next_random() % 3);  // a random first edge: no cycles
     int zero = 0;
     bool moved = false;
     for (int k = 0; k < 3 && !moved; ++k) {
@@ -155,9 +153,13 @@ Triangulation::Located Triangulation::locate(double x, double y) const {
   return {w.face, table().inverse(w.query)};
 }
 
+void Triangulation::check_live(uint32_t v) const {
+  if (!is_live(v)) throw std::invalid_argument("vertex " + std::to_string(v) + " is not a live vertex");
+}
+
 void Triangulation::star(uint32_t v, std::vector<StarFace> *out) const {
-  const Vertex &u = vertices_.at(v);
-  if (!u.alive()) throw std::invalid_argument("vertex " + std::to_string(v) + " is not live");
+  check_live(v);
+  const Vertex &u = vertices_[v];
   group::TranslationTable &T = table();
   out->clear();
   uint32_t f = u.face;
@@ -177,8 +179,8 @@ void Triangulation::star(uint32_t v, std::vector<StarFace> *out) const {
 }
 
 void Triangulation::vertex_point(uint32_t v, double *x, double *y) const {
-  const Vertex &u = vertices_.at(v);
-  if (!u.alive()) throw std::invalid_argument("vertex " + std::to_string(v) + " is not live");
+  check_live(v);
+  const Vertex &u = vertices_[v];
   if (u.home == 0) {
     *x = u.x, *y = u.y;
     return;

@@ -33,8 +33,7 @@ bool repeats_a_vertex(const std::vector<HoleVertex> &polygon, std::vector<uint32
 }  // namespace
 
 bool Triangulation::remove(uint32_t v) {
-  if (v >= vertices_.size() || !vertices_[v].alive())
-    throw std::invalid_argument("vertex " + std::to_string(v) + " is not a live vertex");
+  check_live(v);
   group::TranslationTable &T = table();
   star(v, &scratch_.star);
   scratch_.old_faces.clear();

@@ -95,6 +95,11 @@ class Triangulation {
   static Triangulation restore(Snapshot &&s);
 
   bool is_dummy(uint32_t v) const { return dummy_[v]; }
+  // Whether v is the id of a vertex not removed.
+  bool is_live(uint32_t v) const { return v < vertices_.size() && vertices_[v].alive(); }
+  // Throws std::invalid_argument ("vertex v is not a live vertex") unless
+  // is_live(v): the one check of every call that takes a vertex id.
+  void check_live(uint32_t v) const;
   // The surface's site of vertex v, or -1: sites 0 .. 2g are vertices 1 .. 2g+1.
   int32_t site_of(uint32_t v) const { return v >= 1 && v <= uint32_t(2 * genus_ + 1) ? int32_t(v - 1) : -1; }
   TranslatedPoint point(uint32_t v, TranslationId t) const {
@@ -231,6 +236,14 @@ class Triangulation {
   // The vertex of `at`'s face at the walked-to point, if it is one of its
   // corners (kNone otherwise).
   uint32_t vertex_at(const Walk &at) const;
+  // A user's point found at vertex v: a dummy there becomes the user's
+  // vertex (true), a user vertex stays as it was (false).
+  bool met_vertex(uint32_t v);
+  // The walk's next random number (xorshift64).
+  uint64_t next_random() const {
+    rng_ ^= rng_ << 13, rng_ ^= rng_ >> 7, rng_ ^= rng_ << 17;
+    return rng_;
+  }
 
   int genus_;
   std::unique_ptr<surface::Surface> surface_;
