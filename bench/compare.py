@@ -60,7 +60,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PROGRAMS = {"libhdt": "triangulation_bench", "cgal-bolza": "cgal_bolza_bench", "cgal-euclid": "cgal_euclid_bench"}
-EXTRA_PROGRAMS = ["curves_bench", "predicates_bench"]
+EXTRA_PROGRAMS = ["curves_bench", "predicates_bench", "near_circle_bench"]
 # The figures include/hdt.h and the docs point to (its "docs/benchmarks.md"):
 # (the program, its arguments, where the figures are cited). Each runs once,
 # its output kept as printed, under the command that made it.
@@ -282,17 +282,44 @@ def compare_faces(path_a, path_b):
 
 # ---- the other benchmarks -----------------------------------------------------
 
+def run_extra(cmd, name, seconds_limit):
+    """An extra program's stdout, or (None, why) when it fails or runs out of time."""
+    try:
+        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=seconds_limit)
+    except (OSError, subprocess.TimeoutExpired) as e:
+        return None, f"{name} did not finish: {e}"
+    if proc.returncode != 0:
+        return None, f"{name} failed (exit {proc.returncode}): {proc.stderr.strip()[:300]}"
+    return proc.stdout, None
+
+
 def run_curves(build_dir, repeat, seconds_limit):
     """curves_bench's Markdown table (its own header line dropped), or None."""
     cmd = [os.path.join(build_dir, "bench", "curves_bench"), "--repeat", str(repeat)]
     log("run " + shlex.join(cmd[1:]) + " (curves_bench)")
-    try:
-        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=seconds_limit)
-    except (OSError, subprocess.TimeoutExpired) as e:
-        return None, f"curves_bench did not finish: {e}"
-    if proc.returncode != 0:
-        return None, f"curves_bench failed (exit {proc.returncode}): {proc.stderr.strip()[:300]}"
-    rows = [line for line in proc.stdout.splitlines() if line.startswith("|")]
+    stdout, why = run_extra(cmd, "curves_bench", seconds_limit)
+    if why:
+        return None, why
+    rows = [line for line in stdout.splitlines() if line.startswith("|")]
+    return rows, None
+
+
+def run_near_circle(build_dir, genera, counts, seconds_limit):
+    """near_circle_bench's NEAR lines as dicts (the "ratio" lines under points="ratio"), or None."""
+    cmd = [os.path.join(build_dir, "bench", "near_circle_bench"), "--genus", ",".join(map(str, genera)),
+           "--n", ",".join(map(str, counts))]
+    log("run " + shlex.join(cmd[1:]) + " (near_circle_bench, minutes at genus 256)")
+    stdout, why = run_extra(cmd, "near_circle_bench", seconds_limit)
+    if why:
+        return None, why
+    rows = []
+    for line in stdout.splitlines():
+        if not line.startswith("NEAR "):
+            continue
+        fields = dict(kv.split("=", 1) for kv in line.split()[1:] if "=" in kv)
+        if line.startswith("NEAR ratio"):
+            fields["points"] = "ratio"
+        rows.append(fields)
     return rows, None
 
 
@@ -300,14 +327,11 @@ def run_predicates(build_dir, calls, seconds_limit):
     """predicates_bench's lines, parsed: ([(g, name, filtered, exact, ratio)], {g: decided text})."""
     cmd = [os.path.join(build_dir, "bench", "predicates_bench"), str(calls)]
     log(f"run predicates_bench {calls}")
-    try:
-        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=seconds_limit)
-    except (OSError, subprocess.TimeoutExpired) as e:
-        return None, f"predicates_bench did not finish: {e}"
-    if proc.returncode != 0:
-        return None, f"predicates_bench failed (exit {proc.returncode}): {proc.stderr.strip()[:300]}"
+    stdout, why = run_extra(cmd, "predicates_bench", seconds_limit)
+    if why:
+        return None, why
     rows, decided = [], {}
-    for line in proc.stdout.splitlines():
+    for line in stdout.splitlines():
         m = re.match(r"(\d+)\s+(\w+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)$", line.strip())
         if m:
             rows.append((int(m.group(1)), m.group(2), float(m.group(3)), float(m.group(4)), float(m.group(5))))
@@ -552,6 +576,8 @@ def method(w, args, cgal, sizes):
       "insert or one at a time, then `is_valid()`" + ("" if cgal else " (not run here)") + " |")
     w("| `bench/curves_bench.c` | points along curves (`bench/curve_points.h`) against random points, "
       "side by side in one process |")
+    w("| `bench/near_circle_bench.c` | points 1e-15 from the unit circle (`bench/near_circle_points.h`) against "
+      "points uniform in F_g: insertion, validation, save and load |")
     w("| `bench/predicates_bench.cpp` | the predicates alone: filtered and forced through the exact field |")
     w("")
     sizes_text = ", ".join(f"10^{len(str(n)) - 1}" if str(n).strip("0") == "1" else str(n) for n in sizes)
@@ -762,6 +788,28 @@ def make_document(runner, args, sizes, info):
           + (f" (CGAL Bolza {bpv(b)}, CGAL Euclidean {bpv(e)})" if cgal else ""))
     w("")
 
+    near = info.get("near_circle")
+    if near is not None:
+        w("## Points near the circle")
+        w("")
+        w("Points with 1 - |z| uniform in [1e-15, 2e-15] at uniform random angles (`bench/near_circle_points.h`) "
+          "against as many points uniform in F_g, each set timed in the same process by "
+          "`bench/near_circle_bench.c`: `hdt_insert` one by one (mean and max a point, ms), `hdt_insert_many` "
+          "into a fresh handle, `hdt_validate`, `hdt_save` (both calls) and `hdt_load` of the result, wall "
+          f"clock, one run (`near_circle_bench --genus {','.join(map(str, args.near_genera))} "
+          f"--n {','.join(map(str, args.near_n))}`). Ratio: near-circle over uniform.")
+        w("")
+        w("| genus | n | points | insert mean | insert max | insert_many | validate | save | load |")
+        w("|---|---|---|---|---|---|---|---|---|")
+        keys = ["insert_mean", "insert_max", "insert_many", "validate", "save", "load"]
+        for r in near:
+            if r["points"] == "ratio":
+                cells = [r[k] + "x" for k in keys]
+            else:
+                cells = [r[k + "_ms"] for k in keys]
+            w(f"| {r['g']} | {r['n']} | {r['points']} | " + " | ".join(cells) + " |")
+        w("")
+
     curves = info.get("curves")
     if curves is not None:
         w("## Points along curves")
@@ -906,6 +954,10 @@ def main():
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2, help="ninja's parallel jobs (default: the cores)")
     ap.add_argument("--curves-repeat", type=int, default=5, help="curves_bench --repeat (best of)")
     ap.add_argument("--no-curves", action="store_true", help="skip curves_bench")
+    ap.add_argument("--no-near-circle", action="store_true", help="skip near_circle_bench")
+    ap.add_argument("--near-genera", type=int, nargs="+", default=[16, 64, 256], help="near_circle_bench --genus")
+    ap.add_argument("--near-n", type=int, nargs="+", default=[100, 100, 20],
+                    help="near_circle_bench --n, one a genus (the last for the rest)")
     ap.add_argument("--predicates-calls", type=int, default=50000, help="predicates_bench's calls per predicate")
     ap.add_argument("--no-predicates", action="store_true", help="skip predicates_bench")
     ap.add_argument("--no-cited", action="store_true",
@@ -978,6 +1030,11 @@ def main():
             "cgal": cgal, "cgal_text": cgal_text}
     if not args.no_curves and "curves_bench" not in failed_extra:
         info["curves"], why = run_curves(build_dir, args.curves_repeat, max(3 * args.budget, 60))
+        if why:
+            runner.notes.append(why)
+    if not args.no_near_circle and "near_circle_bench" not in failed_extra:
+        info["near_circle"], why = run_near_circle(build_dir, args.near_genera, args.near_n,
+                                                   max(20 * args.budget, 900))
         if why:
             runner.notes.append(why)
     if not args.no_predicates and "predicates_bench" not in failed_extra:

@@ -450,8 +450,12 @@ HDT_API hdt_status hdt_svg(const hdt_triangulation *t, double size, const char *
    triangulation is not changed. HDT_EINVAL for t or size NULL, bytes NULL
    with capacity > 0. HDT_ENOTSUP, as a safety net never met, when a
    translation word is longer than the format holds (32g + 64 letters; the
-   longest met: 28 at genus 2, 46 at genus 5). Time and size are linear:
-   25 bytes a vertex id and 48 a face, about 121 bytes a vertex. */
+   longest met: 28 at genus 2, 46 at genus 5, 189 at genus 64 with points
+   1e-15 from the circle), or when its element lies too far from O for
+   hdt_load to certify its word (docs/format.md, check 5: far beyond the
+   translation of any point of the disk). Time and size are linear:
+   25 bytes a vertex id and 48 a face, about 121 bytes a vertex; each
+   translation word beyond N is checked once, a product a letter. */
 HDT_API hdt_status hdt_save(const hdt_triangulation *t, void *bytes, size_t capacity, size_t *size) HDT_NOEXCEPT;
 
 /* A new triangulation from the size bytes hdt_save wrote (*out receives it;
@@ -460,13 +464,20 @@ HDT_API hdt_status hdt_save(const hdt_triangulation *t, void *bytes, size_t capa
    are truncated, corrupted or crafted give HDT_EINVAL, with
    hdt_last_error_message naming the byte offset at fault ("byte 136:
    vertex 3 is not a point of the open unit disk"), and never a triangulation
-   that breaks an invariant. Memory is bounded by a small multiple of size
-   (every count is checked against size before anything is allocated).
-   *out is not written on failure. HDT_EINVAL also for out NULL or bytes
-   NULL with size > 0; HDT_ENOMEM when memory runs out. Time: linear in
-   size, dominated by the validation (hdt_validate's exact predicates on
-   every edge), of the order of hdt_insert_many of the same points
-   (measured ratio: docs/benchmarks.md, docs/format.md). */
+   that breaks an invariant. Memory: a small multiple of size (every count
+   is checked against size before anything is allocated) plus the surface
+   of the file's genus, which a file that passes the checks needing no
+   surface gets built whatever its size (its exact sites, generators and
+   tables; measured peaks per genus: docs/format.md). Time: linear in
+   size with constants set by the genus, whatever the bytes: each
+   translation word is checked to be canonical with one product a letter at
+   a fixed precision (at most 160 digits), never canonicalised; a word
+   whose element lies too far from O for that (far beyond any point's
+   translation, docs/format.md) is refused. The validation (hdt_validate's
+   exact predicates on every edge) dominates: of the order of
+   hdt_insert_many of the same points (measured ratio: docs/benchmarks.md,
+   docs/format.md). *out is not written on failure. HDT_EINVAL also for out
+   NULL or bytes NULL with size > 0; HDT_ENOMEM when memory runs out. */
 HDT_API hdt_status hdt_load(hdt_triangulation **out, const void *bytes, size_t size) HDT_NOEXCEPT;
 
 /* ---- Adjacency, edges, corner points and the Voronoi diagram ----

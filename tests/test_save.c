@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "crafted_words.h"
 #include "hdt_test.h"
 
 #define SENTINEL ((hdt_triangulation *)(uintptr_t)0x5a5a5a5a)
@@ -449,6 +450,85 @@ START_TEST(messages_name_the_byte) {
 }
 END_TEST
 
+/* Extra translation words in a crafted file (ids no face uses, the
+   checksum rewritten): new canonical words load, and save back to the same
+   bytes; a word that is not canonical, a repeat, an element of N, and a
+   canonical word whose element lies far beyond any point's translation
+   (the format's limit, docs/format.md) are refused at the word's byte. */
+static void expect_words_refused(bytes_t b, const crafted_words_t *w, const char *expected, const char *what) {
+  bytes_t c;
+  c.b = crafted_file(b.b, b.n, w, &c.n);
+  const char *m = refusal(c);
+  char at[32];
+  snprintf(at, sizeof at, "byte %zu:", vertices_at(b));
+  expect(strstr(m, expected) && strstr(m, at), "%s: the message is \"%s\", expected \"%s\" at \"%s\"", what, m,
+         expected, at);
+  free(c.b);
+}
+
+START_TEST(crafted_words_are_checked) {
+  bytes_t b = small_file();
+  const uint32_t W = get32(b.b + 16);
+  /* 300 new canonical words of 9 to 20 letters, and g_0^n up to the format's 128 letters. */
+  crafted_words_t w = {0};
+  ck_assert(crafted_canonical_words(2, 300, 24, 128, 5, &w));
+  crafted_power(2, 128, &w);
+  crafted_power(2, 100, &w);
+  bytes_t c;
+  c.b = crafted_file(b.b, b.n, &w, &c.n);
+  hdt_triangulation *t = load(c);
+  bytes_t again = save(t);
+  expect(again.n == c.n && memcmp(again.b, c.b, c.n) == 0, "the crafted file does not save back to its bytes");
+  expect(hdt_validate(t) == HDT_OK, "%s", hdt_last_error_message());
+  hdt_destroy(t);
+  free(again.b);
+  free(c.b);
+  crafted_words_free(&w);
+
+  /* Not canonical: a freely reduced word that hdt_word_reduce changes. */
+  uint64_t rng = 3;
+  int32_t x[8], y[8];
+  size_t n = 0;
+  do {
+    for (int i = 0; i < 8; ++i) do x[i] = rng_below(&rng, 8);
+      while (i > 0 && x[i] == inv_letter(2, x[i - 1]));
+    ck_assert_int_eq(hdt_word_reduce(2, x, 8, y, 8, &n), HDT_OK);
+  } while (n == 8 && memcmp(x, y, sizeof x) == 0);
+  crafted_words_add(&w, x, 8);
+  expect_words_refused(b, &w, "is not the canonical word", "a word not canonical");
+  crafted_words_free(&w);
+  /* Not reduced. */
+  const int32_t back[] = {0, 1, 5, 0};
+  crafted_words_add(&w, back, 4);
+  expect_words_refused(b, &w, "is not the canonical word", "a word not reduced");
+  crafted_words_free(&w);
+  /* A repeat, after a new word; an element of N (id 7 of genus 2). */
+  crafted_power(2, 5, &w);
+  crafted_power(2, 5, &w);
+  {
+    bytes_t d;
+    d.b = crafted_file(b.b, b.n, &w, &d.n);
+    const char *m = refusal(d);
+    expect(strstr(m, "word") && strstr(m, "is not the canonical word of a new element"), "a repeat: %s", m);
+    free(d.b);
+  }
+  crafted_words_free(&w);
+  int32_t neighbour[8];
+  ck_assert_int_eq(hdt_neighbour_word(2, 7, neighbour, 8, &n), HDT_OK);
+  crafted_words_add(&w, neighbour, n);
+  expect_words_refused(b, &w, "is not the canonical word", "an element of N");
+  crafted_words_free(&w);
+  /* Far: canonical words of 128 letters from random ones (their points go
+     hundreds of translation lengths out; a point of the disk stays within
+     cosh d = 2^54 of O). The first is refused, at its byte. */
+  ck_assert(crafted_canonical_words(2, 3, 160, 128, 9, &w));
+  expect_words_refused(b, &w, "lies too far from O", "a far element");
+  crafted_words_free(&w);
+  (void)W;
+  free(b.b);
+}
+END_TEST
+
 /* A header that claims 2^32 - 1 faces in a 1000-byte file: refused with
    the address space capped far below what the claim would take. */
 START_TEST(huge_counts_allocate_nothing) {
@@ -520,6 +600,6 @@ END_TEST
 int main(void) {
   const TTest *const tests[] = {round_trips,   two_call_pattern,       truncated_and_flipped, crafted_bytes,
                                 messages_name_the_byte, flipped_edges_are_refused, huge_counts_allocate_nothing,
-                                load_cost};
+                                crafted_words_are_checked, load_cost};
   return run_tests("save", tests, sizeof tests / sizeof tests[0]);
 }

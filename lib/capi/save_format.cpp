@@ -30,6 +30,7 @@
 #endif
 
 #include "capi/guard.hpp"
+#include "group/canonical.hpp"
 
 namespace hdt::capi {
 
@@ -204,6 +205,12 @@ std::size_t saved_size(const Triangulation &t) {
       throw ApiError(HDT_ENOTSUP, "translation id " + std::to_string(id) + " has a word of " + std::to_string(letters) +
                                       " letters, more than the format holds (" +
                                       std::to_string(triangulation::max_saved_word_length(t.genus())) + ")");
+    // Nor a word whose check the loader leaves open (group::check_canonical:
+    // its element far beyond every element a point of the disk gives).
+    if (group::check_canonical(T.presentation(), T.word(group::TranslationId(id)).data(), letters) !=
+        group::CanonicalCheck::kCanonical)
+      throw ApiError(HDT_ENOTSUP, "translation id " + std::to_string(id) +
+                                      "'s element lies too far from O for the format to certify its word");
     n += 2 + 2 * letters;
   }
   return n + kVertexBytes * t.vertices().size() + kFaceBytes * t.faces().size();

@@ -16,7 +16,8 @@ void write_saved(const triangulation::Triangulation &t, unsigned char *out);
 // The triangulation saved in bytes[0 .. size): every field checked, then
 // the whole validated (Triangulation::restore). Throws ApiError(HDT_EINVAL)
 // with a message that names the byte offset at fault; bad_alloc when
-// memory runs out (allocations are bounded by a small multiple of size).
+// memory runs out (allocations: a small multiple of size, plus the genus's
+// surface, built for any file that passes the checks needing none).
 triangulation::Triangulation read_saved(const unsigned char *bytes, std::size_t size);
 
 }  // namespace hdt::capi

@@ -422,6 +422,8 @@ class TrackedPoint {
 
   // P rounded to a DoublePoint whose bound also holds the tracked error.
   DoublePoint rounded() const { return rounded_point(P_, error_ * (1 + 0x1p-40)); }
+  const HyperboloidPoint<T> &point() const { return P_; }
+  double error() const { return error_; }
 
  private:
   static double to_double(const T &x) { return x.template convert_to<double>(); }
@@ -657,7 +659,62 @@ bool peel_beyond_ladder(const Presentation &p, const DoubleGenerators &d, const 
   }
 }
 
+// check_canonical's passes. Each is given the word from the right and
+// answers whether every letter is the least separating letter of its
+// suffix's point; kOpen when its precision leaves a test open.
+CanonicalCheck check_in_double(const DoubleGenerators &d, const Letter *w, std::size_t length) {
+  DoublePoint x;
+  for (std::size_t i = length; i-- > 0;) {
+    x = apply(d.lorentz[std::size_t(w[i])], x);
+    const Letter k = least_separating_letter(d, x, [](Letter) { return 0; });
+    if (k == kUndecided) return CanonicalCheck::kOpen;
+    if (k != w[i]) return CanonicalCheck::kNotCanonical;
+  }
+  return CanonicalCheck::kCanonical;
+}
+
+template <class T>
+CanonicalCheck check_tracked(const Presentation &p, const DoubleGenerators &d, const Letter *w, std::size_t length) {
+  const GeneratorSet<T> &gens = shared_generators<T>(p);
+  TrackedPoint<T> P(d.lorentz[0].m[0][0] * (1 + 0x1p-40));
+  // A test the rounded point leaves open (P near a side line, seen from
+  // far) is evaluated in T: side = <P~, n~> for n~ = O - g_k(O) from T's
+  // matrix, off the true one by at most |P~ - P| |n|, the matrix entries'
+  // 2^10 units (as step() allows) and the sum's few roundings, each a unit
+  // of |P~| |n|; n from the double matrix, within an ulp, with slack.
+  auto decide = [&](Letter k) {
+    const auto &m = gens.lorentz(k).m;
+    const HyperboloidPoint<T> &x = P.point();
+    const T side = x.t * (T(1) - m[0][0]) + x.u * m[1][0] + x.v * m[2][0];
+    const double n = std::abs(d.lorentz[std::size_t(k)].m[0][0] - 1) + std::abs(d.lorentz[std::size_t(k)].m[1][0]) +
+                     std::abs(d.lorentz[std::size_t(k)].m[2][0]);
+    const double size = std::abs(x.t.template convert_to<double>()) + std::abs(x.u.template convert_to<double>()) +
+                        std::abs(x.v.template convert_to<double>());
+    const double unit = std::ldexp(1.0, -int(mpfr_get_prec(side.backend().data())));
+    const double error = (P.error() + (0x1p10 + 16) * unit * size) * n * (1 + 0x1p-20) + 0x1p-1000;
+    using std::abs;
+    if (abs(side) <= T(error)) return 0;
+    return side > 0 ? 1 : -1;
+  };
+  for (std::size_t i = length; i-- > 0;) {
+    if (!P.step(gens.lorentz(w[i]))) return CanonicalCheck::kOpen;
+    const Letter k = least_separating_letter(d, P.rounded(), decide);
+    if (k == kUndecided) return CanonicalCheck::kOpen;
+    if (k != w[i]) return CanonicalCheck::kNotCanonical;
+  }
+  return CanonicalCheck::kCanonical;
+}
+
 }  // namespace
+
+CanonicalCheck check_canonical(const Presentation &p, const Letter *w, std::size_t length) {
+  const DoubleGenerators d = double_generators(p);
+  CanonicalCheck c = check_in_double(d, w, length);
+  if (c != CanonicalCheck::kOpen) return c;
+  c = check_tracked<exact::mp_real<kPeelDigits10[0]>>(p, d, w, length);
+  if (c != CanonicalCheck::kOpen) return c;
+  return check_tracked<exact::mp_real<kPeelDigits10[2]>>(p, d, w, length);
+}
 
 namespace {
 

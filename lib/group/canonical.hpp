@@ -33,6 +33,21 @@ Word canonical_word(const Presentation &p, const Letter *w, std::size_t length,
                     std::size_t max_runtime_length = std::size_t(-1));
 inline Word canonical_word(const Presentation &p, const Word &w) { return canonical_word(p, w.data(), w.size()); }
 
+// Whether a word is the canonical word of its element, decided without
+// computing that word: w is canonical exactly when, for every suffix
+// h_i = w_i w_{i+1} ... of it, w_i is the least letter whose side line
+// separates O from h_i(O) (the greedy choice canonical_word makes). The
+// suffixes' points are built from the right, one product a letter, in
+// double precision, then if a test is left open at 40 and at 160 digits
+// with the tracked error bound; it stops at the first letter that is not
+// the least. So the cost is linear in the length at a fixed precision: a
+// word that would need more (its points farther from O than that precision
+// certifies, cosh d around 2^150; a double point of the disk is within
+// cosh d = 2^54 of O) is left open, never computed at length. Letters must be
+// valid (Presentation::check_word).
+enum class CanonicalCheck { kCanonical, kNotCanonical, kOpen };
+CanonicalCheck check_canonical(const Presentation &p, const Letter *w, std::size_t length);
+
 // The walk of a point of the disk into F_g, with a point tracked at 40
 // digits and an error bound: letters k_1, k_2, ... (appended) such that
 // g_{k_1}^-1, then g_{k_2}^-1, ... take x + iy across the side line each
