@@ -11,18 +11,13 @@ extern "C" {
 #include <check.h>
 }
 
+#include "random.hpp"
 #include "run_suite.hpp"
 
 using namespace hdt;
 
 namespace {
 
-uint64_t next(uint64_t *s) {
-  uint64_t z = (*s += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
 
 // The check's answer where it must decide (words near O: never open).
 void agrees(const group::Presentation &p, const group::Word &w, int *canonical, int *not_canonical) {
@@ -42,13 +37,13 @@ START_TEST(check_agrees_with_canonical_word) {
     uint64_t rng = 1000 + uint64_t(g);
     int canonical = 0, not_canonical = 0;
     for (int i = 0; i < 300; ++i) {
-      group::Word w(next(&rng) % 41);
-      for (group::Letter &l : w) l = group::Letter(next(&rng) % uint64_t(p.letter_count()));
+      group::Word w(splitmix(&rng) % 41);
+      for (group::Letter &l : w) l = group::Letter(splitmix(&rng) % uint64_t(p.letter_count()));
       agrees(p, w, &canonical, &not_canonical);
       group::Word c = group::canonical_word(p, w);
       agrees(p, c, &canonical, &not_canonical);
       if (!c.empty()) {
-        c[next(&rng) % c.size()] = group::Letter(next(&rng) % uint64_t(p.letter_count()));
+        c[splitmix(&rng) % c.size()] = group::Letter(splitmix(&rng) % uint64_t(p.letter_count()));
         agrees(p, c, &canonical, &not_canonical);
       }
     }

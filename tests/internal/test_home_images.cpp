@@ -16,6 +16,7 @@ extern "C" {
 #include <check.h>
 }
 
+#include "random.hpp"
 #include "run_suite.hpp"
 
 using namespace hdt;
@@ -23,13 +24,6 @@ using Reference = exact::mp_real<2560>;
 
 namespace {
 
-uint64_t next(uint64_t *s) {
-  uint64_t z = (*s += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-double uniform(uint64_t *s) { return double(next(s) >> 11) * 0x1p-53; }
 
 // Points with 1 - |z| in [gap, 2 gap] at random angles, their homes found by
 // the exact representative walk, each checked.
@@ -39,7 +33,7 @@ void check_genus(int g, double gap, int count) {
   uint64_t rng = 77 + uint64_t(g);
   int far = 0;
   for (int i = 0; i < count; ++i) {
-    const double r = 1 - gap * (1 + uniform(&rng)), a = 2 * M_PI * uniform(&rng);
+    const double r = 1 - gap * (1 + uniform01(&rng)), a = 2 * M_PI * uniform01(&rng);
     const double x = r * std::cos(a), y = r * std::sin(a);
     const group::TranslationId home = predicates::representative(K, x, y).translation;
     if (home == 0) continue;
