@@ -18,7 +18,6 @@ using namespace hdt;
 
 namespace {
 
-
 // The check's answer where it must decide (words near O: never open).
 void agrees(const group::Presentation &p, const group::Word &w, int *canonical, int *not_canonical) {
   const bool is = group::canonical_word(p, w) == w;

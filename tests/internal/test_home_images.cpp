@@ -24,7 +24,6 @@ using Reference = exact::mp_real<2560>;
 
 namespace {
 
-
 // Points with 1 - |z| in [gap, 2 gap] at random angles, their homes found by
 // the exact representative walk, each checked.
 void check_genus(int g, double gap, int count) {
