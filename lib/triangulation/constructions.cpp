@@ -353,17 +353,6 @@ Point face_corner(const Triangulation &tri, const Face &f, int i) {
 
 FaceFrame face_frame(const Triangulation &tri, const Face &f, const Point p[3]) { return frame_of(tri, f, p); }
 
-bool try_circumcircle(const Point &p0, const Point &p1, const Point &p2, bool rounded, Circle *circle) {
-  FaceFrame frame{{p0, p1, p2},
-                  {{p2.re - p1.re, p2.im - p1.im}, {p0.re - p2.re, p0.im - p2.im}, {p1.re - p0.re, p1.im - p0.im}},
-                  rounded};
-  Point c;
-  double r;
-  if (!centre_of(frame, &c, &r)) return false;
-  *circle = {c, r};
-  return true;
-}
-
 Circle circumcircle(const Triangulation &tri, const Face &f, const Point p[3]) {
   Circle c;
   c.centre = face_centre(tri, f, p, &c.radius);
@@ -382,10 +371,6 @@ Circle coarse_circumcircle(const Triangulation &tri, const Face &f, const Point 
   if (centre_of_corners(p, rounded_corners(tri, f), &c.centre, &c.radius)) return c;
   c.centre = precise_centre(tri, f, &c.radius);
   return c;
-}
-
-Point circumcentre(const Triangulation &tri, const Face &f, const Point p[3], double *radius) {
-  return face_centre(tri, f, p, radius);
 }
 
 double distance(const Point &p, const Point &q) {

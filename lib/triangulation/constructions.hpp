@@ -43,19 +43,12 @@ struct Circle {
   Point centre;
   double radius;  // hyperbolic
 };
-// The hyperbolic circle through three points of the disk, in double, or
-// false when double cannot resolve it (the conditions are in the .cpp);
-// rounded: some point is not exact (a translated or algebraic corner).
-bool try_circumcircle(const Point &p0, const Point &p1, const Point &p2, bool rounded, Circle *circle);
-
 // Face f's circumcircle, p its corners (face_corner): in double from its
 // frame, or in multiprecision from the exact data for the rare faces
 // double cannot resolve (precise_circumcircle.hpp). Every face has one. The
-// quality measures and the dual outputs all use it (circumcentre() without
-// the radius's logarithm when none is asked), so their centres agree to
-// the bit.
+// quality measures and the dual outputs all use it, so their centres agree
+// to the bit.
 Circle circumcircle(const Triangulation &tri, const Face &f, const Point p[3]);
-Point circumcentre(const Triangulation &tri, const Face &f, const Point p[3], double *radius);
 
 // The same circle from the corners as they are, without the frame: as
 // accurate as the corners (docs/refinement.md's error analysis), not
@@ -97,9 +90,8 @@ class CentreCache {
   // Whether reserve() has made room for every face (a caller that does
   // without the cache rather than allocate it).
   bool ready(const Triangulation &tri) const { return keys_.size() >= tri.faces().size(); }
-  // The circumcentre of face f's canonical copy (the same bits as
-  // circumcentre() of its corners), and its radius when radius is not null
-  // (the same bits as circumcircle()'s).
+  // The circumcentre of face f's canonical copy and its radius when radius
+  // is not null (the same bits as circumcircle()'s of its corners).
   // reserve() first; the face's corner matrices may be computed (as
   // face_corner does).
   Point centre(const Triangulation &tri, uint32_t f, double *radius = nullptr) {
