@@ -55,7 +55,9 @@ static inline void bench_points_in_polygon(int g, size_t n, uint64_t seed, doubl
   const double cosh_R = A * A, cosh_l = 2 * A * A - 1, sinh_l = sqrt(cosh_l * cosh_l - 1);
   /* The sides' directions, once: 4g sines and cosines per sample made the
      points cost more than their triangulation from genus 32 on. */
-  double *cos_th = malloc(4 * (size_t)g * sizeof *cos_th), *sin_th = malloc(4 * (size_t)g * sizeof *sin_th);
+  /* Cast for the C++ programs that include this header too. */
+  double *cos_th = (double *)malloc(4 * (size_t)g * sizeof *cos_th);
+  double *sin_th = (double *)malloc(4 * (size_t)g * sizeof *sin_th);
   if (!cos_th || !sin_th) abort();
   for (int k = 0; k < 4 * g; ++k) {
     const double th = k * M_PI / (2.0 * g);

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <iterator>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include "exact/multiprecision.hpp"
@@ -62,7 +64,7 @@ T scale2(const T &x, int e) {
 
 Field::Field(int genus) : genus_(genus), base_(8 * genus), sigma_squared_(base_.cos_2pi(2)) {
   if (genus < 2) throw std::invalid_argument("Field: genus must be at least 2");
-  evaluators_.resize(7);
+  evaluators_.resize(1 + std::size(kRungDigits10));
 }
 
 FieldElement Field::add(const FieldElement &a, const FieldElement &b) const {
@@ -97,12 +99,14 @@ bool Field::norm_vanishes(const FieldElement &a) const {
 
 template <class T>
 const Field::Evaluator<T> &Field::evaluator() const {
-  constexpr int slot = std::is_same_v<T, double> ? 0 : std::numeric_limits<T>::digits10 <= 40 ? 1
-                                                     : std::numeric_limits<T>::digits10 <= 160 ? 2
-                                                     : std::numeric_limits<T>::digits10 <= 640 ? 3
-                                                     : std::numeric_limits<T>::digits10 <= 2560 ? 4
-                                                     : std::numeric_limits<T>::digits10 <= 10240 ? 5
-                                                                                                 : 6;
+  // Slot 0 for double, then one per rung of the table.
+  constexpr std::size_t slot = [] {
+    if constexpr (std::is_same_v<T, double>)
+      return std::size_t(0);
+    else
+      return 1 + rung_index(RungOf<T>::digits10);
+  }();
+  static_assert(slot <= std::size(kRungDigits10), "an evaluator of double or of a rung");
   std::lock_guard<std::mutex> lock(mutex_);
   if (!evaluators_[slot]) evaluators_[slot] = std::make_shared<Evaluator<T>>(base_, genus_);
   return *static_cast<const Evaluator<T> *>(evaluators_[slot].get());
@@ -135,53 +139,45 @@ void Field::evaluate(const FieldElement &a, T *value_out, T *bound_out, int *exp
 }
 
 template <class T>
-int Field::sign_at(const FieldElement &a) const {
+Sign Field::sign_at(const FieldElement &a) const {
   T value, bound;
   int e;
   evaluate(a, &value, &bound, &e);
   if constexpr (std::is_same_v<T, double>)
-    if (!std::isfinite(value) || !std::isfinite(bound)) return 2;
-  if (value > bound) return 1;
-  if (value < -bound) return -1;
-  return 2;
+    if (!std::isfinite(value) || !std::isfinite(bound)) return Sign::undecided;
+  if (value > bound) return Sign::positive;
+  if (value < -bound) return Sign::negative;
+  return Sign::undecided;
 }
 
-int Field::sign(const Cyclotomic &a) const { return sign(FieldElement{a, {}}); }
+Sign Field::sign(const Cyclotomic &a) const { return sign(FieldElement{a, {}}); }
 
-int Field::sign(const FieldElement &a) const {
-  if (a.u.is_zero() && a.v.is_zero()) return 0;
+Sign Field::sign(const FieldElement &a) const {
+  if (a.u.is_zero() && a.v.is_zero()) return Sign::zero;
   if (!a.u.is_zero() && !a.v.is_zero()) {
     // u + v sigma = 0 with v != 0 would put sigma in Q(zeta); then
     // u^2 = v^2 sigma^2 and the value is 0 or 2u.
     if (norm_vanishes(a)) {
-      const int su = sign(a.u), sv = sign(a.v);
-      return su == sv ? su : 0;
+      const Sign su = sign(a.u), sv = sign(a.v);
+      return su == sv ? su : Sign::zero;
     }
   }
   // Non-zero: rising precision terminates.
-  int s = sign_at<double>(a);
-  if (s != 2) return s;
-  s = sign_at<mp_real<40>>(a);
-  if (s != 2) return s;
-  s = sign_at<mp_real<160>>(a);
-  if (s != 2) return s;
-  s = sign_at<mp_real<640>>(a);
-  if (s != 2) return s;
-  s = sign_at<mp_real<2560>>(a);
-  if (s != 2) return s;
-  s = sign_at<mp_real<10240>>(a);
-  if (s != 2) return s;
-  s = sign_at<mp_real<40960>>(a);
-  if (s != 2) return s;
-  // Past the compile-time rungs: doubling precision, up to the precision
-  // that the norm bound proves sufficient (sufficient_bits), where a
-  // non-zero value is always decided.
-  const long enough = sufficient_bits(a);
-  for (long bits = 2 * long(bits_of_digits10(40960));; bits *= 2) {
-    s = sign_at_bits(a, std::min(bits, enough));
-    if (s != 2) return s;
-    if (bits >= enough) throw std::logic_error("Field::sign: the norm bound's precision did not decide (a bug)");
-  }
+  if (const Sign s = sign_at<double>(a); decided(s)) return s;
+  // Past the compile-time rungs, the run-time ones up to the precision that
+  // the norm bound proves sufficient (sufficient_bits), where a non-zero
+  // value is always decided.
+  const auto if_decided = [](Sign s) { return decided(s) ? std::optional<Sign>(s) : std::nullopt; };
+  long enough = 0;
+  return *FieldLadder::climb(
+      0, [&](auto zero) { return if_decided(sign_at<decltype(zero)>(a)); },
+      [&](long bits) {
+        if (enough == 0) enough = sufficient_bits(a);
+        const std::optional<Sign> s = if_decided(sign_at_bits(a, std::min(bits, enough)));
+        if (!s && bits >= enough)
+          throw std::logic_error("Field::sign: the norm bound's precision did not decide (a bug)");
+        return s;
+      });
 }
 
 namespace {
@@ -224,7 +220,7 @@ long Field::sufficient_bits(const FieldElement &a) const {
   return long(std::ceil((D - 1) * (0.5 + L) + L + std::log2(d + 64) + 4));
 }
 
-int Field::sign_at_bits(const FieldElement &a, long bits) const {
+Sign Field::sign_at_bits(const FieldElement &a, long bits) const {
   // evaluate<T> with T of `bits` bits, operation for operation, so that its
   // error bound holds with the unit 2^-bits.
   const int e = std::min(a.u.is_zero() ? a.v.exponent() : a.u.exponent(),
@@ -270,10 +266,10 @@ int Field::sign_at_bits(const FieldElement &a, long bits) const {
   // bound = magnitude (d + 64) 2^-bits
   mpfr_mul_ui(magnitude.x, magnitude.x, (unsigned long)(base_.degree() + 64), MPFR_RNDU);
   mpfr_mul_2si(magnitude.x, magnitude.x, -bits, MPFR_RNDU);
-  if (mpfr_cmp(value.x, magnitude.x) > 0) return 1;
+  if (mpfr_cmp(value.x, magnitude.x) > 0) return Sign::positive;
   mpfr_neg(magnitude.x, magnitude.x, MPFR_RNDN);
-  if (mpfr_cmp(value.x, magnitude.x) < 0) return -1;
-  return 2;
+  if (mpfr_cmp(value.x, magnitude.x) < 0) return Sign::negative;
+  return Sign::undecided;
 }
 
 void Field::evaluate_133(const FieldElement &a, mp_real<40> *value, mp_real<40> *bound) const {

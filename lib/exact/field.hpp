@@ -5,12 +5,12 @@
 // depends on), the points of Q0, and every translated image of a point given
 // as doubles. An element is u + v sigma with u, v in Q(zeta_{8g}); it is zero
 // exactly when u = v = 0 unless sigma itself lies in Q(zeta), a case
-// sign() handles too. The sign of a real element is found by MPFR evaluation
-// at rising precision with a rigorous error bound: compile-time rungs up to
-// 136063 bits, then doubling run-time precision up to one that a lower
-// bound on |a| from its norm proves sufficient, so every sign is decided,
-// with no cap. Points placed far from O at genus 256 once needed more than
-// the former top of 8503 bits.
+// sign() handles too. The sign of a real element is found by evaluation at
+// rising precision with a rigorous error bound: double, then the rungs of
+// FieldLadder (precision_ladder.hpp) up to 136063 bits, then its run-time
+// rungs up to one that a lower bound on |a| from its norm proves
+// sufficient, so every sign is decided, with no cap. Points placed far from
+// O at genus 256 once needed more than the former top of 8503 bits.
 #pragma once
 
 #include <memory>
@@ -19,8 +19,14 @@
 
 #include "exact/cyclotomic.hpp"
 #include "exact/multiprecision.hpp"
+#include "exact/precision_ladder.hpp"
+#include "exact/sign.hpp"
 
 namespace hdt::exact {
+
+// The rungs of Field::sign after double: each about four times the last in
+// digits, so a hard sign costs a few evaluations, the last dominating.
+using FieldLadder = Ladder<40, 160, 640, 2560, 10240, 40960>;
 
 struct FieldElement {
   Cyclotomic u, v;  // u + v sigma
@@ -47,10 +53,10 @@ class Field {
   FieldElement mul(const FieldElement &a, const Cyclotomic &b) const;
 
   bool is_zero(const FieldElement &a) const;
-  // Sign of a real element: -1, 0 or +1, exactly.
-  int sign(const FieldElement &a) const;
+  // Sign of a real element, exactly (never undecided).
+  Sign sign(const FieldElement &a) const;
   // Sign of a real element of Q(zeta).
-  int sign(const Cyclotomic &a) const;
+  Sign sign(const Cyclotomic &a) const;
   // The real element a in about 133 bits (*value) and a bound on that
   // value's error (*bound; 0 for a zero element), certified as sign()'s
   // evaluation: for computations that would rather not form exact products.
@@ -70,11 +76,11 @@ class Field {
   // units of 2^*exponent.
   template <class T>
   void evaluate(const FieldElement &a, T *value, T *bound, int *exponent) const;
-  // Sign at one rung, or 2 when the rung cannot decide.
+  // Sign at one precision, undecided when it cannot tell.
   template <class T>
-  int sign_at(const FieldElement &a) const;
-  // The same at a precision chosen at run time (past the rungs).
-  int sign_at_bits(const FieldElement &a, long bits) const;
+  Sign sign_at(const FieldElement &a) const;
+  // The same at a precision chosen at run time (FieldLadder's run-time rungs).
+  Sign sign_at_bits(const FieldElement &a, long bits) const;
   // A precision at which sign_at_bits decides every non-zero a, from a
   // lower bound on |a| by its norm (field.cpp has the argument).
   long sufficient_bits(const FieldElement &a) const;

@@ -41,41 +41,24 @@ namespace {
 // ---------------------------------------------------------------------------
 // Precision
 
-// Bits needed to decide every separation test on a word of m letters: the
-// amplified rounding error (word_precision_bits) must stay far below the
-// margin 2(A^2 - 1) >= 2.
-double bits_needed(const Presentation &p, std::size_t m) { return 64.0 + word_precision_bits(p, m); }
+// The bits needed to decide every separation test on a word of m letters
+// are word_certified_bits(m): the amplified rounding error
+// (word_precision_bits) must stay far below the margin 2(A^2 - 1) >= 2.
 
-// The rungs for peeling: those of the precision ladder with one more between
-// each two. The bits a word needs grow steadily with its length, and the
-// cost of a multiplication about quadratically with the bits, so a fine
-// ladder wastes less. The top rung is the ladder's (canonical_ladder_length).
-constexpr unsigned kPeelDigits10[] = {40, 80, 160, 320, 640, 1280, 2560};
-constexpr std::size_t kRungs = std::size(kPeelDigits10);
-static_assert(kPeelDigits10[kRungs - 1] == exact::kLadderDigits10[std::size(exact::kLadderDigits10) - 1]);
+// The rungs for peeling: one between each two of the accurate products'
+// rungs (word_matrix.cpp). The bits a word needs grow steadily with its
+// length, and the cost of a multiplication about quadratically with the
+// bits, so a fine ladder wastes less. Past its top (canonical_ladder_length)
+// come its run-time rungs.
+using PeelLadder = exact::Ladder<40, 80, 160, 320, 640, 1280, 2560>;
+constexpr std::size_t kRungs = PeelLadder::kSize;
 
 // Relative cost of a matrix-vector product on each rung (MPFR, measured on
 // x86-64: 0.5 us at 40 digits, 31 us at 2560).
 constexpr double kRungCost[kRungs] = {1, 1.4, 1.9, 3, 7.3, 22, 58};
 
-double rung_bits(std::size_t rung) { return exact::bits_of_digits10(kPeelDigits10[rung]); }
-
-// Runs f(mp_real<D>()) on the given rung.
-template <class F>
-auto with_rung(std::size_t rung, F &&f) {
-  switch (rung) {
-    case 0: return f(exact::mp_real<kPeelDigits10[0]>());
-    case 1: return f(exact::mp_real<kPeelDigits10[1]>());
-    case 2: return f(exact::mp_real<kPeelDigits10[2]>());
-    case 3: return f(exact::mp_real<kPeelDigits10[3]>());
-    case 4: return f(exact::mp_real<kPeelDigits10[4]>());
-    case 5: return f(exact::mp_real<kPeelDigits10[5]>());
-    default: return f(exact::mp_real<kPeelDigits10[6]>());
-  }
-}
-
 // The longest product, in letters, that `bits` of precision certify: n
-// with bits_needed(n) <= bits. Peeling j letters off a word of m letters
+// with word_certified_bits(n) <= bits. Peeling j letters off a word of m letters
 // needs m + j <= n. Why: each peeling step multiplies the error carried so
 // far by at most |g^{-1}| <= 6A^2 (the bound word_precision_bits uses for a
 // product factor) and adds its own rounding, no larger than a product
@@ -84,14 +67,16 @@ auto with_rung(std::size_t rung, F &&f) {
 // 2^-64 in each coordinate on the rung, far below the margin.
 std::size_t capacity_at_bits(const Presentation &p, double bits) {
   const double per_letter = word_precision_bits(p, 1) - 2.0 * std::log2(3.0);
-  // bits_needed(n) = 64 + per_letter n + 2 log2(n + 2): start above the
-  // answer (the logarithm left out) and step down.
+  // word_certified_bits(n) = 64 + per_letter n + 2 log2(n + 2): start above
+  // the answer (the logarithm left out) and step down.
   double n = std::floor((bits - 64.0) / per_letter);
-  while (n > 0 && bits_needed(p, std::size_t(n)) > bits) n -= 1;
+  while (n > 0 && word_certified_bits(p, std::size_t(n)) > bits) n -= 1;
   return n > 0 ? std::size_t(n) : 0;
 }
 
-std::size_t segment_capacity(const Presentation &p, std::size_t rung) { return capacity_at_bits(p, rung_bits(rung)); }
+std::size_t segment_capacity(const Presentation &p, std::size_t rung) {
+  return capacity_at_bits(p, double(PeelLadder::bits(rung)));
+}
 
 struct Segment {
   std::size_t rung = 0;
@@ -476,20 +461,12 @@ bool peel_tracked(const Presentation &p, const DoubleGenerators &d, const Word &
 //
 // A Dehn-reduced word longer than the top rung's capacity (412 letters at
 // genus 256: the words of points within 10^-15 of the circle reach 490) is
-// peeled in one segment on a precision chosen from the same bound as the
-// rungs, bits_needed(2m) for a word of m letters: every letter off it (the
-// canonical word is no longer than m) at the error of a product of 2m
-// letters, 2^-64 in each coordinate. The values are raw mpfr_t of that
-// precision (never a default precision); the precisions are a ladder of
-// their own, the top rung times 2^(k/2), so that their generators are built
-// once per genus and rung.
-
-// Run-time rung k >= 1: the ladder's top bits times 2^(k/2), rounded up to
-// a multiple of 64.
-mpfr_prec_t runtime_rung_bits(int k) {
-  const double bits = std::ceil(double(exact::ladder_top_bits()) * std::exp2(0.5 * k) / 64.0) * 64.0;
-  return mpfr_prec_t(bits);
-}
+// peeled in one segment on the least of PeelLadder's run-time rungs that
+// the same bound as the rungs certifies, word_certified_bits(2m) for a word
+// of m letters: every letter off it (the canonical word is no longer than
+// m) at the error of a product of 2m letters, 2^-64 in each coordinate. The
+// values are raw mpfr_t of that precision (never a default precision); the
+// generators are built once per genus and rung.
 
 // n MPFR values of one precision, initialised and cleared together.
 class MpValues {
@@ -521,7 +498,8 @@ class MpValues {
 // above the precision (c_a as quarter_turn_cosines does) and rounded once:
 // within one ulp, as the rungs' entries are. A product rounds each row
 // three times, each rounding at most a unit of the row's absolute sum, as a
-// product on a rung does, so bits_needed bounds its error the same way.
+// product on a rung does, so word_certified_bits bounds its error the same
+// way.
 class RuntimeGenerators {
  public:
   RuntimeGenerators(const Presentation &p, mpfr_prec_t prec)
@@ -621,23 +599,20 @@ class RuntimeGenerators {
 // Built once per genus and run-time rung and never freed, as
 // shared_generators does (a few MB each at genus 1024, for the rare words
 // that need them).
-const RuntimeGenerators &runtime_generators(const Presentation &p, int rung) {
+const RuntimeGenerators &runtime_generators(const Presentation &p, long bits) {
   static std::mutex mutex;
-  static std::map<std::pair<int, int>, std::unique_ptr<const RuntimeGenerators>> cache;
+  static std::map<std::pair<int, long>, std::unique_ptr<const RuntimeGenerators>> cache;
   std::lock_guard<std::mutex> lock(mutex);
-  auto &slot = cache[{p.genus(), rung}];
-  if (!slot) slot = std::make_unique<const RuntimeGenerators>(p, runtime_rung_bits(rung));
+  auto &slot = cache[{p.genus(), bits}];
+  if (!slot) slot = std::make_unique<const RuntimeGenerators>(p, mpfr_prec_t(bits));
   return *slot;
 }
 
-// peel_segment for a word beyond the ladder: the whole word on the least
-// run-time rung that certifies 2m letters. True when P reached O.
-bool peel_beyond_ladder(const Presentation &p, const DoubleGenerators &d, const Word &w, Word &out,
+// peel_segment for a word beyond the ladder: the whole word on a run-time
+// rung of `bits` that certifies 2m letters. True when P reached O.
+bool peel_beyond_ladder(const Presentation &p, const DoubleGenerators &d, const Word &w, long bits, Word &out,
                         std::size_t bound) {
-  const double need = bits_needed(p, 2 * w.size());
-  int rung = 1;
-  while (double(runtime_rung_bits(rung)) < need) ++rung;
-  const RuntimeGenerators &gens = runtime_generators(p, rung);
+  const RuntimeGenerators &gens = runtime_generators(p, bits);
   const std::size_t budget = capacity_at_bits(p, double(gens.precision())) - w.size();
   MpValues P(3, gens.precision()), scratch(8, gens.precision());
   mpfr_ptr t = P[0], u = P[1], v = P[2];
@@ -711,9 +686,9 @@ CanonicalCheck check_canonical(const Presentation &p, const Letter *w, std::size
   const DoubleGenerators d = double_generators(p);
   CanonicalCheck c = check_in_double(d, w, length);
   if (c != CanonicalCheck::kOpen) return c;
-  c = check_tracked<exact::mp_real<kPeelDigits10[0]>>(p, d, w, length);
+  c = check_tracked<exact::mp_real<PeelLadder::kDigits10[0]>>(p, d, w, length);
   if (c != CanonicalCheck::kOpen) return c;
-  return check_tracked<exact::mp_real<kPeelDigits10[2]>>(p, d, w, length);
+  return check_tracked<exact::mp_real<PeelLadder::kDigits10[2]>>(p, d, w, length);
 }
 
 namespace {
@@ -757,15 +732,16 @@ bool walk_into_domain(const Presentation &p, double x, double y, Word &letters, 
   const DoubleGenerators d = double_generators(p);
   const double t0 = 2 / (1 - (x * x + y * y));
   const double need = 3 * std::log2(t0) + std::log2(d.lorentz[0].m[0][0]) + 64;
-  if (need <= rung_bits(1)) return walk_at<exact::mp_real<kPeelDigits10[1]>>(p, d, x, y, letters, max_steps);
-  return walk_at<exact::mp_real<kPeelDigits10[2]>>(p, d, x, y, letters, max_steps);
+  return PeelLadder::at(need <= double(PeelLadder::bits(1)) ? 1 : 2, [&](auto zero) {
+    return walk_at<decltype(zero)>(p, d, x, y, letters, max_steps);
+  });
 }
 
 std::size_t canonical_ladder_length(const Presentation &p) {
-  // bits_needed(m) = 64 + b m + 2 log2(m + 2) with b = word_precision_bits(p, 1) - 2 log2(3);
-  // bound the logarithm by that of the top and keep 2 letters of slack for
-  // the peeled words.
-  const double top = exact::ladder_top_bits();
+  // word_certified_bits(m) = 64 + b m + 2 log2(m + 2) with
+  // b = word_precision_bits(p, 1) - 2 log2(3); bound the logarithm by that
+  // of the top and keep 2 letters of slack for the peeled words.
+  const double top = double(PeelLadder::top_bits());
   const double per_letter = (word_precision_bits(p, 1) - 2.0 * std::log2(3.0));
   const double m = std::floor((top - 64.0 - 2.0 * std::log2(top + 2.0)) / per_letter) - 2.0;
   return m > 0 ? std::size_t(m) : 0;
@@ -792,20 +768,20 @@ Word canonical_word(const Presentation &p, const Letter *input, std::size_t leng
       // within cosh 2^53 of O, a few hundred bits, where the length asks for
       // tens of thousands (a word of 1908 letters at genus 1024: 8.1 s on a
       // run-time precision of 90,000 bits, 0.43 s for the whole call now).
-      if (peel_tracked<exact::mp_real<kPeelDigits10[0]>>(p, d, w, out, bound)) break;
+      using exact::mp_real;
+      if (peel_tracked<mp_real<PeelLadder::kDigits10[0]>>(p, d, w, out, bound)) break;
       const Segment s = plan_segment(p, w.size());
-      if ((s.steps == 0 || s.rung > 2) && peel_tracked<exact::mp_real<kPeelDigits10[2]>>(p, d, w, out, bound)) break;
-      if (s.steps == 0) {
-        // Longer than the top rung certifies: a run-time precision.
-        if (w.size() > max_runtime_length)
-          throw std::length_error("the Dehn-reduced word has " + std::to_string(w.size()) +
-                                  " letters and needs a run-time precision, computed up to " +
-                                  std::to_string(max_runtime_length) + " letters");
-        if (peel_beyond_ladder(p, d, w, out, bound)) break;
-      } else if (with_rung(s.rung,
-                           [&](auto zero) { return peel_segment<decltype(zero)>(p, d, w, s.steps, out, bound); })) {
+      if ((s.steps == 0 || s.rung > 2) && peel_tracked<mp_real<PeelLadder::kDigits10[2]>>(p, d, w, out, bound)) break;
+      // Longer than the top rung certifies: a run-time rung.
+      if (s.steps == 0 && w.size() > max_runtime_length)
+        throw std::length_error("the Dehn-reduced word has " + std::to_string(w.size()) +
+                                " letters and needs a run-time precision, computed up to " +
+                                std::to_string(max_runtime_length) + " letters");
+      const std::size_t rung = s.steps == 0 ? PeelLadder::rung_for(word_certified_bits(p, 2 * w.size())) : s.rung;
+      if (PeelLadder::at(
+              rung, [&](auto zero) { return peel_segment<decltype(zero)>(p, d, w, s.steps, out, bound); },
+              [&](long bits) { return peel_beyond_ladder(p, d, w, bits, out, bound); }))
         break;
-      }
     }
     // The bound or the rung's bits are spent: go on from a Dehn-reduced word
     // of the rest, h with the letters found since `start` peeled off.

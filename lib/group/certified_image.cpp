@@ -54,22 +54,22 @@ bool tracked_image(const Presentation &p, const Word &w, double x, double y, dou
 
 }  // namespace
 
+using ImageLadder = exact::Ladder<40, 160, 640, 2560>;
+
 bool certified_image(const Presentation &p, const Word &w, double x, double y, Complex<exact::mp_real<40>> *image) {
   // rho / 2 is about m delta / gap0: bits for 2^-130 with gap0 >= (1 - |z|^2) / 2
   // (computed exactly enough in double: x^2 + y^2 < 1), plus a margin.
   const double A = half_trace<double>(p.genus());
   const double gap = std::max(1.0 - (x * x + y * y), 0x1p-110) / 2;
-  double bits = 140 + std::log2(double(w.size()) + 1) + std::log2(400 * A * A + 10) + std::log2(2 / gap);
-  for (int attempt = 0; attempt < 4; ++attempt, bits *= 2) {
-    const bool done = exact::with_precision(bits, [&](auto zero) {
-      using T = decltype(zero);
-      const double eps = std::ldexp(1.0, 1 - int(std::numeric_limits<T>::digits));
-      return tracked_image<T>(p, w, x, y, eps, image);
-    });
-    if (done) return true;
-    if (bits > exact::ladder_top_bits()) break;
-  }
-  return false;
+  const double bits = 140 + std::log2(double(w.size()) + 1) + std::log2(400 * A * A + 10) + std::log2(2 / gap);
+  // Each rung up has about four times the bits: the climb stops at the
+  // first that certifies, or fails at the top.
+  const std::size_t first = std::min(ImageLadder::rung_for(bits), ImageLadder::kSize - 1);
+  return ImageLadder::climb(first, [&](auto zero) {
+    using T = decltype(zero);
+    const double eps = std::ldexp(1.0, 1 - int(std::numeric_limits<T>::digits));
+    return tracked_image<T>(p, w, x, y, eps, image);
+  });
 }
 
 }  // namespace hdt::group

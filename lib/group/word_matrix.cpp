@@ -28,23 +28,14 @@ double word_precision_bits(const Presentation &p, std::size_t m) {
   return (std::log2(6.0 * A * A) + 1.0) * double(m) + 2.0 * std::log2(double(m) + 2.0);
 }
 
+double word_certified_bits(const Presentation &p, std::size_t m) { return 64.0 + word_precision_bits(p, m); }
+
 namespace {
 
-// Runs f(zero) with zero a mp_real of Digits[rung] decimal digits (the last
-// entry for larger rungs): a ladder of five precisions, chosen at run time.
-template <const unsigned (&Digits)[5], class F>
-auto with_rung(std::size_t rung, F &&f) {
-  switch (rung) {
-    case 0: return f(exact::mp_real<Digits[0]>());
-    case 1: return f(exact::mp_real<Digits[1]>());
-    case 2: return f(exact::mp_real<Digits[2]>());
-    case 3: return f(exact::mp_real<Digits[3]>());
-    default: return f(exact::mp_real<Digits[4]>());
-  }
-}
-
-// 53 bits of the result plus a guard.
-double bits_for(const Presentation &p, std::size_t m) { return 64.0 + word_precision_bits(p, m); }
+// The rungs of accurate_moebius, accurate_lorentz and accurate_image: the
+// smallest with enough bits, else the top (products beyond it are refused
+// earlier by the words' length limits).
+using AccurateLadder = exact::Ladder<40, 160, 640, 2560>;
 
 template <class T>
 double to_double(const T &x) {
@@ -54,7 +45,7 @@ double to_double(const T &x) {
 }  // namespace
 
 Moebius<double> accurate_moebius(const Presentation &p, const Letter *w, std::size_t length) {
-  return exact::with_precision(bits_for(p, length), [&](auto zero) {
+  return AccurateLadder::with_bits(word_certified_bits(p, length), [&](auto zero) {
     using T = decltype(zero);
     const Moebius<T> m = shared_generators<T>(p).moebius(w, length);
     return Moebius<double>{{to_double(m.a.re), to_double(m.a.im)}, {to_double(m.b.re), to_double(m.b.im)}};
@@ -62,7 +53,7 @@ Moebius<double> accurate_moebius(const Presentation &p, const Letter *w, std::si
 }
 
 Lorentz<double> accurate_lorentz(const Presentation &p, const Letter *w, std::size_t length) {
-  return exact::with_precision(bits_for(p, length), [&](auto zero) {
+  return AccurateLadder::with_bits(word_certified_bits(p, length), [&](auto zero) {
     using T = decltype(zero);
     const Lorentz<T> m = shared_generators<T>(p).lorentz(w, length);
     Lorentz<double> r;
@@ -77,7 +68,7 @@ Complex<double> accurate_image(const Presentation &p, const Word &w, Complex<dou
   // bits in the denominator: add them, with a margin.
   const double gap = 1.0 - std::hypot(z.re, z.im);
   const double extra = 64.0 + (gap > 0 ? 2.0 * std::log2(1.0 / gap) : 2200.0);
-  return exact::with_precision(bits_for(p, w.size()) + extra, [&](auto zero) {
+  return AccurateLadder::with_bits(word_certified_bits(p, w.size()) + extra, [&](auto zero) {
     using T = decltype(zero);
     const Complex<T> image = shared_generators<T>(p).moebius(w).apply(Complex<T>{T(z.re), T(z.im)});
     return Complex<double>{to_double(image.re), to_double(image.im)};
@@ -131,9 +122,10 @@ const char kOverflow[] = "the matrix entries exceed the double range";
 // quadratic in them, within 2^-66 L_00 as in accurate_matrices.
 constexpr double kElementTarget = 72;
 
-// The rungs of the element products: the ladder's, and 800 digits, enough
-// for the a posteriori bound of any product that fits in double (below).
-constexpr unsigned kElementDigits10[] = {40, 160, 640, 800, 2560};
+// The rungs of the element products: AccurateLadder's, and 800 digits,
+// enough for the a posteriori bound of any product that fits in double
+// (below).
+using ElementLadder = exact::Ladder<40, 160, 640, 800, 2560>;
 
 
 // |a| + |b| rounded up, in long double: its exponent range (2^16384) holds
@@ -212,20 +204,17 @@ bool certified_product(const Presentation &p, const Word &r, double bits, double
 // twice the bound's log2 |P| with a margin for the path).
 template <class F>
 auto with_certified_product(const Presentation &p, const Word &r, double target, double log2_norm, F &&f) {
-  using Result = decltype(f(Moebius<exact::mp_real<kElementDigits10[0]>>{}));
-  double guess = std::min(moebius_precision_bits(p, r.size(), target),
-                          target + 2.0 * log2_norm + std::log2(double(r.size()) + 1.0) + 48.0);
-  for (std::size_t rung = 0; rung < std::size(kElementDigits10); ++rung) {
-    const double bits = exact::bits_of_digits10(kElementDigits10[rung]);
-    if (bits < guess && rung + 1 < std::size(kElementDigits10)) continue;
-    std::optional<Result> result = with_rung<kElementDigits10>(rung, [&](auto zero) -> std::optional<Result> {
-      Moebius<decltype(zero)> P;
-      if (!certified_product(p, r, bits, target, &P)) return std::nullopt;
-      return f(P);
-    });
-    if (result) return *result;
-    guess = 0;  // on to the next rung
-  }
+  using Result = decltype(f(Moebius<exact::mp_real<ElementLadder::kDigits10[0]>>{}));
+  const double guess = std::min(moebius_precision_bits(p, r.size(), target),
+                                target + 2.0 * log2_norm + std::log2(double(r.size()) + 1.0) + 48.0);
+  const std::size_t first = std::min(ElementLadder::rung_for(guess), ElementLadder::kSize - 1);
+  const std::optional<Result> result = ElementLadder::climb(first, [&](auto zero) -> std::optional<Result> {
+    using T = decltype(zero);
+    Moebius<T> P;
+    if (!certified_product(p, r, double(exact::RungOf<T>::bits), target, &P)) return std::nullopt;
+    return f(P);
+  });
+  if (result) return *result;
   throw std::length_error(too_long(r.size()));
 }
 
@@ -483,7 +472,7 @@ namespace {
 // The rungs of these products: the ladder's and one between its first two
 // (a word of N needs a few dozen bits above its target, see below, and the
 // ladder's second rung has 531).
-constexpr unsigned kWordDigits10[] = {40, 80, 160, 640, 2560};
+using WordLadder = exact::Ladder<40, 80, 160, 640, 2560>;
 
 
 // A product of a word starting with letter 0 and ProductBound's bound on its
@@ -569,31 +558,29 @@ std::size_t run_prefix_max(const Presentation &p) { return std::size_t(p.half_re
 // below with room.
 template <class F>
 auto with_bounded_product(const Presentation &p, const Word &w, double target, F &&f) {
-  using Result = decltype(f(Moebius<exact::mp_real<kWordDigits10[0]>>{}, 0.0));
+  using Result = decltype(f(Moebius<exact::mp_real<WordLadder::kDigits10[0]>>{}, 0.0));
   const long double wanted = std::ldexp(1.0L, -int(std::ceil(target)));
-  for (std::size_t rung = 0; rung < std::size(kWordDigits10); ++rung) {
-    const double bits = exact::bits_of_digits10(kWordDigits10[rung]);
-    // Fewer than 16 bits above the target cannot pay for the bookkeeping.
-    if (bits < target + 16) continue;
-    std::optional<Result> result = with_rung<kWordDigits10>(rung, [&](auto zero) -> std::optional<Result> {
-      using T = decltype(zero);
-      const GeneratorSet<T> &gens = shared_generators<T>(p);
-      int k;
-      const Word u = rotation_detail::normalised(p, w.data(), w.size(), &k);
-      const int step = constant_step(p, u);
-      const BoundedProduct<T> c =
-          step != 0 && u.size() <= run_prefix_max(p)
-              ? run_product(gens, step, u.size(), bits)
-              : rotation_detail::cached<BoundedProduct<T>>(p.genus(), u, [&] { return bounded_product(gens, u, bits); });
-      const long double eps = std::ldexp(1.0L, -int(bits));
-      const long double error = c.relative_error + 128 * eps * (1 + c.relative_error);
-      if (!(error <= wanted)) return std::nullopt;
-      Moebius<T> m = c.m;
-      if (k != 0) m.b = m.b * gens.rotation(k);
-      return f(m, double(error) * (1 + 0x1p-50));
-    });
-    if (result) return *result;
-  }
+  // Fewer than 16 bits above the target cannot pay for the bookkeeping.
+  const std::optional<Result> result =
+      WordLadder::climb(WordLadder::rung_for(target + 16), [&](auto zero) -> std::optional<Result> {
+        using T = decltype(zero);
+        const double bits = double(exact::RungOf<T>::bits);
+        const GeneratorSet<T> &gens = shared_generators<T>(p);
+        int k;
+        const Word u = rotation_detail::normalised(p, w.data(), w.size(), &k);
+        const int step = constant_step(p, u);
+        const BoundedProduct<T> c = step != 0 && u.size() <= run_prefix_max(p)
+                                        ? run_product(gens, step, u.size(), bits)
+                                        : rotation_detail::cached<BoundedProduct<T>>(
+                                              p.genus(), u, [&] { return bounded_product(gens, u, bits); });
+        const long double eps = std::ldexp(1.0L, -int(bits));
+        const long double error = c.relative_error + 128 * eps * (1 + c.relative_error);
+        if (!(error <= wanted)) return std::nullopt;
+        Moebius<T> m = c.m;
+        if (k != 0) m.b = m.b * gens.rotation(k);
+        return f(m, double(error) * (1 + 0x1p-50));
+      });
+  if (result) return *result;
   throw std::length_error(too_long(w.size()));
 }
 

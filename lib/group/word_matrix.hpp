@@ -22,6 +22,10 @@ namespace hdt::group {
 // each Lorentz generator has entries at most 2A^2 - 1 (A = cot(pi/4g)), so
 // a product of m of them at most (3(2A^2))^m in any entry.
 double word_precision_bits(const Presentation &p, std::size_t m);
+// Bits that certify a product of m letters with 64 to spare: the 53 bits
+// of a double result and a guard, or the margin of canonical.cpp's
+// separation tests, whose rounding error must stay far below it.
+double word_certified_bits(const Presentation &p, std::size_t m);
 
 // Letters must be valid.
 Moebius<double> accurate_moebius(const Presentation &p, const Letter *w, std::size_t length);

@@ -9,6 +9,13 @@
 
 namespace hdt::predicates {
 
+const char *predicate_name(Predicate p) {
+  static const char *const names[kPredicateCount] = {
+      "orientation", "in_circle", "in_circle_perturbed", "beyond_side", "compare_distance", "same_point",
+      "large_circumdisk"};
+  return names[std::size_t(p)];
+}
+
 Kernel::Kernel(surface::Surface &surface)
     : surface_(surface), double_(surface), mpfr_(surface), double_double_(surface, mpfr_), exact_(surface),
       structural_(surface, exact_) {}
@@ -41,12 +48,12 @@ void Kernel::forget_home_image(double x, double y) {
 // wrong sign then throws (HDT_EINTERNAL at the C API) instead of corrupting
 // a triangulation. Slow; for debugging and fuzzing.
 template <class Exact>
-int Kernel::decide([[maybe_unused]] const char *predicate, Decision d, [[maybe_unused]] Exact &&exact) {
-  ++statistics_.decided[std::size_t(d.stage)];
+int Kernel::decide(Predicate predicate, Decision d, [[maybe_unused]] Exact &&exact) {
+  ++statistics_.decided[std::size_t(predicate)][std::size_t(d.stage)];
 #ifdef HDT_CHECK_PREDICATES
   if (d.stage != Stage::exact)
     if (const Sign e = exact(); e != d.sign)
-      throw std::logic_error(std::string("check_predicates: ") + predicate + " decided " +
+      throw std::logic_error(std::string("check_predicates: ") + predicate_name(predicate) + " decided " +
                              std::to_string(to_int(d.sign)) + " at stage " + std::to_string(int(d.stage)) +
                              ", the exact evaluation says " + std::to_string(to_int(e)));
 #endif
@@ -77,26 +84,27 @@ Kernel::Decision Kernel::orientation_stages(const TranslatedPoint &p, const Tran
   const FilteredPoint *certified[3] = {&a, &b, &c};
   if (const Sign s = structural_.determinant(points, certified, 3); decided(s)) return {s, Stage::structural};
   if (const Sign s = double_double_.orientation(p, q, r); decided(s)) return {s, Stage::double_double};
+  reach_mpfr(Predicate::orientation);
   if (const Sign s = mpfr_.orientation(p, q, r); decided(s)) return {s, Stage::mpfr};
   if constexpr (kThroughExact) return {exact_.orientation(p, q, r), Stage::exact};
   return {Sign::undecided, Stage::exact};
 }
 
 int Kernel::orientation_checked(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
-  return decide("orientation", orientation_stages<true>(p, q, r), [&] { return exact_.orientation(p, q, r); });
+  return decide(Predicate::orientation, orientation_stages<true>(p, q, r), [&] { return exact_.orientation(p, q, r); });
 }
 
 std::optional<int> Kernel::orientation_before_exact(const TranslatedPoint &p, const TranslatedPoint &q,
                                                     const TranslatedPoint &r) {
   const Decision d = orientation_stages<false>(p, q, r);
   if (!decided(d.sign)) return std::nullopt;
-  return decide("orientation", d, [&] { return exact_.orientation(p, q, r); });
+  return decide(Predicate::orientation, d, [&] { return exact_.orientation(p, q, r); });
 }
 
 int Kernel::orientation(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                         const FilteredPoint &a, const FilteredPoint &b, const FilteredPoint &c) {
   if (const Sign s = DoubleStage::orientation(a, b, c); decided(s))
-    return decide("orientation", {s, Stage::double_filter}, [&] { return exact_.orientation(p, q, r); });
+    return decide(Predicate::orientation, {s, Stage::double_filter}, [&] { return exact_.orientation(p, q, r); });
   return orientation(p, q, r);
 }
 
@@ -106,7 +114,7 @@ int Kernel::orientation_exact(const TranslatedPoint &p, const TranslatedPoint &q
 
 // ---- in_circle ----
 
-Kernel::Decision Kernel::in_circle_stages(const TranslatedPoint &p, const TranslatedPoint &q,
+Kernel::Decision Kernel::in_circle_stages(Predicate which, const TranslatedPoint &p, const TranslatedPoint &q,
                                           const TranslatedPoint &r, const TranslatedPoint &s) {
   if (same_frame(p, q, r, s)) {
     if (const Sign sg = disk_in_circle(p.x, p.y, q.x, q.y, r.x, r.y, s.x, s.y); decided(sg)) return {sg, Stage::disk};
@@ -121,6 +129,7 @@ Kernel::Decision Kernel::in_circle_stages(const TranslatedPoint &p, const Transl
   const FilteredPoint *certified[4] = {&a, &b, &c, &e};
   if (const Sign sg = structural_.determinant(points, certified, 4); decided(sg)) return {sg, Stage::structural};
   if (const Sign sg = double_double_.in_circle(p, q, r, s); decided(sg)) return {sg, Stage::double_double};
+  reach_mpfr(which);
   if (const Sign sg = mpfr_.in_circle(p, q, r, s); decided(sg)) return {sg, Stage::mpfr};
   return {Sign::undecided, Stage::exact};
 }
@@ -128,9 +137,9 @@ Kernel::Decision Kernel::in_circle_stages(const TranslatedPoint &p, const Transl
 int Kernel::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                       const TranslatedPoint &s) {
   auto exact = [&] { return exact_.in_circle(p, q, r, s); };
-  Decision d = in_circle_stages(p, q, r, s);
+  Decision d = in_circle_stages(Predicate::in_circle, p, q, r, s);
   if (!decided(d.sign)) d = {exact(), Stage::exact};
-  return decide("in_circle", d, exact);
+  return decide(Predicate::in_circle, d, exact);
 }
 
 int Kernel::in_circle_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
@@ -141,10 +150,10 @@ int Kernel::in_circle_exact(const TranslatedPoint &p, const TranslatedPoint &q, 
 int Kernel::in_circle_perturbed_staged(const std::array<TranslatedPoint, 4> &pt,
                                        const std::array<uint32_t, 4> &vertex) {
   // The unperturbed sign, as in_circle; a tie goes to the perturbation.
-  const Decision d = in_circle_stages(pt[0], pt[1], pt[2], pt[3]);
+  const Decision d = in_circle_stages(Predicate::in_circle_perturbed, pt[0], pt[1], pt[2], pt[3]);
   if (!decided(d.sign)) return in_circle_perturbed_exact(pt, vertex);
   const int s =
-      decide("in_circle_perturbed", d, [&] { return exact_.in_circle(pt[0], pt[1], pt[2], pt[3]); });
+      decide(Predicate::in_circle_perturbed, d, [&] { return exact_.in_circle(pt[0], pt[1], pt[2], pt[3]); });
   if (s != 0) return s;
   return perturbed_tie(pt, vertex, nullptr);
 }
@@ -153,7 +162,8 @@ int Kernel::in_circle_perturbed_exact(const std::array<TranslatedPoint, 4> &pt,
                                       const std::array<uint32_t, 4> &vertex) {
   // The exact rows, kept for a tie's perturbation coefficients.
   const std::array<ExactStage::Row, 4> rows = exact_.rows(pt[0], pt[1], pt[2], pt[3]);
-  const int s = decide("in_circle_perturbed", {exact_.in_circle(rows), Stage::exact}, [] { return Sign::zero; });
+  const int s =
+      decide(Predicate::in_circle_perturbed, {exact_.in_circle(rows), Stage::exact}, [] { return Sign::zero; });
   if (s != 0) return s;
   return perturbed_tie(pt, vertex, &rows);
 }
@@ -196,7 +206,7 @@ int Kernel::perturbed_tie(const std::array<TranslatedPoint, 4> &pt, const std::a
 int Kernel::in_circle_perturbed(const std::array<TranslatedPoint, 4> &pt, const std::array<uint32_t, 4> &vertex,
                                 const std::array<const FilteredPoint *, 4> &f) {
   if (const Sign s = DoubleStage::in_circle(*f[0], *f[1], *f[2], *f[3]); decided(s))
-    return decide("in_circle_perturbed", {s, Stage::double_filter},
+    return decide(Predicate::in_circle_perturbed, {s, Stage::double_filter},
                   [&] { return exact_.in_circle(pt[0], pt[1], pt[2], pt[3]); });
   return in_circle_perturbed(pt, vertex);
 }
@@ -206,19 +216,20 @@ int Kernel::in_circle_perturbed(const std::array<TranslatedPoint, 4> &pt, const 
 Kernel::Decision Kernel::beyond_side_stages(const FilteredPoint &a, int side, const TranslatedPoint &p) {
   if (const Sign s = double_.beyond_side(a, side); decided(s)) return {s, Stage::double_filter};
   if (const Sign s = double_double_.beyond_side(p, side); decided(s)) return {s, Stage::double_double};
+  reach_mpfr(Predicate::beyond_side);
   if (const Sign s = mpfr_.beyond_side(p, side); decided(s)) return {s, Stage::mpfr};
   return {exact_.beyond_side(p, side), Stage::exact};
 }
 
 int Kernel::beyond_side(const TranslatedPoint &p, int side) {
-  return decide("beyond_side", beyond_side_stages(double_.point(p), side, p),
+  return decide(Predicate::beyond_side, beyond_side_stages(double_.point(p), side, p),
                 [&] { return exact_.beyond_side(p, side); });
 }
 
 void Kernel::beyond_sides(const TranslatedPoint &p, int *signs) {
   const FilteredPoint a = double_.point(p);
   for (int k = 0; k < surface_.side_count(); ++k)
-    signs[k] = decide("beyond_side", beyond_side_stages(a, k, p), [&] { return exact_.beyond_side(p, k); });
+    signs[k] = decide(Predicate::beyond_side, beyond_side_stages(a, k, p), [&] { return exact_.beyond_side(p, k); });
 }
 
 int Kernel::beyond_side_exact(const TranslatedPoint &p, int side) { return to_int(exact_.beyond_side(p, side)); }
@@ -230,12 +241,13 @@ Kernel::Decision Kernel::compare_distance_stages(const TranslatedPoint &p, const
   const FilteredPoint fp = double_.point(p), fa = double_.point(a), fb = double_.point(b);
   if (const Sign s = DoubleStage::compare_distance(fp, fa, fb); decided(s)) return {s, Stage::double_filter};
   if (const Sign s = double_double_.compare_distance(p, a, b); decided(s)) return {s, Stage::double_double};
+  reach_mpfr(Predicate::compare_distance);
   if (const Sign s = mpfr_.compare_distance(p, a, b); decided(s)) return {s, Stage::mpfr};
   return {exact_.compare_distance(p, a, b), Stage::exact};
 }
 
 int Kernel::compare_distance(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b) {
-  return decide("compare_distance", compare_distance_stages(p, a, b),
+  return decide(Predicate::compare_distance, compare_distance_stages(p, a, b),
                 [&] { return exact_.compare_distance(p, a, b); });
 }
 
@@ -250,12 +262,13 @@ Kernel::Decision Kernel::distinct_stages(const TranslatedPoint &p, const Transla
   if (const Sign s = DoubleStage::distinct(double_.point(p), double_.point(q)); decided(s))
     return {s, Stage::double_filter};
   if (const Sign s = double_double_.distinct(p, q); decided(s)) return {s, Stage::double_double};
+  reach_mpfr(Predicate::same_point);
   if (const Sign s = mpfr_.distinct(p, q); decided(s)) return {s, Stage::mpfr};
   return {exact_.distinct(p, q), Stage::exact};
 }
 
 bool Kernel::same_point(const TranslatedPoint &p, const TranslatedPoint &q) {
-  return decide("same_point", distinct_stages(p, q), [&] { return exact_.distinct(p, q); }) == 0;
+  return decide(Predicate::same_point, distinct_stages(p, q), [&] { return exact_.distinct(p, q); }) == 0;
 }
 
 bool Kernel::same_point_exact(const TranslatedPoint &p, const TranslatedPoint &q) {
@@ -269,19 +282,21 @@ Kernel::Decision Kernel::large_circumdisk_stages(const TranslatedPoint &p, const
   const FilteredPoint a = double_.point(p), b = double_.point(q), c = double_.point(r);
   if (const Sign s = double_.large_circumdisk(a, b, c); decided(s)) return {s, Stage::double_filter};
   if (const Sign s = double_double_.large_circumdisk(p, q, r); decided(s)) return {s, Stage::double_double};
+  reach_mpfr(Predicate::large_circumdisk);
   if (const Sign s = mpfr_.large_circumdisk(p, q, r); decided(s)) return {s, Stage::mpfr};
   return {exact_.large_circumdisk(p, q, r), Stage::exact};
 }
 
 int Kernel::large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
-  return decide("large_circumdisk", large_circumdisk_stages(p, q, r),
+  return decide(Predicate::large_circumdisk, large_circumdisk_stages(p, q, r),
                 [&] { return exact_.large_circumdisk(p, q, r); });
 }
 
 int Kernel::large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
                              const FilteredPoint &a, const FilteredPoint &b, const FilteredPoint &c) {
   if (const Sign s = double_.large_circumdisk(a, b, c); decided(s))
-    return decide("large_circumdisk", {s, Stage::double_filter}, [&] { return exact_.large_circumdisk(p, q, r); });
+    return decide(Predicate::large_circumdisk, {s, Stage::double_filter},
+                  [&] { return exact_.large_circumdisk(p, q, r); });
   return large_circumdisk(p, q, r);
 }
 

@@ -62,14 +62,41 @@ using surface::ExactSite;
 enum class Stage : uint8_t { disk, double_filter, structural, double_double, mpfr, exact };
 constexpr std::size_t kStageCount = 6;
 
-// How many calls each stage decided, for tests and benchmarks.
-struct FilterStatistics {
-  std::array<unsigned long, kStageCount> decided{};
+// The predicates, as the statistics count them.
+enum class Predicate : uint8_t {
+  orientation,
+  in_circle,
+  in_circle_perturbed,
+  beyond_side,
+  compare_distance,
+  same_point,
+  large_circumdisk
+};
+constexpr std::size_t kPredicateCount = 7;
+const char *predicate_name(Predicate p);
 
-  unsigned long operator[](Stage s) const { return decided[std::size_t(s)]; }
+// How many calls of each predicate each stage decided, and how many reached
+// the MPFR stage (which stages to keep for a predicate is measured with
+// these: docs/design.md), for tests and benchmarks.
+struct FilterStatistics {
+  std::array<std::array<unsigned long, kStageCount>, kPredicateCount> decided{};
+  std::array<unsigned long, kPredicateCount> reached_mpfr{};
+
+  unsigned long decided_by(Predicate p, Stage s) const { return decided[std::size_t(p)][std::size_t(s)]; }
+  unsigned long calls(Predicate p) const {
+    unsigned long n = 0;
+    for (const unsigned long d : decided[std::size_t(p)]) n += d;
+    return n;
+  }
+  // Over all predicates.
+  unsigned long operator[](Stage s) const {
+    unsigned long n = 0;
+    for (const auto &by_stage : decided) n += by_stage[std::size_t(s)];
+    return n;
+  }
   unsigned long calls() const {
     unsigned long n = 0;
-    for (const unsigned long d : decided) n += d;
+    for (std::size_t p = 0; p < kPredicateCount; ++p) n += calls(Predicate(p));
     return n;
   }
   // Decided in double precision (the disk and double stages).
@@ -91,7 +118,7 @@ class Kernel {
     // filter decides.
     if (untranslated(p) && untranslated(q) && untranslated(r))
       if (const Sign s = disk_orientation(p.x, p.y, q.x, q.y, r.x, r.y); decided(s))
-        return ++statistics_.decided[std::size_t(Stage::disk)], to_int(s);
+        return ++statistics_.decided[std::size_t(Predicate::orientation)][std::size_t(Stage::disk)], to_int(s);
 #endif
     return orientation_checked(p, q, r);
   }
@@ -111,7 +138,7 @@ class Kernel {
     if (untranslated(p[0]) && untranslated(p[1]) && untranslated(p[2]) && untranslated(p[3]))
       if (const Sign s = disk_in_circle(p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y, p[3].x, p[3].y);
           decided(s))
-        return ++statistics_.decided[std::size_t(Stage::disk)], to_int(s);
+        return ++statistics_.decided[std::size_t(Predicate::in_circle_perturbed)][std::size_t(Stage::disk)], to_int(s);
 #endif
     return in_circle_perturbed_staged(points, vertex);
   }
@@ -193,7 +220,7 @@ class Kernel {
   };
   // d counted, and checked against the exact stage under -Dcheck_predicates.
   template <class Exact>
-  int decide(const char *predicate, Decision d, Exact &&exact);
+  int decide(Predicate predicate, Decision d, Exact &&exact);
 
   // Each predicate's stages in order, through the exact one (orientation:
   // without kThroughExact, the stages before the field K_g's, undecided
@@ -202,8 +229,10 @@ class Kernel {
   Decision orientation_stages(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
   // The in-circle stages before the field K_g's (same-frame points: through
   // the exact disk stage); undecided when none decides.
-  Decision in_circle_stages(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
-                            const TranslatedPoint &s);
+  Decision in_circle_stages(Predicate which, const TranslatedPoint &p, const TranslatedPoint &q,
+                            const TranslatedPoint &r, const TranslatedPoint &s);
+  // Counts a call of `which` that reaches the MPFR stage.
+  void reach_mpfr(Predicate which) { ++statistics_.reached_mpfr[std::size_t(which)]; }
   Decision beyond_side_stages(const FilteredPoint &a, int side, const TranslatedPoint &p);
   Decision compare_distance_stages(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b);
   Decision distinct_stages(const TranslatedPoint &p, const TranslatedPoint &q);

@@ -1,27 +1,18 @@
-// The result of a predicate stage: a sign, or `undecided` when the stage's
-// error bound does not separate the value from zero (or the stage does not
-// apply). The driver (kernel.cpp) runs the stages until one decides; the
-// exact stages always do.
+// The predicates' Sign is the exact layer's (exact/sign.hpp): a stage
+// returns `undecided` when its certified error bound cannot separate the
+// value from zero, and the driver (kernel.cpp) runs the stages until one
+// decides.
 #pragma once
 
-#include <cstdint>
+#include "exact/sign.hpp"
 
 namespace hdt::predicates {
 
-enum class Sign : int8_t { negative = -1, zero = 0, positive = 1, undecided = 2 };
-
-constexpr bool decided(Sign s) { return s != Sign::undecided; }
-// -1, 0, +1 of a decided sign.
-constexpr int to_int(Sign s) { return int(s); }
-constexpr Sign sign_of_int(int v) { return v > 0 ? Sign::positive : v < 0 ? Sign::negative : Sign::zero; }
-// The sign of -x; undecided stays undecided.
-constexpr Sign operator-(Sign s) { return decided(s) ? Sign(-int(s)) : s; }
-
-// +1 or -1 when |value| exceeds bound, otherwise undecided (a floating-point
-// stage never decides a zero).
-template <class Real>
-constexpr Sign sign_beyond(const Real &value, double bound) {
-  return value > bound ? Sign::positive : value < -bound ? Sign::negative : Sign::undecided;
-}
+using exact::decided;
+using exact::Sign;
+using exact::sign_beyond;
+using exact::sign_of_int;
+using exact::to_int;
+using exact::operator-;
 
 }  // namespace hdt::predicates

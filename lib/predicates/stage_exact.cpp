@@ -121,9 +121,10 @@ Sign ExactStage::large_circumdisk(const TranslatedPoint &p, const TranslatedPoin
   }
   const FieldElement mm =
       field_.sub(field_.mul(c[0], c[0]), field_.add(field_.mul(c[1], c[1]), field_.mul(c[2], c[2])));
-  if (field_.sign(mm) <= 0) return Sign::positive;  // not a circle: unbounded
+  if (field_.sign(mm) != Sign::positive) return Sign::positive;  // not a circle: unbounded
   const FieldElement &k = surface_.quarter_systole_cosh2();  // 1 + cos(pi/2g)
-  return field_.sign(field_.sub(field_.mul(c[3], c[3]), field_.mul(k, mm))) >= 0 ? Sign::positive : Sign::negative;
+  return field_.sign(field_.sub(field_.mul(c[3], c[3]), field_.mul(k, mm))) != Sign::negative ? Sign::positive
+                                                                                      : Sign::negative;
 }
 
 Sign ExactStage::perturbation_coefficient(const std::array<Row, 4> &rows, const std::array<uint32_t, 4> &vertex,

@@ -52,7 +52,7 @@ class ExactStage {
                                 uint32_t v) const;
 
  private:
-  Sign field_sign(const exact::FieldElement &x) const { return sign_of_int(field_.sign(x)); }
+  Sign field_sign(const exact::FieldElement &x) const { return field_.sign(x); }
   exact::FieldElement det3(const std::array<const std::array<exact::FieldElement, 4> *, 3> &rows) const;
   exact::FieldElement det4(const std::array<Row, 4> &rows) const;
   // sin(pi/4g)^(2 letters): the positive factor of an exact matrix's rows.

@@ -46,7 +46,8 @@ std::array<double, 3> exact_site_vector(const exact::Field &field, const ExactSi
   const exact::FieldElement zz = field.mul(site.Z, site.Z);
   const exact::FieldElement r2 = field.add(field.mul(site.X, site.X), field.mul(site.Y, site.Y));
   const exact::FieldElement w = field.sub(zz, r2);
-  if (field.sign(w) <= 0) throw std::domain_error("add_site: the point is not inside the open unit disk");
+  if (field.sign(w) != exact::Sign::positive)
+    throw std::domain_error("add_site: the point is not inside the open unit disk");
   const exact::FieldElement two_z = field.add(site.Z, site.Z);
   const double den = field.approximate(w);
   return {field.approximate(field.add(zz, r2)) / den, field.approximate(field.mul(site.X, two_z)) / den,

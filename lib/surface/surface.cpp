@@ -64,7 +64,8 @@ const std::vector<int> &Surface::sides_near(double angle) const {
 int32_t Surface::add_site(const ExactSite &site, const group::Complex<SiteReal> *approximation,
                           const group::Complex<double> *rounded) {
   const SiteEvaluation e = evaluate_site(field_, site);
-  if (!(e.z > e.ez) && field_.sign(site.Z) <= 0) throw std::domain_error("add_site: Z must be positive");
+  if (!(e.z > e.ez) && field_.sign(site.Z) != exact::Sign::positive)
+    throw std::domain_error("add_site: Z must be positive");
   Site data{std::make_shared<const ExactSite>(site), 0, 0, {}, false, {}};
   // The evaluations certify the vector, and with it that the site is inside
   // the disk, except very near the circle: only there are the exact

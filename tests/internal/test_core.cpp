@@ -170,12 +170,14 @@ START_TEST(relation_is_exact_in_the_field) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
         const exact::FieldElement expected = i == j ? F.from_cyclotomic(scale) : F.zero();
-        ck_assert_msg(F.sign(F.sub(L.m[i][j], expected)) == 0, "genus %d: entry (%d, %d) is not exact", g, i, j);
+        ck_assert_msg(F.sign(F.sub(L.m[i][j], expected)) == exact::Sign::zero, "genus %d: entry (%d, %d) is not exact",
+                      g, i, j);
       }
     // A proper prefix is not a multiple of the identity.
     const Word relator = p.relator();
     const group::ExactLorentz half = group::exact_lorentz(F, Word(relator.begin(), relator.begin() + 2 * g));
-    ck_assert(F.sign(half.m[0][1]) != 0 || F.sign(half.m[0][2]) != 0 || F.sign(half.m[1][2]) != 0);
+    ck_assert(F.sign(half.m[0][1]) != exact::Sign::zero || F.sign(half.m[0][2]) != exact::Sign::zero ||
+              F.sign(half.m[1][2]) != exact::Sign::zero);
     // The exact generator agrees with the double one after the scale.
     const group::ExactLorentz G = group::exact_generator(F, 3 % p.letter_count());
     const auto D = group::Lorentz<double>::from_moebius(group::generator<double>(p, 3 % p.letter_count()));
@@ -564,8 +566,8 @@ static void check_tiny_residual(int chunks) {
   const int expected = mpfr_sgn(c);
   ck_assert_msg(expected != 0 && mpfr_get_exp(c) < -50 * chunks, "residual exponent %ld", (long)mpfr_get_exp(c));
   const exact::FieldElement residual = F.from_cyclotomic(K.sub(K.cos_2pi(1), approximation));
-  ck_assert_int_eq(F.sign(residual), expected);
-  ck_assert_int_eq(F.sign(F.neg(residual)), -expected);
+  ck_assert_int_eq(exact::to_int(F.sign(residual)), expected);
+  ck_assert_int_eq(exact::to_int(F.sign(F.neg(residual))), -expected);
   mpfr_clears(c, d, (mpfr_ptr)0);
 }
 
