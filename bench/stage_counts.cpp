@@ -14,7 +14,8 @@
 #include <algorithm>
 #include <vector>
 
-#include "triangulation/triangulation.hpp"
+#include "dummies/dummy_points.hpp"
+#include "mesh/triangulation.hpp"
 #include "uniform_points.h"
 
 using namespace hdt;
@@ -61,7 +62,7 @@ int main(int argc, char **argv) {
   const std::vector<double> near = boundary_points(genus, corners, 2);
   xy.insert(xy.end(), near.begin(), near.end());
 
-  triangulation::Triangulation t(genus);
+  mesh::Triangulation t(*dummies::dummy_template(genus));
   t.kernel().reset_statistics();
   t.insert_many(xy.data(), xy.size() / 2, nullptr);
   t.remove_dummies();

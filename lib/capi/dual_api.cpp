@@ -1,6 +1,6 @@
 // Adjacency, edges, corner points and the Voronoi diagram (symbol version
 // HDT_0.4). The combinatorics and the constructions live in
-// lib/triangulation (adjacency, constructions); these functions check the
+// lib/dual (adjacency, constructions); these functions check the
 // arguments and copy the results out. Each does what may fail (new
 // translation ids and matrices, memory) before it writes to the caller's
 // buffers, so that a failure (HDT_ENOMEM above all) writes nothing but the
@@ -14,17 +14,17 @@
 #include "capi/guard.hpp"
 #include "capi/handle.hpp"
 #include "hdt.h"
-#include "triangulation/adjacency.hpp"
-#include "triangulation/all_stars.hpp"
-#include "triangulation/constructions.hpp"
+#include "dual/adjacency.hpp"
+#include "dual/all_stars.hpp"
+#include "dual/constructions.hpp"
 
 using hdt::capi::ApiError;
 using hdt::capi::guarded;
 using hdt::capi::list_fits;
 using hdt::capi::of;
-using hdt::triangulation::Face;
-using hdt::triangulation::Point;
-using hdt::triangulation::Triangulation;
+using hdt::mesh::Face;
+using hdt::dual::Point;
+using hdt::mesh::Triangulation;
 
 extern "C" {
 
@@ -51,8 +51,8 @@ HDT_API hdt_status hdt_vertex_star(const hdt_triangulation *t, uint32_t v, uint3
     const Triangulation &tri = of(t);
     if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
     tri.check_live(v);
-    std::vector<hdt::triangulation::StarEntry> &star = t->star;
-    hdt::triangulation::vertex_star(tri, v, &star);
+    std::vector<hdt::dual::StarEntry> &star = t->star;
+    hdt::dual::vertex_star(tri, v, &star);
     if (!list_fits(star.size(), capacity, count, "faces")) return HDT_OK;
     // A caller walking every vertex pays this per call: one loop when all
     // three outputs are asked, else one per output.
@@ -79,8 +79,8 @@ HDT_API size_t hdt_edge_count(const hdt_triangulation *t) HDT_NOEXCEPT {
 HDT_API hdt_status hdt_edges(const hdt_triangulation *t, uint32_t *vertices, int32_t *translations, uint32_t *faces,
                              double *lengths, size_t capacity, size_t *count) HDT_NOEXCEPT {
   return guarded("hdt_edges", [&] {
-    using hdt::triangulation::edge_listed_with;
-    using hdt::triangulation::public_corner;
+    using hdt::dual::edge_listed_with;
+    using hdt::dual::public_corner;
     const Triangulation &tri = of(t);
     const auto &all = tri.faces();
     if (!list_fits(all.size() / 2 * 3, capacity, count, "edges")) return HDT_OK;
@@ -107,9 +107,9 @@ HDT_API hdt_status hdt_edges(const hdt_triangulation *t, uint32_t *vertices, int
         if (!translations) continue;
         for (int i = 0; i < 3; ++i) {
           if (!edge_listed_with(A, f, i)) continue;
-          const int a = hdt::triangulation::next(i), b = hdt::triangulation::prev(i);
+          const int a = hdt::mesh::next(i), b = hdt::mesh::prev(i);
           if (A.t[a] != 0 || A.t[b] != 0 || (homes && (public_corner(tri, A, a) != 0 || public_corner(tri, A, b) != 0))) {
-            const int32_t h = hdt::triangulation::edge_translation(tri, A, i);
+            const int32_t h = hdt::dual::edge_translation(tri, A, i);
             if (h != 0) moved.push_back({k, h});
           }
           ++k;
@@ -118,7 +118,7 @@ HDT_API hdt_status hdt_edges(const hdt_triangulation *t, uint32_t *vertices, int
       if (translations && k != *count) throw std::logic_error("hdt_edges: the edge count is not 3F/2");
     }
     // Then the writing, which cannot fail.
-    if (vertices || faces || lengths) hdt::triangulation::write_edges(tri, *count, vertices, faces, lengths);
+    if (vertices || faces || lengths) hdt::dual::write_edges(tri, *count, vertices, faces, lengths);
     if (translations) {
       std::fill(translations, translations + *count, 0);
       for (const auto &m : moved) translations[m.first] = m.second;
@@ -133,8 +133,8 @@ HDT_API hdt_status hdt_face_points(const hdt_triangulation *t, double *xy, size_
     const Triangulation &tri = of(t);
     if (!list_fits(tri.faces().size(), capacity, count, "faces")) return HDT_OK;
     if (!xy) throw ApiError(HDT_EINVAL, "xy must not be NULL when capacity > 0");
-    hdt::triangulation::warm_corner_matrices(tri, false);
-    hdt::triangulation::face_points(tri, xy);
+    hdt::dual::warm_corner_matrices(tri, false);
+    hdt::dual::face_points(tri, xy);
     return HDT_OK;
   });
 }
@@ -151,9 +151,9 @@ HDT_API hdt_status hdt_voronoi_vertices(const hdt_triangulation *t, double *xy, 
     // computed and kept); else computed directly: making the cache here
     // (48 bytes a face, written once to fresh pages) would cost a single
     // call about as much as the centres themselves.
-    hdt::triangulation::warm_corner_matrices(tri, false);
-    hdt::triangulation::CentreCache &cache = t->centres;
-    if (xy || radii) hdt::triangulation::voronoi_vertices(tri, xy, radii, cache.ready(tri) ? &cache : nullptr);
+    hdt::dual::warm_corner_matrices(tri, false);
+    hdt::dual::CentreCache &cache = t->centres;
+    if (xy || radii) hdt::dual::voronoi_vertices(tri, xy, radii, cache.ready(tri) ? &cache : nullptr);
     return HDT_OK;
   });
 }
@@ -173,15 +173,15 @@ HDT_API hdt_status hdt_voronoi_edges(const hdt_triangulation *t, double *xy, siz
     // face: the writing reads the neighbours' centres in no order); else
     // into the handle's scratch (kept: no allocation, no fresh pages on
     // later calls).
-    hdt::triangulation::CentreCache &cache = t->centres;
+    hdt::dual::CentreCache &cache = t->centres;
     const Point *centre;
     if (cache.ready(tri)) {
-      hdt::triangulation::face_centres(tri, nullptr, &cache, true);
+      hdt::dual::face_centres(tri, nullptr, &cache, true);
       centre = cache.centres();
     } else {
       std::vector<Point> &scratch = t->cell;
       scratch.resize(all.size());
-      hdt::triangulation::face_centres(tri, scratch.data(), nullptr, true);
+      hdt::dual::face_centres(tri, scratch.data(), nullptr, true);
       centre = scratch.data();
     }
     // hdt_edges' order: edge i of face f when f < its neighbour there (k
@@ -195,8 +195,8 @@ HDT_API hdt_status hdt_voronoi_edges(const hdt_triangulation *t, double *xy, siz
       if (!(A.n[0] > f || A.n[1] > f || A.n[2] > f)) continue;
       const Point c = centre[f];
       for (int i = 0; i < 3; ++i) {
-        if (!hdt::triangulation::edge_listed_with(A, f, i) || k == *count) continue;
-        const Point q = hdt::triangulation::translate(tri, A.nt[i], centre[A.n[i]]);
+        if (!hdt::dual::edge_listed_with(A, f, i) || k == *count) continue;
+        const Point q = hdt::dual::translate(tri, A.nt[i], centre[A.n[i]]);
         xy[4 * k] = c.re, xy[4 * k + 1] = c.im, xy[4 * k + 2] = q.re, xy[4 * k + 3] = q.im;
         ++k;
       }
@@ -212,14 +212,14 @@ HDT_API hdt_status hdt_voronoi_cell(const hdt_triangulation *t, uint32_t v, doub
     const Triangulation &tri = of(t);
     if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
     tri.check_live(v);
-    std::vector<hdt::triangulation::StarEntry> &star = t->star;
-    hdt::triangulation::vertex_star(tri, v, &star);
+    std::vector<hdt::dual::StarEntry> &star = t->star;
+    hdt::dual::vertex_star(tri, v, &star);
     if (!list_fits(star.size(), capacity, count, "corners")) return HDT_OK;
     if (!xy) throw ApiError(HDT_EINVAL, "xy must not be NULL when capacity > 0");
     // Into scratch first: a face's centre (cached on the handle, computed
     // on first request) may need new matrices, and a failure must leave the
     // caller's buffer untouched.
-    hdt::triangulation::CentreCache &cache = t->centres;
+    hdt::dual::CentreCache &cache = t->centres;
     cache.reserve(tri);
     std::vector<Point> &cell = t->cell;
     cell.clear();
@@ -240,7 +240,7 @@ HDT_API hdt_status hdt_vertex_stars(const hdt_triangulation *t, size_t *offsets,
     // What may fail (memory, translation ids) into the handle's scratch
     // first (unless the rows are those of this triangulation already),
     // then the writing.
-    hdt::triangulation::AllStars &rows = t->rows;
+    hdt::dual::AllStars &rows = t->rows;
     if (t->rows_generation != t->generation) {
       t->rows_generation = t->cells_generation = hdt_triangulation::kNever;
       rows.build(tri, false);
@@ -272,7 +272,7 @@ HDT_API hdt_status hdt_voronoi_cells(const hdt_triangulation *t, size_t *offsets
       else t->rows.build_cells(tri, t->centres);
       t->rows_generation = t->cells_generation = t->generation;
     }
-    const hdt::triangulation::AllStars &rows = t->rows;
+    const hdt::dual::AllStars &rows = t->rows;
     rows.write_cells(tri, offsets, xy, t->centres.centres());
     return HDT_OK;
   });

@@ -8,18 +8,20 @@
 #include <utility>
 
 #include "capi/guard.hpp"
+#include "dual/adjacency.hpp"
+#include "dual/all_stars.hpp"
+#include "dual/constructions.hpp"
+#include "dummies/dummy_points.hpp"
 #include "hdt.h"
-#include "triangulation/adjacency.hpp"
-#include "triangulation/all_stars.hpp"
-#include "triangulation/constructions.hpp"
-#include "triangulation/progress.hpp"
-#include "triangulation/triangulation.hpp"
+#include "mesh/progress.hpp"
+#include "mesh/triangulation.hpp"
 
 struct hdt_triangulation {
-  explicit hdt_triangulation(int genus) : tri(genus) {}
-  explicit hdt_triangulation(hdt::triangulation::Triangulation &&t) : tri(std::move(t)) {}
-  hdt::triangulation::Triangulation tri;
-  hdt::triangulation::Progress progress;  // hdt_set_progress; none by default
+  // The genus's dummy set (built on the process's first call for it).
+  explicit hdt_triangulation(int genus) : tri(*hdt::dummies::dummy_template(genus)) {}
+  explicit hdt_triangulation(hdt::mesh::Triangulation &&t) : tri(std::move(t)) {}
+  hdt::mesh::Triangulation tri;
+  hdt::mesh::Progress progress;  // hdt_set_progress; none by default
   // hdt_voronoi_cell's circumcentres, kept from call to call (the other
   // Voronoi outputs read them when present); entries check themselves
   // against the faces, so changes need not clear it. And scratch reused from
@@ -27,14 +29,14 @@ struct hdt_triangulation {
   // would otherwise pay an allocation per call), and cell also holds
   // hdt_voronoi_edges' centres (16 bytes a face). Const queries may use
   // them: one thread uses a handle at a time (hdt.h).
-  mutable hdt::triangulation::CentreCache centres;
-  mutable std::vector<hdt::triangulation::StarEntry> star;
-  mutable std::vector<hdt::triangulation::Point> cell;
+  mutable hdt::dual::CentreCache centres;
+  mutable std::vector<hdt::dual::StarEntry> star;
+  mutable std::vector<hdt::dual::Point> cell;
   // hdt_vertex_stars' and hdt_voronoi_cells' rows (about 92 bytes a
   // vertex), kept: a later call writes into pages already mapped, and
   // while the triangulation is unchanged it writes them without building
   // them again.
-  mutable hdt::triangulation::AllStars rows;
+  mutable hdt::dual::AllStars rows;
   // Bumped by every call that may change the triangulation (hdt::capi::of
   // on a non-const handle, the only way to one): the rows serve while it
   // is the generation they were built for. kNever: no rows, or a build
@@ -66,12 +68,12 @@ inline void check_usable(const hdt_triangulation *t) {
 // only the core's documented caches).
 // A non-const handle may be changed: what the handle derived from the
 // faces is stale from now on (the generation moves on).
-inline triangulation::Triangulation &of(hdt_triangulation *t) {
+inline mesh::Triangulation &of(hdt_triangulation *t) {
   check_usable(t);
   ++t->generation;
   return t->tri;
 }
-inline const triangulation::Triangulation &of(const hdt_triangulation *t) {
+inline const mesh::Triangulation &of(const hdt_triangulation *t) {
   check_usable(t);
   return t->tri;
 }
@@ -96,9 +98,9 @@ class LongCall {
     if (t_->destroy_pending) delete t_;
   }
 
-  triangulation::Triangulation &tri() const { return tri_; }
+  mesh::Triangulation &tri() const { return tri_; }
   // For the core: the caller's function, read once; none when unset.
-  const triangulation::Progress *progress() const { return &progress_; }
+  const mesh::Progress *progress() const { return &progress_; }
 
  private:
   // The caller's report, and a stop once the caller destroyed the handle:
@@ -109,10 +111,10 @@ class LongCall {
     return stop != 0 || call.t_->destroy_pending;
   }
 
-  triangulation::Triangulation &tri_;
+  mesh::Triangulation &tri_;
   hdt_triangulation *t_;
-  const triangulation::Progress caller_;  // the handle's progress function as the call began
-  triangulation::Progress progress_;      // what the core calls: none, or the function above
+  const mesh::Progress caller_;  // the handle's progress function as the call began
+  mesh::Progress progress_;      // what the core calls: none, or the function above
 };
 
 }  // namespace hdt::capi

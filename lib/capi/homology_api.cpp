@@ -9,7 +9,7 @@
 #include "capi/guard.hpp"
 #include "capi/handle.hpp"
 #include "hdt.h"
-#include "triangulation/triangulation.hpp"
+#include "mesh/triangulation.hpp"
 
 using hdt::capi::ApiError;
 using hdt::capi::guarded;

@@ -1,6 +1,6 @@
 // Progress reports and cancellation (symbol version HDT_0.5): the handle
 // keeps the caller's function; hdt_insert_many, hdt_refine and
-// hdt_epsilon_net hand it to the core (triangulation/progress.hpp).
+// hdt_epsilon_net hand it to the core (mesh/progress.hpp).
 #include <cmath>
 
 #include "capi/guard.hpp"

@@ -1,5 +1,5 @@
 // Refinement, epsilon-nets and quality statistics (symbol version HDT_0.4).
-// The algorithm is lib/triangulation/refine.cpp; here the arguments are
+// The algorithm is lib/dual/refine.cpp; here the arguments are
 // checked before anything changes, and the results copied out.
 #include <sys/resource.h>
 #include <unistd.h>
@@ -12,8 +12,8 @@
 #include "capi/guard.hpp"
 #include "capi/handle.hpp"
 #include "hdt.h"
-#include "triangulation/quality.hpp"
-#include "triangulation/refine.hpp"
+#include "dual/quality.hpp"
+#include "dual/refine.hpp"
 
 using hdt::capi::ApiError;
 using hdt::capi::fail;
@@ -36,12 +36,12 @@ double memory_limit() {
 // Work that cannot finish is refused before anything changes: the vertices
 // that the radius bound certainly needs (up to the cap) would not fit in
 // memory.
-void check_room(const char *what, const hdt::triangulation::Triangulation &tri, double max_radius,
+void check_room(const char *what, const hdt::mesh::Triangulation &tri, double max_radius,
                 size_t max_points) {
-  const double needed = hdt::triangulation::vertices_needed(tri.genus(), max_radius);
+  const double needed = hdt::dual::vertices_needed(tri.genus(), max_radius);
   const double live = double(tri.vertex_count());
   const double added = std::min(double(max_points), std::max(0.0, needed - live));
-  const double bytes = hdt::triangulation::bytes_needed(double(tri.vertices().size()) + added);
+  const double bytes = hdt::dual::bytes_needed(double(tri.vertices().size()) + added);
   const double limit = memory_limit();
   if (bytes <= limit) return;
   char message[320];
@@ -61,13 +61,13 @@ hdt_status run(const char *function, bool net, hdt_triangulation *t, double max_
   const hdt::capi::LongCall call(t, function);
   if (added) *added = 0;
   if (unmet) *unmet = 0;
-  const hdt::triangulation::Triangulation &tri = call.tri();
+  const hdt::mesh::Triangulation &tri = call.tri();
   if (net && !(max_radius > 0 && !std::isinf(max_radius))) throw ApiError(HDT_EINVAL, "epsilon must be finite and > 0");
   if (!(max_radius > 0)) throw ApiError(HDT_EINVAL, "the radius bound must be > 0 (and not NaN)");
   if (!(max_ratio >= 1)) throw ApiError(HDT_EINVAL, "max_ratio must be >= 1 (and not NaN)");
   check_room(std::isinf(max_ratio) ? "an epsilon-net" : "a refinement", tri, max_radius, max_points);
-  const hdt::triangulation::Refined r =
-      hdt::triangulation::refine(call.tri(), {max_radius, max_ratio}, max_points, call.progress());
+  const hdt::dual::Refined r =
+      hdt::dual::refine(call.tri(), {max_radius, max_ratio}, max_points, call.progress());
   if (added) *added = r.added;
   if (unmet) *unmet = r.unmet;
   if (r.out_of_memory)
@@ -95,7 +95,7 @@ HDT_API hdt_status hdt_epsilon_net(hdt_triangulation *t, double epsilon, size_t 
 HDT_API hdt_status hdt_quality(const hdt_triangulation *t, double *min_angle, double *max_ratio, double *max_radius,
                                double *min_edge) HDT_NOEXCEPT {
   return guarded("hdt_quality", [&] {
-    const hdt::triangulation::Quality q = hdt::triangulation::quality(of(t));
+    const hdt::dual::Quality q = hdt::dual::quality(of(t));
     if (min_angle) *min_angle = q.min_angle;
     if (max_ratio) *max_ratio = q.max_ratio;
     if (max_radius) *max_radius = q.max_radius;

@@ -36,12 +36,12 @@ namespace hdt::capi {
 
 namespace {
 
-using triangulation::Face;
-using triangulation::kNone;
-using triangulation::Snapshot;
-using triangulation::SnapshotError;
-using triangulation::Triangulation;
-using triangulation::Vertex;
+using mesh::Face;
+using mesh::kNone;
+using mesh::Snapshot;
+using mesh::SnapshotError;
+using mesh::Triangulation;
+using mesh::Vertex;
 
 constexpr unsigned char kMagic[8] = {0x89, 'H', 'D', 'T', 0x0D, 0x0A, 0x1A, 0x0A};
 constexpr uint32_t kVersion = 1;
@@ -201,10 +201,10 @@ std::size_t saved_size(const Triangulation &t) {
   for (std::size_t id = T.neighbour_count(); id < T.size(); ++id) {
     const std::size_t letters = T.word(group::TranslationId(id)).size();
     // Never write a file that hdt_load would refuse.
-    if (letters > triangulation::max_saved_word_length(t.genus()))
+    if (letters > mesh::max_saved_word_length(t.genus()))
       throw ApiError(HDT_ENOTSUP, "translation id " + std::to_string(id) + " has a word of " + std::to_string(letters) +
                                       " letters, more than the format holds (" +
-                                      std::to_string(triangulation::max_saved_word_length(t.genus())) + ")");
+                                      std::to_string(mesh::max_saved_word_length(t.genus())) + ")");
     // Nor a word whose check the loader leaves open (group::check_canonical:
     // its element far beyond every element a point of the disk gives).
     if (group::check_canonical(T.presentation(), T.word(group::TranslationId(id)).data(), letters) !=

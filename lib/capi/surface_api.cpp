@@ -5,10 +5,10 @@
 #include "predicates/representative.hpp"
 #include "surface/polygon.hpp"
 #include "surface/systole.hpp"
-#include "triangulation/dummy_points.hpp"
+#include "dummies/dummy_points.hpp"
 
 // hdt_create's limit is the dummy construction's, which refuses beyond it.
-static_assert(HDT_CREATE_GENUS_MAX == hdt::triangulation::kDummyGenusMax);
+static_assert(HDT_CREATE_GENUS_MAX == hdt::dummies::kDummyGenusMax);
 static_assert(HDT_CREATE_GENUS_MAX <= HDT_GENUS_MAX);
 
 using hdt::capi::ApiError;

@@ -6,12 +6,12 @@
 #include "capi/guard.hpp"
 #include "capi/handle.hpp"
 #include "hdt.h"
-#include "triangulation/triangulation.hpp"
+#include "mesh/triangulation.hpp"
 
 using hdt::capi::ApiError;
 using hdt::capi::fail;
 using hdt::capi::guarded;
-using hdt::triangulation::Triangulation;
+using hdt::mesh::Triangulation;
 
 using hdt::capi::of;
 

@@ -9,15 +9,17 @@
 #include <set>
 #include <vector>
 
-#include "triangulation/adjacency.hpp"
-#include "triangulation/constructions.hpp"
-#include "triangulation/triangulation.hpp"
+#include "dual/adjacency.hpp"
+#include "dual/constructions.hpp"
+#include "mesh/triangulation.hpp"
 
 #include <check.h>
 
+#include "new_triangulation.hpp"
 #include "run_suite.hpp"
 
-using namespace hdt::triangulation;
+using namespace hdt::mesh;
+using namespace hdt::dual;
 
 namespace {
 
@@ -66,7 +68,7 @@ void insert_both(Triangulation &a, Triangulation &b, uint32_t f, const Point &p)
 
 START_TEST(circumcentre_inserted_from_its_face_as_by_insert) {
   const int genus = _i == 0 ? 2 : 3;
-  Triangulation a(genus), b(genus);
+  Triangulation a = new_triangulation(genus), b = new_triangulation(genus);
   fill(a, b, 60, 7 + unsigned(_i));
   std::mt19937_64 rng(11);
   for (int k = 0; k < 200; ++k) {
@@ -82,7 +84,7 @@ END_TEST
 // A point on or outside the face's circle is refused with nothing changed
 // (refinement then leaves the face); one inside is inserted as by insert().
 START_TEST(point_outside_the_circle_is_refused) {
-  Triangulation a(2), b(2);
+  Triangulation a = new_triangulation(2), b = new_triangulation(2);
   fill(a, b, 60, 5);
   std::mt19937_64 rng(13);
   int outside = 0, inside = 0;
@@ -116,7 +118,7 @@ START_TEST(point_outside_the_circle_is_refused) {
 END_TEST
 
 START_TEST(unknown_face_is_refused) {
-  Triangulation t(2);
+  Triangulation t = new_triangulation(2);
   std::vector<uint32_t> created;
   const std::size_t faces = t.faces().size();
   bool thrown = false;
