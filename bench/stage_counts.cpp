@@ -62,7 +62,7 @@ int main(int argc, char **argv) {
   const std::vector<double> near = boundary_points(genus, corners, 2);
   xy.insert(xy.end(), near.begin(), near.end());
 
-  mesh::Triangulation t(*dummies::dummy_template(genus));
+  mesh::Triangulation t = dummies::new_triangulation(genus);
   t.kernel().reset_statistics();
   t.insert_many(xy.data(), xy.size() / 2, nullptr);
   t.remove_dummies();

@@ -8,9 +8,7 @@
 #include <utility>
 
 #include "capi/guard.hpp"
-#include "dual/adjacency.hpp"
-#include "dual/all_stars.hpp"
-#include "dual/constructions.hpp"
+#include "dual/outputs.hpp"
 #include "dummies/dummy_points.hpp"
 #include "hdt.h"
 #include "mesh/progress.hpp"
@@ -18,33 +16,13 @@
 
 struct hdt_triangulation {
   // The genus's dummy set (built on the process's first call for it).
-  explicit hdt_triangulation(int genus) : tri(*hdt::dummies::dummy_template(genus)) {}
+  explicit hdt_triangulation(int genus) : tri(hdt::dummies::new_triangulation(genus)) {}
   explicit hdt_triangulation(hdt::mesh::Triangulation &&t) : tri(std::move(t)) {}
   hdt::mesh::Triangulation tri;
   hdt::mesh::Progress progress;  // hdt_set_progress; none by default
-  // hdt_voronoi_cell's circumcentres, kept from call to call (the other
-  // Voronoi outputs read them when present); entries check themselves
-  // against the faces, so changes need not clear it. And scratch reused from
-  // call to call: the per-vertex functions' (a caller walking every vertex
-  // would otherwise pay an allocation per call), and cell also holds
-  // hdt_voronoi_edges' centres (16 bytes a face). Const queries may use
-  // them: one thread uses a handle at a time (hdt.h).
-  mutable hdt::dual::CentreCache centres;
-  mutable std::vector<hdt::dual::StarEntry> star;
-  mutable std::vector<hdt::dual::Point> cell;
-  // hdt_vertex_stars' and hdt_voronoi_cells' rows (about 92 bytes a
-  // vertex), kept: a later call writes into pages already mapped, and
-  // while the triangulation is unchanged it writes them without building
-  // them again.
-  mutable hdt::dual::AllStars rows;
-  // Bumped by every call that may change the triangulation (hdt::capi::of
-  // on a non-const handle, the only way to one): the rows serve while it
-  // is the generation they were built for. kNever: no rows, or a build
-  // that did not finish.
-  static constexpr uint64_t kNever = ~uint64_t(0);
-  uint64_t generation = 0;
-  mutable uint64_t rows_generation = kNever;   // the rows (translations; no matrices)
-  mutable uint64_t cells_generation = kNever;  // and the cells' matrices and centres (every cache entry holds)
+  // The dual outputs' caches and scratch, kept from call to call. Const
+  // queries use them: one thread uses a handle at a time (hdt.h).
+  mutable hdt::dual::Outputs outputs;
   // The long call running on this handle, which runs the caller's progress
   // function (hdt_insert_many, hdt_refine, hdt_epsilon_net; nullptr when
   // none): a call on the handle from that function is re-entry and is
@@ -66,11 +44,8 @@ inline void check_usable(const hdt_triangulation *t) {
 
 // The triangulation behind a handle: const for a const handle (queries fill
 // only the core's documented caches).
-// A non-const handle may be changed: what the handle derived from the
-// faces is stale from now on (the generation moves on).
 inline mesh::Triangulation &of(hdt_triangulation *t) {
   check_usable(t);
-  ++t->generation;
   return t->tri;
 }
 inline const mesh::Triangulation &of(const hdt_triangulation *t) {

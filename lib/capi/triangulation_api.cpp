@@ -98,7 +98,6 @@ HDT_API hdt_status hdt_vertex_point(const hdt_triangulation *t, uint32_t v, doub
   return guarded("hdt_vertex_point", [&] {
     const Triangulation &tri = of(t);
     if (!x || !y) throw ApiError(HDT_EINVAL, "x and y must not be NULL");
-    tri.check_live(v);
     double px, py;
     tri.vertex_point(v, &px, &py);
     *x = px, *y = py;
@@ -117,28 +116,7 @@ HDT_API hdt_status hdt_vertices(const hdt_triangulation *t, uint32_t *ids, doubl
     const Triangulation &tri = of(t);
     const std::size_t V = tri.vertex_count();
     if (!hdt::capi::list_fits(V, capacity, count, "vertices")) return HDT_OK;
-    // The points first: vertex_point may allocate (and fail) before anything
-    // is written.
-    std::vector<double> points;
-    if (xy) points.reserve(2 * V);
-    std::size_t n = 0;
-    for (uint32_t v = 0; v < tri.vertices().size(); ++v) {
-      if (!tri.vertices()[v].alive()) continue;
-      if (xy) {
-        double px, py;
-        tri.vertex_point(v, &px, &py);
-        points.push_back(px), points.push_back(py);
-      }
-      ++n;
-    }
-    if (n != V) throw std::logic_error("hdt_vertices: the live vertex count is out of date");
-    for (uint32_t v = 0, i = 0; v < tri.vertices().size(); ++v) {
-      if (!tri.vertices()[v].alive()) continue;
-      if (ids) ids[i] = v;
-      if (dummy) dummy[i] = tri.is_dummy(v) ? 1 : 0;
-      ++i;
-    }
-    if (xy) std::copy(points.begin(), points.end(), xy);
+    tri.write_vertices(ids, xy, dummy);
     return HDT_OK;
   });
 }

@@ -321,21 +321,24 @@ std::map<int, std::shared_ptr<const mesh::DummyTemplate>> cache;
 
 }  // namespace
 
-std::shared_ptr<const mesh::DummyTemplate> dummy_template(int genus) {
+mesh::Triangulation new_triangulation(int genus) {
   {
     std::lock_guard<std::mutex> lock(cache_mutex);
     auto it = cache.find(genus);
-    if (it != cache.end()) return it->second;
+    if (it != cache.end()) return mesh::Triangulation(*it->second);
   }
   if (genus > kDummyGenusMax)
     throw std::length_error("dummy points are built up to genus " + std::to_string(kDummyGenusMax) +
                             " (HDT_CREATE_GENUS_MAX), not " + std::to_string(genus) +
                             ": beyond it their double-precision construction loses every bit");
-  // Built outside the lock: two threads may both build one, the first stays.
+  // Built outside the lock.
   mesh::Editor e(genus);
   auto built = std::make_shared<const mesh::DummyTemplate>(DummyBuilder(e).build());
-  std::lock_guard<std::mutex> lock(cache_mutex);
-  return cache.emplace(genus, built).first->second;
+  {
+    std::lock_guard<std::mutex> lock(cache_mutex);
+    cache.emplace(genus, built);
+  }
+  return std::move(e).take();
 }
 
 }  // namespace hdt::dummies

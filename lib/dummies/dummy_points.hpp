@@ -3,9 +3,7 @@
 // every new triangulation (mesh::Triangulation(const DummyTemplate &)).
 #pragma once
 
-#include <memory>
-
-#include "mesh/dummy_template.hpp"
+#include "mesh/triangulation.hpp"
 
 namespace hdt::dummies {
 
@@ -16,9 +14,12 @@ namespace hdt::dummies {
 // a double from genus about 128 on).
 constexpr int kDummyGenusMax = 256;
 
-// The certified template of a genus, built on this process's first call for
-// the genus (thread-safe; two threads may both build one, the first stays).
-// Throws std::length_error above kDummyGenusMax.
-std::shared_ptr<const mesh::DummyTemplate> dummy_template(int genus);
+// A new triangulation of a genus: its certified dummy set. The process's
+// first call for a genus builds the set in the triangulation it returns
+// (whose surface keeps what the construction computed: its first user's
+// insertions find warm caches) and keeps its template; later calls copy
+// the template (thread-safe; two threads may both build one, the first
+// template stays). Throws std::length_error above kDummyGenusMax.
+mesh::Triangulation new_triangulation(int genus);
 
 }  // namespace hdt::dummies

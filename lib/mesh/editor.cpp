@@ -28,6 +28,7 @@ void Editor::assign_dummies(std::vector<Vertex> vertices, std::vector<Face> face
   t_.dummy_.assign(t_.vertices_.size(), true);
   t_.live_vertices_ = t_.dummies_ = t_.vertices_.size();
   t_.representatives_.clear();
+  ++t_.revision_;
 }
 
 void Editor::flip(uint32_t f, int i, std::vector<uint32_t> *ids) {
@@ -99,6 +100,7 @@ void Editor::roll_back(Checkpoint *c) {
   // The cache is by id, and the ids above the restored count will name
   // other points.
   if (t_.representatives_.size() > t_.vertices_.size()) t_.representatives_.resize(t_.vertices_.size());
+  ++t_.revision_;
 }
 
 void Editor::compact_ids() {
@@ -120,6 +122,7 @@ void Editor::compact_ids() {
   t_.last_vertex_ = kNone;
   t_.last_face_ = 0;
   t_.rng_ = Triangulation::kWalkSeed;
+  ++t_.revision_;
 }
 
 }  // namespace hdt::mesh

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "mesh/dummy_template.hpp"
@@ -51,8 +52,10 @@ class Editor {
   void compact_ids();
 
   // The finished set, from which Triangulation(const DummyTemplate &) makes
-  // every triangulation of the genus.
+  // every later triangulation of the genus.
   DummyTemplate dummy_template() const;
+  // The finished triangulation itself, for its first user.
+  Triangulation take() && { return std::move(t_); }
 
  private:
   Triangulation t_;

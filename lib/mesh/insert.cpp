@@ -40,6 +40,7 @@ bool Triangulation::met_vertex(uint32_t v) {
   if (!dummy_[v]) return false;
   dummy_[v] = false;  // the user's point is this dummy: it stays, as theirs
   --dummies_;
+  ++revision_;
   return true;
 }
 

@@ -193,6 +193,26 @@ void Triangulation::vertex_point(uint32_t v, double *x, double *y) const {
   *x = z.re, *y = z.im;
 }
 
+void Triangulation::write_vertices(uint32_t *ids, double *xy, uint8_t *dummy) const {
+  double x, y;
+  if (xy)  // fills the cache of every representative away from F_g
+    for (uint32_t v = 0; v < vertices_.size(); ++v)
+      if (vertices_[v].alive() && vertices_[v].home != 0) vertex_point(v, &x, &y);
+  std::size_t i = 0;
+  for (uint32_t v = 0; v < vertices_.size(); ++v) {
+    const Vertex &u = vertices_[v];
+    if (!u.alive()) continue;
+    if (i == live_vertices_) throw std::logic_error("write_vertices: the live vertex count is out of date");
+    if (ids) ids[i] = v;
+    if (dummy) dummy[i] = dummy_[v] ? 1 : 0;
+    if (xy) {
+      const group::Complex<double> z = u.home == 0 ? group::Complex<double>{u.x, u.y} : representatives_[v];
+      xy[2 * i] = z.re, xy[2 * i + 1] = z.im;
+    }
+    ++i;
+  }
+}
+
 void Triangulation::corner_translations(std::vector<std::pair<std::size_t, TranslationId>> *moved) const {
   group::TranslationTable &T = table();
   moved->clear();

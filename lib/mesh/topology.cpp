@@ -245,6 +245,7 @@ class Triangulation::Replacement {
 void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<NewFace> &created,
                             const std::vector<BoundaryEdge> &boundary, std::vector<uint32_t> *ids) {
   Replacement(*this, old, created, boundary).run(ids);
+  ++revision_;
 }
 
 }  // namespace hdt::mesh

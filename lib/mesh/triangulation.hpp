@@ -51,6 +51,11 @@ class Triangulation {
   // go to moved as (3f + i, t h^-1), in face order.
   void corner_translations(std::vector<std::pair<std::size_t, TranslationId>> *moved) const;
   std::size_t vertex_count() const { return live_vertices_; }
+  // Moves on with every change of the vertices, their flags or the faces,
+  // and only then (a call that changes nothing, a failed one included,
+  // leaves it): what is derived from the faces and kept (dual::Outputs)
+  // holds while the revision it was made at is current.
+  uint64_t revision() const { return revision_; }
   std::size_t dummy_count() const { return dummies_; }
 
   struct Inserted {
@@ -113,6 +118,13 @@ class Triangulation {
   // The representative of v in F_g, rounded. A vertex away from F_g pays
   // a multiprecision image once; later calls read it from a cache.
   void vertex_point(uint32_t v, double *x, double *y) const;
+
+  // The live vertices in id order (vertex_count() of them): their ids, their
+  // representatives (vertex_point) as x, y pairs, and 1 for a dummy, 0 for
+  // a user's vertex; each output may be null. What may fail (the
+  // representatives not yet cached: memory, multiprecision images) comes
+  // before anything is written.
+  void write_vertices(uint32_t *ids, double *xy, uint8_t *dummy) const;
 
   // The faces around v, counterclockwise, the first the canonical copy of
   // vertices()[v].face, each with its frame relative to that one.
@@ -230,6 +242,7 @@ class Triangulation {
   std::vector<bool> dummy_;  // per vertex
   std::vector<Face> faces_;
   std::size_t live_vertices_ = 0, dummies_ = 0;
+  uint64_t revision_ = 0;
   // Where the next walk starts, and the walk's random choices: queries
   // move them too (mutable), which changes no answer.
   uint32_t last_face_ = 0;                // where the last operation ended

@@ -17,7 +17,7 @@
 
 #include <check.h>
 
-#include "new_triangulation.hpp"
+#include "dummies/dummy_points.hpp"
 #include "run_suite.hpp"
 
 using namespace hdt::mesh;
@@ -120,7 +120,7 @@ START_TEST(wide_rows_genus_2) {
   // The dummy points alone, then the origin and 40 points on a circle
   // about it (a row of 16 entries and more takes another path), then
   // random points.
-  Triangulation t = new_triangulation(2);
+  Triangulation t = hdt::dummies::new_triangulation(2);
   check_both_paths(t);
   t.insert(0, 0);
   for (int k = 0; k < 40; ++k) t.insert(0.1 * std::cos(k * M_PI / 20), 0.1 * std::sin(k * M_PI / 20));
@@ -136,7 +136,7 @@ END_TEST
 
 START_TEST(wide_rows_spread) {
   for (int genus : {2, 3}) {
-    Triangulation t = new_triangulation(genus);
+    Triangulation t = hdt::dummies::new_triangulation(genus);
     fill(t, 500, 0.97, 7 + genus);
     t.remove_dummies();
     check_both_paths(t);
@@ -160,7 +160,7 @@ bool build_throws(const Triangulation &t, bool wide) {
 // the rows before it written).
 START_TEST(broken_star_found_before_writing) {
   for (bool wide : {false, true}) {
-    Triangulation t = new_triangulation(2);
+    Triangulation t = hdt::dummies::new_triangulation(2);
     fill(t, 200, 0.6, 3);
     // Face 0's link about its corner 0 points to a face without that vertex.
     Face &f = const_cast<std::vector<Face> &>(t.faces())[0];
@@ -181,7 +181,7 @@ END_TEST
 // throws on either path (the 64-bit one orders entry by entry).
 START_TEST(star_closing_too_soon_found) {
   for (bool wide : {false, true}) {
-    Triangulation t = new_triangulation(2);
+    Triangulation t = hdt::dummies::new_triangulation(2);
     fill(t, 200, 0.6, 5);
     std::vector<StarEntry> star;
     uint32_t v = 0;

@@ -15,7 +15,7 @@
 
 #include <check.h>
 
-#include "new_triangulation.hpp"
+#include "dummies/dummy_points.hpp"
 #include "run_suite.hpp"
 
 using namespace hdt::mesh;
@@ -68,7 +68,7 @@ void insert_both(Triangulation &a, Triangulation &b, uint32_t f, const Point &p)
 
 START_TEST(circumcentre_inserted_from_its_face_as_by_insert) {
   const int genus = _i == 0 ? 2 : 3;
-  Triangulation a = new_triangulation(genus), b = new_triangulation(genus);
+  Triangulation a = hdt::dummies::new_triangulation(genus), b = hdt::dummies::new_triangulation(genus);
   fill(a, b, 60, 7 + unsigned(_i));
   std::mt19937_64 rng(11);
   for (int k = 0; k < 200; ++k) {
@@ -84,7 +84,7 @@ END_TEST
 // A point on or outside the face's circle is refused with nothing changed
 // (refinement then leaves the face); one inside is inserted as by insert().
 START_TEST(point_outside_the_circle_is_refused) {
-  Triangulation a = new_triangulation(2), b = new_triangulation(2);
+  Triangulation a = hdt::dummies::new_triangulation(2), b = hdt::dummies::new_triangulation(2);
   fill(a, b, 60, 5);
   std::mt19937_64 rng(13);
   int outside = 0, inside = 0;
@@ -118,7 +118,7 @@ START_TEST(point_outside_the_circle_is_refused) {
 END_TEST
 
 START_TEST(unknown_face_is_refused) {
-  Triangulation t = new_triangulation(2);
+  Triangulation t = hdt::dummies::new_triangulation(2);
   std::vector<uint32_t> created;
   const std::size_t faces = t.faces().size();
   bool thrown = false;

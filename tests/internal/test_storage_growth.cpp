@@ -14,7 +14,7 @@
 
 #include <check.h>
 
-#include "new_triangulation.hpp"
+#include "dummies/dummy_points.hpp"
 #include "run_suite.hpp"
 
 using namespace hdt::mesh;
@@ -36,7 +36,7 @@ std::vector<double> points(std::size_t n, unsigned seed) {
 // How many times the faces' storage moves while n points go in through
 // insert_many, k at a time (k = 0: one insert() a point).
 int moves_while_inserting(int genus, std::size_t n, std::size_t k, std::size_t *faces) {
-  Triangulation t = new_triangulation(genus);
+  Triangulation t = hdt::dummies::new_triangulation(genus);
   const std::vector<double> xy = points(n, 11);
   std::vector<uint32_t> ids(n);
   const Face *storage = t.faces().data();
