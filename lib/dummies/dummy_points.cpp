@@ -21,6 +21,7 @@
 #include <string>
 
 #include "dummies/dummy_thinning.hpp"
+#include "group/cyclic.hpp"
 #include "mesh/editor.hpp"
 #include "predicates/representative.hpp"
 #include "surface/polygon.hpp"
@@ -77,7 +78,7 @@ class DummyBuilder {
     std::vector<int> vertex_of_step{0};
     for (int k = 0, step = 0; step < n; ++step) {
       cycle.push_back(static_cast<group::Letter>((k + 2 * g) % n));
-      k = ((k - 2 * g - 1) % n + n) % n;
+      k = group::cyclic(k - 2 * g - 1, n);
       vertex_of_step.push_back(k);
     }
     std::vector<TranslationId> vertex_copy(n, 0);
@@ -104,7 +105,7 @@ class DummyBuilder {
     // Across side s_k, g_k(B_{k+2g}) = (g_k 0, m_k, v_{k-1}) meets A_k and
     // g_k(A_{k+2g}) = (g_k 0, v_k, m_k) meets B_k.
     std::vector<Face> built(2 * std::size_t(n));
-    auto A = [&](int k) { return uint32_t(2 * ((k % n + n) % n)); };
+    auto A = [&](int k) { return uint32_t(2 * group::cyclic(k, n)); };
     auto B = [&](int k) { return A(k) + 1; };
     for (int k = 0; k < n; ++k) {
       const Corner o{0, 0}, a{1, vertex_copy[(k + n - 1) % n]}, b{1, vertex_copy[k]}, m = midpoint(k);

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "group/cyclic.hpp"
+
 namespace hdt::group {
 
 Presentation::Presentation(int genus) : genus_(genus) {
@@ -10,7 +12,7 @@ Presentation::Presentation(int genus) : genus_(genus) {
 
 Letter Presentation::relator_letter(int j) const {
   const int64_t n = letter_count();
-  const int64_t jj = ((j % n) + n) % n;
+  const int64_t jj = cyclic<int64_t>(j, n);
   return static_cast<Letter>((jj * relator_step()) % n);
 }
 

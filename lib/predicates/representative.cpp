@@ -7,6 +7,7 @@
 
 #include "exact/unit_disk.hpp"
 #include "group/canonical.hpp"
+#include "group/cyclic.hpp"
 #include "group/word_matrix.hpp"
 
 namespace hdt::predicates {
@@ -119,9 +120,9 @@ Representative representative(Kernel &kernel, const TranslatedPoint &point) {
   if (on.size() != 2) throw std::logic_error("representative: a point on more than two side lines of F_g");
   int k = (on[0] == 0 && on[1] == n - 1) ? n - 1 : on[0];
   while (k != 0) {
-    const Letter g = static_cast<Letter>(((k - half) % n + n) % n);
+    const Letter g = static_cast<Letter>(group::cyclic(k - half, n));
     h = prepend(kernel, g, h);
-    k = ((k - half - 1) % n + n) % n;
+    k = group::cyclic(k - half - 1, n);
   }
   return {h, Representative::vertex, 0};
 }

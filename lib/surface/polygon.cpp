@@ -43,7 +43,7 @@ struct Magnitudes {
 template <class RadiusSquared>
 Complex<double> polygon_point(Magnitudes &cache, int genus, int64_t j, RadiusSquared radius_squared) {
   const int64_t g = genus, n = 8 * g;
-  j = ((j % n) + n) % n;
+  j = group::cyclic(j, n);
   const int64_t half_turn = j % (4 * g), a = std::min(half_turn, 4 * g - half_turn);
   if (cache.genus != genus) {
     cache.value.assign(2 * g + 1, std::numeric_limits<double>::quiet_NaN());

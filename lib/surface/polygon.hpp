@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "exact/multiprecision.hpp"
+#include "group/cyclic.hpp"
 #include "group/generators.hpp"
 #include "group/moebius.hpp"
 #include "group/presentation.hpp"
@@ -66,7 +67,7 @@ Complex<T> polygon_vertex(int genus, int k) {
   using std::sin;
   using std::sqrt;
   const int n = 4 * genus;
-  k = ((k % n) + n) % n;
+  k = group::cyclic(k, n);
   const T pi = exact::pi<T>();
   const T radius = sqrt(cos(pi / T(2 * genus)));
   const T angle = pi * T(2 * k + 1) / T(4 * genus);
@@ -80,7 +81,7 @@ Complex<T> polygon_side_midpoint(int genus, int k) {
   using std::sqrt;
   using std::tan;
   const int n = 4 * genus;
-  k = ((k % n) + n) % n;
+  k = group::cyclic(k, n);
   const T pi = exact::pi<T>();
   const T A = group::half_trace<T>(genus);
   const T radius = sqrt((A - T(1)) / (A + T(1)));

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "group/cyclic.hpp"
 #include "group/generators.hpp"
 #include "group/word_matrix.hpp"
 
@@ -45,7 +46,7 @@ Surface::Surface(int genus)
     const double width = 2 * M_PI / sectors;
     const long first = long(std::floor((theta - beta + M_PI) / width));
     const long last = long(std::floor((theta + beta + M_PI) / width));
-    for (long j = first; j <= last; ++j) sides_by_sector_[std::size_t(((j % sectors) + sectors) % sectors)].push_back(k);
+    for (long j = first; j <= last; ++j) sides_by_sector_[std::size_t(group::cyclic(j, long(sectors)))].push_back(k);
   }
 }
 
@@ -58,7 +59,7 @@ const group::ExactLorentz &Surface::exact_generator(int k) const {
 const std::vector<int> &Surface::sides_near(double angle) const {
   const int sectors = int(sides_by_sector_.size());
   const long j = long(std::floor((angle + M_PI) / (2 * M_PI / sectors)));
-  return sides_by_sector_[std::size_t(((j % sectors) + sectors) % sectors)];
+  return sides_by_sector_[std::size_t(group::cyclic(j, long(sectors)))];
 }
 
 int32_t Surface::add_site(const ExactSite &site, const group::Complex<SiteReal> *approximation,
