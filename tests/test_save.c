@@ -265,6 +265,23 @@ START_TEST(truncated_and_flipped) {
 }
 END_TEST
 
+/* The checksum is the standard CRC-32 (ISO-HDLC, as zlib's crc32), stored
+   little-endian, so that any CRC-32 tool can check a file: the test's own
+   CRC gives the catalogue's check value 0xCBF43926 for "123456789" (so it
+   is that CRC, and round_trips' comparison with it pins the library's), the
+   file's last 4 bytes are it of the bytes before, and the CRC of the whole
+   file, checksum included, is that CRC's constant 0x2144DF1C. */
+START_TEST(checksum_is_standard_crc32) {
+  const unsigned char check[] = "123456789";
+  ck_assert_uint_eq(crc32_of(check, 9), 0xCBF43926u);
+  ck_assert_uint_eq(crc32_of(check, 0), 0);
+  bytes_t b = small_file();
+  ck_assert_uint_eq(get32(b.b + b.n - 4), crc32_of(b.b, b.n - 4));
+  ck_assert_uint_eq(crc32_of(b.b, b.n), 0x2144DF1Cu);
+  free(b.b);
+}
+END_TEST
+
 /* Under a sanitizer or valgrind (which sets LD_PRELOAD) the library runs
    10-40 times slower: the long cases then do a sample of their work. */
 static int slow_tools(void) { return UNDER_SANITIZER || getenv("LD_PRELOAD") != NULL; }
@@ -598,8 +615,15 @@ START_TEST(load_cost) {
 END_TEST
 
 int main(void) {
-  const TTest *const tests[] = {round_trips,   two_call_pattern,       truncated_and_flipped, crafted_bytes,
-                                messages_name_the_byte, flipped_edges_are_refused, huge_counts_allocate_nothing,
-                                crafted_words_are_checked, load_cost};
+  const TTest *const tests[] = {round_trips,
+                                two_call_pattern,
+                                truncated_and_flipped,
+                                checksum_is_standard_crc32,
+                                crafted_bytes,
+                                messages_name_the_byte,
+                                flipped_edges_are_refused,
+                                huge_counts_allocate_nothing,
+                                crafted_words_are_checked,
+                                load_cost};
   return run_tests("save", tests, sizeof tests / sizeof tests[0]);
 }

@@ -105,8 +105,6 @@ static void note_removed(state_t *s, uint32_t v) {
   s->pos[v] = SIZE_MAX;
 }
 
-/* ---- Face snapshots (for refused removals) ---- */
-
 /* ---- Id-free face keys (see the comment at the top) ---- */
 
 /* Interned canonical words, shared by both triangulations. */
@@ -259,225 +257,320 @@ static key_t *face_keys(const hdt_triangulation *t, const uint32_t *label, words
 
 /* ---- The soak ---- */
 
-static void soak(int g, uint64_t seed) {
-  const double scale = test_scale(), t0 = seconds();
-  const size_t ops = (size_t)(100000 * scale + 0.5);
-  const size_t validate_every = 5000;
-  uint64_t rng = seed;
-  state_t s = {0};
-  {
-    const hdt_status st = hdt_create(&s.t, g);
-    expect(st == HDT_OK, "hdt_create(%d): %s (%s)", g, hdt_status_string(st), hdt_last_error_message());
-  }
-  hdt_triangulation *t = s.t;
-  grow(&s, hdt_vertex_id_bound(t) + 1);
-  size_t n_single = 0, n_batches = 0, n_batch_points = 0, n_dups = 0, n_removed = 0, n_refused = 0,
-         n_refusals_checked = 0, n_validate = 0, peak = 0;
-  double t_validate = 0;
+/* Operations between two hdt_validate checkpoints. */
+#define VALIDATE_EVERY 5000
+
+/* What the closing report counts. */
+typedef struct tally_t {
+  size_t single, batches, batch_points, dups, removed, refused, refusals_checked, validations, peak;
+  double t_validate; /* seconds in hdt_validate */
+} tally_t;
+
+/* One soak: the handle and the record of it, the PRNG, the operations done
+   so far and the checkpoints to come. */
+typedef struct soak_t {
+  int g;
+  uint64_t rng;
+  state_t s;
+  size_t op;
+  size_t next_dummy;    /* index of the next hdt_remove_dummies in the plan */
+  size_t next_validate; /* operation count of the next checkpoint */
+  tally_t n;
   char what[160];
+} soak_t;
+
+/* One new point: hdt_insert makes it a new live user vertex. */
+static void insert_one(soak_t *k) {
+  double x, y;
+  random_point(&k->rng, &x, &y);
+  uint32_t v = UINT32_MAX;
+  const hdt_status st = hdt_insert(k->s.t, x, y, &v);
+  snprintf(k->what, sizeof k->what, "g=%d, op %zu: hdt_insert(%.17g, %.17g)", k->g, k->op, x, y);
+  expect(st == HDT_OK, "%s: %s (%s)", k->what, hdt_status_string(st), hdt_last_error_message());
+  note_new_user(&k->s, v, x, y, k->what);
+  ++k->n.single, ++k->op;
+}
+
+/* A batch of 2..8 points, sometimes with a live point among them: that one
+   is answered with its vertex, every other with a new vertex or a former
+   dummy. */
+static void insert_batch(soak_t *k) {
+  state_t *s = &k->s;
+  const size_t n = 2 + (size_t)rng_below(&k->rng, 7);
+  double xy[2 * 8];
+  uint32_t ids[8];
+  for (size_t i = 0; i < n; ++i) random_point(&k->rng, &xy[2 * i], &xy[2 * i + 1]);
+  size_t dup_at = SIZE_MAX;
+  uint32_t dup_of = 0;
+  if (rng_below(&k->rng, 4) == 0) {
+    dup_at = (size_t)rng_below(&k->rng, (int)n), dup_of = s->live[rng_below(&k->rng, (int)s->nlive)];
+    xy[2 * dup_at] = s->px[dup_of], xy[2 * dup_at + 1] = s->py[dup_of];
+  }
+  const size_t bound = hdt_vertex_id_bound(s->t);
+  const hdt_status st = hdt_insert_many(s->t, xy, n, ids);
+  snprintf(k->what, sizeof k->what, "g=%d, op %zu: hdt_insert_many(%zu points)", k->g, k->op, n);
+  expect(st == HDT_OK, "%s: %s (%s)", k->what, hdt_status_string(st), hdt_last_error_message());
+  for (size_t i = 0; i < n; ++i) {
+    if (i == dup_at) {
+      expect(ids[i] == dup_of, "%s: the live point of vertex %u got vertex %u", k->what, dup_of, ids[i]);
+      continue;
+    }
+    expect(ids[i] >= bound || hdt_vertex_is_dummy(s->t, ids[i]) == 0, "%s: point %zu got old vertex %u", k->what,
+           i, ids[i]);
+    grow(s, (size_t)ids[i] + 1);
+    if (s->pos[ids[i]] == SIZE_MAX) note_new_user(s, ids[i], xy[2 * i], xy[2 * i + 1], k->what);
+  }
+  ++k->n.batches, k->n.batch_points += n, k->op += n;
+}
+
+/* A live point again: HDT_EEXISTS naming its vertex, and no vertex added. */
+static void insert_duplicate(soak_t *k) {
+  hdt_triangulation *t = k->s.t;
+  const uint32_t v = k->s.live[rng_below(&k->rng, (int)k->s.nlive)];
+  const size_t V = hdt_vertex_count(t);
+  uint32_t got = UINT32_MAX;
+  const hdt_status st = hdt_insert(t, k->s.px[v], k->s.py[v], &got);
+  expect(st == HDT_EEXISTS && got == v, "g=%d, op %zu: re-inserting the point of vertex %u: %s, vertex %u (%s)",
+         k->g, k->op, v, hdt_status_string(st), got, hdt_last_error_message());
+  expect(hdt_vertex_count(t) == V, "g=%d, op %zu: a duplicate changed the vertex count", k->g, k->op);
+  ++k->n.dups, ++k->op;
+}
+
+/* After a refused removal of v: the counts are V, F and bound as before and
+   v is still a user vertex; when `before` is given, the faces are the same
+   id for id. */
+static void expect_refusal_changed_nothing(soak_t *k, uint32_t v, size_t V, size_t F, size_t bound,
+                                           const faces_t *before) {
+  const hdt_triangulation *t = k->s.t;
+  expect(hdt_vertex_count(t) == V && hdt_face_count(t) == F && hdt_vertex_id_bound(t) == bound &&
+             hdt_vertex_is_dummy(t, v) == 0,
+         "g=%d, op %zu: a refused removal of vertex %u changed the counts", k->g, k->op, v);
+  if (!before) return;
+  faces_t after = read_faces(t);
+  expect(after.n == before->n && memcmp(after.v, before->v, 3 * after.n * sizeof *after.v) == 0 &&
+             memcmp(after.tr, before->tr, 3 * after.n * sizeof *after.tr) == 0,
+         "g=%d, op %zu: a refused removal of vertex %u changed the faces", k->g, k->op, v);
+  faces_free(&after);
+  ++k->n.refusals_checked;
+}
+
+/* Removes a random live user vertex: it goes (one vertex fewer, its id
+   dead), or the removal is refused with HDT_ENOTSUP and changes nothing. */
+static void remove_one(soak_t *k) {
+  hdt_triangulation *t = k->s.t;
+  const uint32_t v = k->s.live[rng_below(&k->rng, (int)k->s.nlive)];
+  const size_t V = hdt_vertex_count(t), F = hdt_face_count(t), bound = hdt_vertex_id_bound(t);
+  /* Refusals are only possible once hdt_remove_dummies has run (with every
+     dummy present, any superset keeps the guarantee); the full face
+     comparison costs O(F), so it runs for every removal while the
+     triangulation is small (when refusals happen) and for one in 20 later. */
+  const int full_check = k->next_dummy > 0 && (F < 4000 || rng_below(&k->rng, 20) == 0);
+  faces_t before = {0, NULL, NULL};
+  if (full_check) before = read_faces(t);
+  const hdt_status st = hdt_remove_vertex(t, v);
+  if (st == HDT_OK) {
+    expect(hdt_vertex_count(t) == V - 1 && hdt_vertex_is_dummy(t, v) == -1,
+           "g=%d, op %zu: vertex %u removed, count %zu -> %zu", k->g, k->op, v, V, hdt_vertex_count(t));
+    note_removed(&k->s, v);
+    ++k->n.removed;
+  } else {
+    expect(st == HDT_ENOTSUP, "g=%d, op %zu: hdt_remove_vertex(%u): %s (%s)", k->g, k->op, v, hdt_status_string(st),
+           hdt_last_error_message());
+    expect_refusal_changed_nothing(k, v, V, F, bound, full_check ? &before : NULL);
+    ++k->n.refused;
+  }
+  if (full_check) faces_free(&before);
+  ++k->op;
+}
+
+/* Once the operation count reaches the next entry of plan[0..count):
+   hdt_remove_dummies succeeds and reports the dummies left truthfully. */
+static void maybe_remove_dummies(soak_t *k, const size_t *plan, size_t count) {
+  if (k->next_dummy >= count || k->op < plan[k->next_dummy]) return;
+  hdt_triangulation *t = k->s.t;
+  size_t remaining = SIZE_MAX;
+  const hdt_status st = hdt_remove_dummies(t, &remaining);
+  expect(st == HDT_OK && remaining == hdt_dummy_count(t), "g=%d, op %zu: hdt_remove_dummies: %s, %zu left (%s)",
+         k->g, k->op, hdt_status_string(st), remaining, hdt_last_error_message());
+  printf("soak g=%d: hdt_remove_dummies after %zu operations (%zu vertices): %zu dummies left\n", k->g, k->op,
+         hdt_vertex_count(t), remaining);
+  ++k->next_dummy;
+}
+
+/* Every VALIDATE_EVERY operations: hdt_validate passes, the vertices are the
+   live user vertices of the record plus the dummies, and the faces number
+   2 (V + 2g - 2) (Euler). */
+static void maybe_validate(soak_t *k) {
+  if (k->op < k->next_validate) return;
+  const hdt_triangulation *t = k->s.t;
+  const double tv = seconds();
+  expect_valid(t, "soak checkpoint", k->op);
+  k->n.t_validate += seconds() - tv;
+  ++k->n.validations;
+  expect(hdt_vertex_count(t) == k->s.nlive + hdt_dummy_count(t),
+         "g=%d, op %zu: %zu vertices, but %zu live user vertices and %zu dummies", k->g, k->op, hdt_vertex_count(t),
+         k->s.nlive, hdt_dummy_count(t));
+  expect(hdt_face_count(t) == 2 * (hdt_vertex_count(t) + 2 * (size_t)k->g - 2),
+         "g=%d, op %zu: %zu faces, %zu vertices", k->g, k->op, hdt_face_count(t), hdt_vertex_count(t));
+  k->next_validate += VALIDATE_EVERY;
+}
+
+/* The mixed operations, `ops` of them, with their checkpoints. */
+static void run_operations(soak_t *k, size_t ops) {
   /* hdt_remove_dummies after these many operations (early, with a few
      hundred points or less: some dummies stay and removals can be refused;
      later: none should stay), and at the end. */
-  const size_t dummy_points[] = {ops < 20000 ? ops / 100 : 200, ops / 50, ops / 10, ops / 3};
-  size_t next_dummy = 0, next_validate = validate_every;
-
-  size_t op = 0;
-  while (op < ops) {
-    const int r = rng_below(&rng, 100);
-    if (r < 44 || s.nlive == 0) { /* one new point */
-      double x, y;
-      random_point(&rng, &x, &y);
-      uint32_t v = UINT32_MAX;
-      const hdt_status st = hdt_insert(t, x, y, &v);
-      snprintf(what, sizeof what, "g=%d, op %zu: hdt_insert(%.17g, %.17g)", g, op, x, y);
-      expect(st == HDT_OK, "%s: %s (%s)", what, hdt_status_string(st), hdt_last_error_message());
-      note_new_user(&s, v, x, y, what);
-      ++n_single, ++op;
-    } else if (r < 48) { /* a batch of 2..8 points, sometimes with a live point among them */
-      const size_t n = 2 + (size_t)rng_below(&rng, 7);
-      double xy[2 * 8];
-      uint32_t ids[8];
-      for (size_t i = 0; i < n; ++i) random_point(&rng, &xy[2 * i], &xy[2 * i + 1]);
-      size_t dup_at = SIZE_MAX;
-      uint32_t dup_of = 0;
-      if (rng_below(&rng, 4) == 0) {
-        dup_at = (size_t)rng_below(&rng, (int)n), dup_of = s.live[rng_below(&rng, (int)s.nlive)];
-        xy[2 * dup_at] = s.px[dup_of], xy[2 * dup_at + 1] = s.py[dup_of];
-      }
-      const size_t bound = hdt_vertex_id_bound(t);
-      const hdt_status st = hdt_insert_many(t, xy, n, ids);
-      snprintf(what, sizeof what, "g=%d, op %zu: hdt_insert_many(%zu points)", g, op, n);
-      expect(st == HDT_OK, "%s: %s (%s)", what, hdt_status_string(st), hdt_last_error_message());
-      for (size_t i = 0; i < n; ++i) {
-        if (i == dup_at) {
-          expect(ids[i] == dup_of, "%s: the live point of vertex %u got vertex %u", what, dup_of, ids[i]);
-          continue;
-        }
-        expect(ids[i] >= bound || hdt_vertex_is_dummy(t, ids[i]) == 0, "%s: point %zu got old vertex %u", what, i,
-               ids[i]);
-        grow(&s, (size_t)ids[i] + 1);
-        if (s.pos[ids[i]] == SIZE_MAX) note_new_user(&s, ids[i], xy[2 * i], xy[2 * i + 1], what);
-      }
-      ++n_batches, n_batch_points += n, op += n;
-    } else if (r < 53) { /* a live point again: HDT_EEXISTS naming its vertex */
-      const uint32_t v = s.live[rng_below(&rng, (int)s.nlive)];
-      const size_t V = hdt_vertex_count(t);
-      uint32_t got = UINT32_MAX;
-      const hdt_status st = hdt_insert(t, s.px[v], s.py[v], &got);
-      expect(st == HDT_EEXISTS && got == v, "g=%d, op %zu: re-inserting the point of vertex %u: %s, vertex %u (%s)",
-             g, op, v, hdt_status_string(st), got, hdt_last_error_message());
-      expect(hdt_vertex_count(t) == V, "g=%d, op %zu: a duplicate changed the vertex count", g, op);
-      ++n_dups, ++op;
-    } else { /* remove a random live user vertex */
-      const uint32_t v = s.live[rng_below(&rng, (int)s.nlive)];
-      const size_t V = hdt_vertex_count(t), F = hdt_face_count(t), bound = hdt_vertex_id_bound(t);
-      /* Refusals are only possible once hdt_remove_dummies has run (with
-         every dummy present, any superset keeps the guarantee); the full
-         face comparison costs O(F), so it runs for every removal while the
-         triangulation is small (when refusals happen) and for one in 20
-         later. */
-      const int full_check = next_dummy > 0 && (F < 4000 || rng_below(&rng, 20) == 0);
-      faces_t before = {0, NULL, NULL};
-      if (full_check) before = read_faces(t);
-      const hdt_status st = hdt_remove_vertex(t, v);
-      if (st == HDT_OK) {
-        expect(hdt_vertex_count(t) == V - 1 && hdt_vertex_is_dummy(t, v) == -1,
-               "g=%d, op %zu: vertex %u removed, count %zu -> %zu", g, op, v, V, hdt_vertex_count(t));
-        note_removed(&s, v);
-        ++n_removed;
-      } else {
-        expect(st == HDT_ENOTSUP, "g=%d, op %zu: hdt_remove_vertex(%u): %s (%s)", g, op, v, hdt_status_string(st),
-               hdt_last_error_message());
-        expect(hdt_vertex_count(t) == V && hdt_face_count(t) == F && hdt_vertex_id_bound(t) == bound &&
-                   hdt_vertex_is_dummy(t, v) == 0,
-               "g=%d, op %zu: a refused removal of vertex %u changed the counts", g, op, v);
-        if (full_check) {
-          faces_t after = read_faces(t);
-          expect(after.n == before.n && memcmp(after.v, before.v, 3 * after.n * sizeof *after.v) == 0 &&
-                     memcmp(after.tr, before.tr, 3 * after.n * sizeof *after.tr) == 0,
-                 "g=%d, op %zu: a refused removal of vertex %u changed the faces", g, op, v);
-          faces_free(&after);
-          ++n_refusals_checked;
-        }
-        ++n_refused;
-      }
-      if (full_check) faces_free(&before);
-      ++op;
-    }
-    if (hdt_vertex_count(t) > peak) peak = hdt_vertex_count(t);
-    if (next_dummy < sizeof dummy_points / sizeof dummy_points[0] && op >= dummy_points[next_dummy]) {
-      size_t remaining = SIZE_MAX;
-      const hdt_status st = hdt_remove_dummies(t, &remaining);
-      expect(st == HDT_OK && remaining == hdt_dummy_count(t), "g=%d, op %zu: hdt_remove_dummies: %s, %zu left (%s)",
-             g, op, hdt_status_string(st), remaining, hdt_last_error_message());
-      printf("soak g=%d: hdt_remove_dummies after %zu operations (%zu vertices): %zu dummies left\n", g, op,
-             hdt_vertex_count(t), remaining);
-      ++next_dummy;
-    }
-    if (op >= next_validate) {
-      const double tv = seconds();
-      expect_valid(t, "soak checkpoint", op);
-      t_validate += seconds() - tv;
-      ++n_validate;
-      expect(hdt_vertex_count(t) == s.nlive + hdt_dummy_count(t),
-             "g=%d, op %zu: %zu vertices, but %zu live user vertices and %zu dummies", g, op, hdt_vertex_count(t),
-             s.nlive, hdt_dummy_count(t));
-      expect(hdt_face_count(t) == 2 * (hdt_vertex_count(t) + 2 * (size_t)g - 2),
-             "g=%d, op %zu: %zu faces, %zu vertices", g, op, hdt_face_count(t), hdt_vertex_count(t));
-      next_validate += validate_every;
-    }
+  const size_t plan[] = {ops < 20000 ? ops / 100 : 200, ops / 50, ops / 10, ops / 3};
+  while (k->op < ops) {
+    const int r = rng_below(&k->rng, 100);
+    if (r < 44 || k->s.nlive == 0) insert_one(k);
+    else if (r < 48) insert_batch(k);
+    else if (r < 53) insert_duplicate(k);
+    else remove_one(k);
+    if (hdt_vertex_count(k->s.t) > k->n.peak) k->n.peak = hdt_vertex_count(k->s.t);
+    maybe_remove_dummies(k, plan, sizeof plan / sizeof plan[0]);
+    maybe_validate(k);
   }
-  size_t left_t = SIZE_MAX;
-  ck_assert_int_eq(hdt_remove_dummies(t, &left_t), HDT_OK);
-  expect_valid(t, "soak end", op);
-  ++n_validate;
-  expect(hdt_vertex_count(t) == s.nlive + left_t, "g=%d: %zu vertices at the end, %zu live user points, %zu dummies",
-         g, hdt_vertex_count(t), s.nlive, left_t);
-  const double t_soak = seconds() - t0;
+}
 
-  /* From scratch: the surviving points, labelled by rank of their soak id. */
-  const size_t bound = hdt_vertex_id_bound(t), n = s.nlive;
-  uint32_t *label_t = malloc(bound * sizeof *label_t + 1);
-  double *xy = malloc(2 * n * sizeof *xy + 1);
-  uint32_t *ids_u = malloc(n * sizeof *ids_u + 1);
-  ck_assert(label_t && xy && ids_u);
+/* The last hdt_remove_dummies and validation; the vertices are the live
+   user vertices plus the dummies left, which it gives. */
+static size_t finish_operations(soak_t *k) {
+  hdt_triangulation *t = k->s.t;
+  size_t left = SIZE_MAX;
+  ck_assert_int_eq(hdt_remove_dummies(t, &left), HDT_OK);
+  expect_valid(t, "soak end", k->op);
+  ++k->n.validations;
+  expect(hdt_vertex_count(t) == k->s.nlive + left, "g=%d: %zu vertices at the end, %zu live user points, %zu dummies",
+         k->g, hdt_vertex_count(t), k->s.nlive, left);
+  return left;
+}
+
+/* ---- From scratch ---- */
+
+/* The labels of the soak's vertex ids, by rank among the surviving ids
+   (UINT32_MAX for the others), and the survivors' points in that order into
+   *xy (both malloc'ed). */
+static uint32_t *label_survivors(const state_t *s, double **xy) {
+  const size_t bound = hdt_vertex_id_bound(s->t);
+  uint32_t *label = malloc(bound * sizeof *label + 1);
+  *xy = malloc(2 * s->nlive * sizeof **xy + 1);
+  ck_assert(label && *xy);
   size_t k = 0;
   for (uint32_t v = 0; v < bound; ++v) {
-    label_t[v] = UINT32_MAX;
-    if (v < s.cap && s.pos[v] != SIZE_MAX) {
-      label_t[v] = (uint32_t)k;
-      xy[2 * k] = s.px[v], xy[2 * k + 1] = s.py[v];
+    label[v] = UINT32_MAX;
+    if (v < s->cap && s->pos[v] != SIZE_MAX) {
+      label[v] = (uint32_t)k;
+      (*xy)[2 * k] = s->px[v], (*xy)[2 * k + 1] = s->py[v];
       ++k;
     }
   }
-  ck_assert_uint_eq(k, n);
-  hdt_triangulation *u = NULL;
-  ck_assert_int_eq(hdt_create(&u, g), HDT_OK);
-  {
-    const hdt_status st = hdt_insert_many(u, xy, n, ids_u);
-    expect(st == HDT_OK, "g=%d: from scratch, hdt_insert_many(%zu): %s (%s)", g, n, hdt_status_string(st),
-           hdt_last_error_message());
-  }
-  size_t left_u = SIZE_MAX;
-  ck_assert_int_eq(hdt_remove_dummies(u, &left_u), HDT_OK);
-  expect_valid(u, "from scratch", op);
-  const size_t bound_u = hdt_vertex_id_bound(u);
-  uint32_t *label_u = malloc(bound_u * sizeof *label_u + 1);
-  ck_assert_ptr_nonnull(label_u);
-  for (size_t v = 0; v < bound_u; ++v) label_u[v] = UINT32_MAX;
-  for (size_t i = 0; i < n; ++i) {
-    expect(ids_u[i] < bound_u && label_u[ids_u[i]] == UINT32_MAX,
-           "g=%d: from scratch, point %zu got vertex %u, already given (two survivors with one representative?)", g,
-           i, ids_u[i]);
-    label_u[ids_u[i]] = (uint32_t)i;
-  }
-  expect(hdt_vertex_count(u) == n + left_u, "g=%d: from scratch, %zu vertices for %zu points and %zu dummies", g,
-         hdt_vertex_count(u), n, left_u);
+  ck_assert_uint_eq(k, s->nlive);
+  return label;
+}
 
+typedef struct fresh_t {
+  hdt_triangulation *u;
+  uint32_t *label; /* by vertex id: index of its point, UINT32_MAX for none */
+  size_t left;     /* dummies left */
+} fresh_t;
+
+/* The triangulation of the n points xy built in one hdt_insert_many, its
+   dummies removed: valid, one distinct vertex per point, no other vertices
+   than those and the dummies left. */
+static fresh_t fresh_triangulation(int g, const double *xy, size_t n, size_t op) {
+  fresh_t f = {new_triangulation(g), NULL, SIZE_MAX};
+  uint32_t *ids = malloc(n * sizeof *ids + 1);
+  ck_assert_ptr_nonnull(ids);
+  const hdt_status st = hdt_insert_many(f.u, xy, n, ids);
+  expect(st == HDT_OK, "g=%d: from scratch, hdt_insert_many(%zu): %s (%s)", g, n, hdt_status_string(st),
+         hdt_last_error_message());
+  ck_assert_int_eq(hdt_remove_dummies(f.u, &f.left), HDT_OK);
+  expect_valid(f.u, "from scratch", op);
+  const size_t bound = hdt_vertex_id_bound(f.u);
+  f.label = malloc(bound * sizeof *f.label + 1);
+  ck_assert_ptr_nonnull(f.label);
+  for (size_t v = 0; v < bound; ++v) f.label[v] = UINT32_MAX;
+  for (size_t i = 0; i < n; ++i) {
+    expect(ids[i] < bound && f.label[ids[i]] == UINT32_MAX,
+           "g=%d: from scratch, point %zu got vertex %u, already given (two survivors with one representative?)", g,
+           i, ids[i]);
+    f.label[ids[i]] = (uint32_t)i;
+  }
+  expect(hdt_vertex_count(f.u) == n + f.left, "g=%d: from scratch, %zu vertices for %zu points and %zu dummies", g,
+         hdt_vertex_count(f.u), n, f.left);
+  free(ids);
+  return f;
+}
+
+/* t (labels label_t) and u (labels label_u) have the same faces on M_g:
+   equal sorted lists of id-free keys. */
+static void expect_same_faces(int g, const hdt_triangulation *t, const uint32_t *label_t, const hdt_triangulation *u,
+                              const uint32_t *label_u, double t0) {
+  words_t ws = {0, 0, NULL, NULL, 0};
+  size_t nt = 0, nu = 0;
+  key_t *kt = face_keys(t, label_t, &ws, &nt);
+  key_t *ku = face_keys(u, label_u, &ws, &nu);
+  expect(nt == nu, "g=%d: %zu faces after the soak, %zu from scratch", g, nt, nu);
+  for (size_t i = 0; i < nt; ++i) {
+    if (key_cmp(&kt[i], &ku[i]) == 0) continue;
+    /* Report the first key found in one list and not the other. */
+    const key_t *miss = key_cmp(&kt[i], &ku[i]) < 0 ? &kt[i] : &ku[i];
+    char w1[256], w2[256];
+    ck_abort_msg("g=%d: the soak's faces differ from the fresh triangulation's (%zu faces each): face of points "
+                 "%u %u %u (corners at [] [%s] [%s]) is only in %s",
+                 g, nt, miss->l[0], miss->l[1], miss->l[2], word_str(&ws.w[miss->w[0]], w1, sizeof w1),
+                 word_str(&ws.w[miss->w[1]], w2, sizeof w2), miss == &kt[i] ? "the soak" : "the fresh one");
+  }
+  printf("soak g=%d: %zu faces equal to the fresh triangulation's (%zu distinct relative words); %.2f s in all\n", g,
+         nt, ws.n, seconds() - t0);
+  free(kt);
+  free(ku);
+  free(ws.w);
+  free(ws.slot);
+}
+
+/* ---- The soak, end to end ---- */
+
+static void print_tally(const soak_t *k, double t_soak) {
+  const tally_t *n = &k->n;
   printf("soak g=%d: %zu operations (%zu single inserts, %zu batches of %zu points, %zu duplicates, %zu removals, "
          "%zu refused, %zu refusals checked face by face); peak %zu vertices, final %zu; %zu validations in %.2f s; "
          "soak %.2f s\n",
-         g, op, n_single, n_batches, n_batch_points, n_dups, n_removed, n_refused, n_refusals_checked, peak,
-         hdt_vertex_count(t), n_validate, t_validate, t_soak);
-  if (left_t != 0 || left_u != 0) {
+         k->g, k->op, n->single, n->batches, n->batch_points, n->dups, n->removed, n->refused, n->refusals_checked,
+         n->peak, hdt_vertex_count(k->s.t), n->validations, n->t_validate, t_soak);
+}
+
+/* The soak of genus g, then the comparison with the fresh triangulation of
+   the survivors: the same faces, or (with dummies left in either) the same
+   number of user vertices. */
+static void soak(int g, uint64_t seed) {
+  const double t0 = seconds();
+  const size_t ops = (size_t)(100000 * test_scale() + 0.5);
+  soak_t k = {.g = g, .rng = seed, .next_validate = VALIDATE_EVERY};
+  k.s.t = new_triangulation(g);
+  hdt_triangulation *t = k.s.t;
+  grow(&k.s, hdt_vertex_id_bound(t) + 1);
+  run_operations(&k, ops);
+  const size_t left_t = finish_operations(&k);
+  const double t_soak = seconds() - t0;
+  double *xy = NULL;
+  uint32_t *label_t = label_survivors(&k.s, &xy);
+  fresh_t f = fresh_triangulation(g, xy, k.s.nlive, k.op);
+  print_tally(&k, t_soak);
+  if (left_t != 0 || f.left != 0) {
     /* Different vertex sets: only the counts can be compared. */
-    printf("soak g=%d: dummies left: %zu in the soak, %zu from scratch; comparing counts only\n", g, left_t, left_u);
-    expect(hdt_vertex_count(t) - left_t == hdt_vertex_count(u) - left_u, "g=%d: %zu and %zu user vertices", g,
-           hdt_vertex_count(t) - left_t, hdt_vertex_count(u) - left_u);
+    printf("soak g=%d: dummies left: %zu in the soak, %zu from scratch; comparing counts only\n", g, left_t, f.left);
+    expect(hdt_vertex_count(t) - left_t == hdt_vertex_count(f.u) - f.left, "g=%d: %zu and %zu user vertices", g,
+           hdt_vertex_count(t) - left_t, hdt_vertex_count(f.u) - f.left);
   } else {
-    words_t ws = {0, 0, NULL, NULL, 0};
-    size_t nt = 0, nu = 0;
-    key_t *kt = face_keys(t, label_t, &ws, &nt);
-    key_t *ku = face_keys(u, label_u, &ws, &nu);
-    expect(nt == nu, "g=%d: %zu faces after the soak, %zu from scratch", g, nt, nu);
-    for (size_t i = 0; i < nt; ++i) {
-      if (key_cmp(&kt[i], &ku[i]) == 0) continue;
-      /* Report the first key found in one list and not the other. */
-      const key_t *miss = key_cmp(&kt[i], &ku[i]) < 0 ? &kt[i] : &ku[i];
-      char w1[256], w2[256];
-      ck_abort_msg("g=%d: the soak's faces differ from the fresh triangulation's (%zu faces each): face of points "
-                   "%u %u %u (corners at [] [%s] [%s]) is only in %s",
-                   g, nt, miss->l[0], miss->l[1], miss->l[2], word_str(&ws.w[miss->w[0]], w1, sizeof w1),
-                   word_str(&ws.w[miss->w[1]], w2, sizeof w2), miss == &kt[i] ? "the soak" : "the fresh one");
-    }
-    printf("soak g=%d: %zu faces equal to the fresh triangulation's (%zu distinct relative words); %.2f s in all\n",
-           g, nt, ws.n, seconds() - t0);
-    free(kt);
-    free(ku);
-    free(ws.w);
-    free(ws.slot);
+    expect_same_faces(g, t, label_t, f.u, f.label, t0);
   }
   fflush(stdout);
-  hdt_destroy(u);
+  hdt_destroy(f.u);
   hdt_destroy(t);
-  free(label_t);
-  free(label_u);
-  free(xy);
-  free(ids_u);
-  free(s.px);
-  free(s.py);
-  free(s.pos);
-  free(s.live);
+  free(label_t), free(f.label), free(xy);
+  free(k.s.px), free(k.s.py), free(k.s.pos), free(k.s.live);
 }
 
 START_TEST(soak_genus_2) { soak(2, UINT64_C(0x50A6002)); }

@@ -678,60 +678,92 @@ static void expect_error(hdt_status got, hdt_status expected, const char *functi
   expect(mentions(msg, keywords), "%s (%s): message \"%s\" names none of \"%s\"", function, what, msg, keywords);
 }
 
-START_TEST(bad_input_is_rejected) {
+/* The bad-input tests each call one kind of bad input on this handle:
+   genus 2, 40 mixed points (PRNG seed 5, its state after them left in *rng);
+   *before is its snapshot. */
+static hdt_triangulation *bad_input_handle(uint64_t *rng, snapshot_t *before) {
   hdt_triangulation *t = new_triangulation(2);
-  uint64_t rng = 5;
+  *rng = 5;
   double good[2 * 40];
-  mixed_points(&rng, 2, 40, good);
+  mixed_points(rng, 2, 40, good);
   insert_many_ok(t, good, 40, "setup");
-  snapshot_t before = snapshot(t);
-  const double nan_ = nan(""), inf = INFINITY;
+  *before = snapshot(t);
+  return t;
+}
 
-  /* hdt_insert: not a point of the open disk. */
-  const struct {
-    double x, y;
-    const char *kw;
-  } bad[] = {{nan_, 0, "nan|finite"},     {0.1, -nan_, "nan|finite"}, {inf, 0, "inf|finite"},
-             {0.2, -inf, "inf|finite"},   {-inf, inf, "inf|finite"},  {1, 0, "disk|unit|circle"},
-             {0, -1, "disk|unit|circle"}, {0.6, 0.8, "disk|unit|circle"},  {-0.8, 0.6, "disk|unit|circle"},
-             {2, 3, "disk|unit|circle"},  {DBL_MAX, 0, "disk|unit|circle"}};
-  const size_t nbad = sizeof bad / sizeof bad[0];
-  for (size_t i = 0; i < nbad; ++i) {
+/* The bad input changed nothing and left the handle valid. */
+static void bad_input_done(hdt_triangulation *t, snapshot_t *before, const char *what) {
+  expect_unchanged(t, before, what);
+  expect_valid(t, what);
+  snapshot_free(before);
+  hdt_destroy(t);
+}
+
+/* Not points of the open disk, and a keyword the message must contain. */
+static const struct {
+  double x, y;
+  const char *kw;
+} bad_points[] = {{NAN, 0, "nan|finite"},        {0.1, -NAN, "nan|finite"},       {INFINITY, 0, "inf|finite"},
+                  {0.2, -INFINITY, "inf|finite"}, {-INFINITY, INFINITY, "inf|finite"}, {1, 0, "disk|unit|circle"},
+                  {0, -1, "disk|unit|circle"},     {0.6, 0.8, "disk|unit|circle"},      {-0.8, 0.6, "disk|unit|circle"},
+                  {2, 3, "disk|unit|circle"},      {DBL_MAX, 0, "disk|unit|circle"}};
+static const size_t n_bad_points = sizeof bad_points / sizeof bad_points[0];
+
+/* hdt_insert of NaN, an infinity or a point on or outside the unit circle:
+   HDT_EDOMAIN, the vertex not written. */
+START_TEST(bad_input_insert_point) {
+  uint64_t rng;
+  snapshot_t before;
+  hdt_triangulation *t = bad_input_handle(&rng, &before);
+  for (size_t i = 0; i < n_bad_points; ++i) {
     char what[96];
-    snprintf(what, sizeof what, "point (%g, %g)", bad[i].x, bad[i].y);
+    snprintf(what, sizeof what, "point (%g, %g)", bad_points[i].x, bad_points[i].y);
     uint32_t v = 4242;
-    expect_error(hdt_insert(t, bad[i].x, bad[i].y, &v), HDT_EDOMAIN, "hdt_insert", bad[i].kw, what);
+    expect_error(hdt_insert(t, bad_points[i].x, bad_points[i].y, &v), HDT_EDOMAIN, "hdt_insert", bad_points[i].kw,
+                 what);
     expect(v == 4242, "hdt_insert wrote the vertex on failure");
     expect_unchanged(t, &before, what);
   }
+  bad_input_done(t, &before, "hdt_insert of bad points");
+}
+END_TEST
 
-  /* hdt_insert_many: one bad point among good ones rejects the call; the
-     message names the index. */
-  for (size_t i = 0; i < nbad; ++i) {
+/* hdt_insert_many with one bad point among 19 good ones: the whole call is
+   rejected with HDT_EDOMAIN, the message names the index, no id written. */
+START_TEST(bad_input_insert_many_point) {
+  uint64_t rng;
+  snapshot_t before;
+  hdt_triangulation *t = bad_input_handle(&rng, &before);
+  for (size_t i = 0; i < n_bad_points; ++i) {
     double xy[2 * 20];
     mixed_points(&rng, 2, 20, xy);
     const size_t at = (size_t)rng_below(&rng, 20);
-    xy[2 * at] = bad[i].x, xy[2 * at + 1] = bad[i].y;
+    xy[2 * at] = bad_points[i].x, xy[2 * at + 1] = bad_points[i].y;
     uint32_t ids[20];
     for (int k = 0; k < 20; ++k) ids[k] = 4242;
     char what[96], index[32];
-    snprintf(what, sizeof what, "point (%g, %g) at index %zu of 20", bad[i].x, bad[i].y, at);
+    snprintf(what, sizeof what, "point (%g, %g) at index %zu of 20", bad_points[i].x, bad_points[i].y, at);
     snprintf(index, sizeof index, "%zu", at);
-    expect_error(hdt_insert_many(t, xy, 20, ids), HDT_EDOMAIN, "hdt_insert_many", bad[i].kw, what);
+    expect_error(hdt_insert_many(t, xy, 20, ids), HDT_EDOMAIN, "hdt_insert_many", bad_points[i].kw, what);
     expect(strstr(hdt_last_error_message(), index) != NULL, "hdt_insert_many: message \"%s\" does not name index %zu",
            hdt_last_error_message(), at);
     for (int k = 0; k < 20; ++k) expect(ids[k] == 4242, "hdt_insert_many wrote vertices[%d] on failure", k);
     expect_unchanged(t, &before, what);
   }
+  bad_input_done(t, &before, "hdt_insert_many with a bad point");
+}
+END_TEST
 
-  /* NULL handle: statuses and neutral answers. */
-  double x = 7, y = 7;
-  uint32_t v = 4242;
+/* A NULL handle: HDT_EINVAL from every function with a status, naming the
+   handle, and no output written. */
+START_TEST(bad_input_null_handle_status) {
+  uint64_t rng;
+  snapshot_t before;
+  hdt_triangulation *t = bad_input_handle(&rng, &before);
+  double x = 7, y = 7, m[4];
+  uint32_t v = 4242, fv[3];
   size_t count = 4242, face = 4242;
-  int32_t tr = 4242;
-  uint32_t fv[3];
-  int32_t word[8];
-  double m[4];
+  int32_t tr = 4242, word[8];
   const double xy2[4] = {0.1, 0.1, 0.2, 0.2};
   expect_error(hdt_insert(NULL, 0.1, 0.1, &v), HDT_EINVAL, "hdt_insert", "null|handle", "NULL handle");
   expect_error(hdt_insert_many(NULL, xy2, 2, NULL), HDT_EINVAL, "hdt_insert_many", "null|handle", "NULL handle");
@@ -746,6 +778,16 @@ START_TEST(bad_input_is_rejected) {
   expect_error(hdt_nearest_vertex(NULL, 0.1, 0.1, &v), HDT_EINVAL, "hdt_nearest_vertex", "null|handle", "NULL handle");
   expect_error(hdt_validate(NULL), HDT_EINVAL, "hdt_validate", "null|handle", "NULL handle");
   expect(x == 7 && y == 7 && v == 4242 && count == 4242 && face == 4242 && tr == 4242, "a NULL-handle call wrote outputs");
+  bad_input_done(t, &before, "NULL-handle calls");
+}
+END_TEST
+
+/* A NULL handle: the functions without a status give neutral answers, and
+   hdt_destroy(NULL) does nothing. */
+START_TEST(bad_input_null_handle_answers) {
+  uint64_t rng;
+  snapshot_t before;
+  hdt_triangulation *t = bad_input_handle(&rng, &before);
   ck_assert_int_eq(hdt_genus(NULL), 0);
   ck_assert_uint_eq(hdt_vertex_count(NULL), 0);
   ck_assert_uint_eq(hdt_dummy_count(NULL), 0);
@@ -753,35 +795,58 @@ START_TEST(bad_input_is_rejected) {
   ck_assert_uint_eq(hdt_face_count(NULL), 0);
   ck_assert_int_eq(hdt_vertex_is_dummy(NULL, 0), -1);
   hdt_destroy(NULL);
+  bad_input_done(t, &before, "NULL-handle queries");
+}
+END_TEST
 
-  /* NULL output pointers. */
+/* NULL output pointers (and a NULL xy): HDT_EINVAL naming them. */
+START_TEST(bad_input_null_outputs) {
+  uint64_t rng;
+  snapshot_t before;
+  hdt_triangulation *t = bad_input_handle(&rng, &before);
+  double x = 7, y = 7;
+  uint32_t fv[3];
   expect_error(hdt_vertex_point(t, 0, NULL, &y), HDT_EINVAL, "hdt_vertex_point", "null", "x NULL");
   expect_error(hdt_vertex_point(t, 0, &x, NULL), HDT_EINVAL, "hdt_vertex_point", "null", "y NULL");
   expect_error(hdt_faces(t, fv, NULL, 1, NULL), HDT_EINVAL, "hdt_faces", "null", "count NULL");
   expect_error(hdt_translation_matrix(t, 0, NULL), HDT_EINVAL, "hdt_translation_matrix", "null", "m NULL");
   expect_error(hdt_insert_many(t, NULL, 3, NULL), HDT_EINVAL, "hdt_insert_many", "null", "xy NULL");
-  expect_unchanged(t, &before, "NULL outputs");
+  bad_input_done(t, &before, "NULL outputs");
+}
+END_TEST
 
-  /* hdt_create: NULL out, genus out of range; *out NULL on failure. */
+/* hdt_create(&u, genus) fails with `expected`, naming the genus, and sets
+   *out to NULL. */
+static void expect_create_refused(int genus, hdt_status expected) {
+  static char sentinel;
+  hdt_triangulation *u = (hdt_triangulation *)&sentinel; /* any non-NULL value */
+  char what[32];
+  snprintf(what, sizeof what, "genus %d", genus);
+  expect_error(hdt_create(&u, genus), expected, "hdt_create", "genus", what);
+  expect(u == NULL, "hdt_create(genus %d) failed without setting *out to NULL", genus);
+}
+
+/* hdt_create with a NULL out, or a genus below 2: HDT_EINVAL; above
+   HDT_GENUS_MAX: HDT_ENOTSUP. Other handles are untouched. */
+START_TEST(bad_input_create) {
+  uint64_t rng;
+  snapshot_t before;
+  hdt_triangulation *t = bad_input_handle(&rng, &before);
   expect_error(hdt_create(NULL, 2), HDT_EINVAL, "hdt_create", "null|out", "out NULL");
   const int small[] = {1, 0, -5, INT_MIN};
-  for (size_t i = 0; i < sizeof small / sizeof small[0]; ++i) {
-    hdt_triangulation *u = (hdt_triangulation *)&before; /* any non-NULL value */
-    char what[32];
-    snprintf(what, sizeof what, "genus %d", small[i]);
-    expect_error(hdt_create(&u, small[i]), HDT_EINVAL, "hdt_create", "genus", what);
-    expect(u == NULL, "hdt_create(genus %d) failed without setting *out to NULL", small[i]);
-  }
+  for (size_t i = 0; i < sizeof small / sizeof small[0]; ++i) expect_create_refused(small[i], HDT_EINVAL);
   const int large[] = {HDT_GENUS_MAX + 1, INT_MAX};
-  for (size_t i = 0; i < sizeof large / sizeof large[0]; ++i) {
-    hdt_triangulation *u = (hdt_triangulation *)&before;
-    char what[32];
-    snprintf(what, sizeof what, "genus %d", large[i]);
-    expect_error(hdt_create(&u, large[i]), HDT_ENOTSUP, "hdt_create", "genus", what);
-    expect(u == NULL, "hdt_create(genus %d) failed without setting *out to NULL", large[i]);
-  }
+  for (size_t i = 0; i < sizeof large / sizeof large[0]; ++i) expect_create_refused(large[i], HDT_ENOTSUP);
+  bad_input_done(t, &before, "hdt_create with bad arguments");
+}
+END_TEST
 
-  /* hdt_faces: too small a buffer reports the count and writes nothing. */
+/* hdt_faces with too small a buffer: HDT_EBUFS, the count reported, the
+   buffers not written. */
+START_TEST(bad_input_faces_small_buffer) {
+  uint64_t rng;
+  snapshot_t before;
+  hdt_triangulation *t = bad_input_handle(&rng, &before);
   const size_t F = before.faces;
   uint32_t *vb = malloc(3 * F * sizeof *vb);
   int32_t *tb = malloc(3 * F * sizeof *tb);
@@ -789,48 +854,102 @@ START_TEST(bad_input_is_rejected) {
   const size_t caps[] = {1, F / 2, F - 1};
   for (size_t c = 0; c < 3; ++c) {
     for (size_t i = 0; i < 3 * F; ++i) vb[i] = 0xAAAAAAAAu, tb[i] = -5;
-    count = 4242;
+    size_t count = 4242;
     expect_error(hdt_faces(t, vb, tb, caps[c], &count), HDT_EBUFS, "hdt_faces", "capacity|buffer|small", "small buffer");
     expect(count == F, "hdt_faces with capacity %zu: count %zu, expected %zu", caps[c], count, F);
     for (size_t i = 0; i < 3 * F; ++i)
       expect(vb[i] == 0xAAAAAAAAu && tb[i] == -5, "hdt_faces with capacity %zu wrote the buffers", caps[c]);
     expect_unchanged(t, &before, "hdt_faces with a small buffer");
   }
-  /* Capacity 0 asks for the count; translations may be NULL. */
-  count = 4242;
+  free(vb);
+  free(tb);
+  bad_input_done(t, &before, "hdt_faces with a small buffer");
+}
+END_TEST
+
+/* hdt_faces with capacity 0 asks for the count; the translations may be
+   NULL, and the vertices are then those of the full call. */
+START_TEST(bad_input_faces_count_only) {
+  uint64_t rng;
+  snapshot_t before;
+  hdt_triangulation *t = bad_input_handle(&rng, &before);
+  const size_t F = before.faces;
+  uint32_t *vb = malloc(3 * F * sizeof *vb);
+  ck_assert_ptr_nonnull(vb);
+  size_t count = 4242;
   ck_assert_int_eq(hdt_faces(t, NULL, NULL, 0, &count), HDT_OK);
   ck_assert_uint_eq(count, F);
   ck_assert_int_eq(hdt_faces(t, vb, NULL, F, &count), HDT_OK);
   expect(memcmp(vb, before.v, 3 * F * sizeof *vb) == 0, "hdt_faces without translations lists other vertices");
   free(vb);
-  free(tb);
+  bad_input_done(t, &before, "hdt_faces for the count");
+}
+END_TEST
 
-  /* Invalid vertex ids: beyond the bound, far beyond, and a removed id. */
+/* Vertex ids at the bound, beyond it and UINT32_MAX: HDT_EINVAL from
+   hdt_remove_vertex and hdt_vertex_point (point not written), -1 from
+   hdt_vertex_is_dummy. */
+START_TEST(bad_input_vertex_ids) {
+  uint64_t rng;
+  snapshot_t before;
+  hdt_triangulation *t = bad_input_handle(&rng, &before);
   const uint32_t bound = (uint32_t)hdt_vertex_id_bound(t);
   const uint32_t bad_ids[] = {bound, bound + 5, UINT32_MAX};
   for (size_t i = 0; i < 3; ++i) {
     char what[32];
     snprintf(what, sizeof what, "vertex %u", bad_ids[i]);
-    x = 7, y = 7;
+    double x = 7, y = 7;
     expect_error(hdt_remove_vertex(t, bad_ids[i]), HDT_EINVAL, "hdt_remove_vertex", "vertex", what);
     expect_unchanged(t, &before, what);
     expect_error(hdt_vertex_point(t, bad_ids[i], &x, &y), HDT_EINVAL, "hdt_vertex_point", "vertex", what);
     expect(x == 7 && y == 7, "hdt_vertex_point wrote the point on failure");
     ck_assert_int_eq(hdt_vertex_is_dummy(t, bad_ids[i]), -1);
   }
-  /* Translation ids unknown to the handle. */
+  bad_input_done(t, &before, "bad vertex ids");
+}
+END_TEST
+
+/* Translation ids unknown to the handle: HDT_EINVAL. */
+START_TEST(bad_input_translation_ids) {
+  uint64_t rng;
+  snapshot_t before;
+  hdt_triangulation *t = bad_input_handle(&rng, &before);
+  int32_t word[8];
+  size_t count = 4242;
+  double m[4];
   expect_error(hdt_translation_word(t, -1, word, 8, &count), HDT_EINVAL, "hdt_translation_word", "translation|id",
                "id -1");
   expect_error(hdt_translation_matrix(t, INT32_MAX, m), HDT_EINVAL, "hdt_translation_matrix", "translation|id",
                "id INT32_MAX");
-  /* Locate and nearest vertex outside the disk. */
-  expect_error(hdt_locate(t, 1, 0, &face, &tr), HDT_EDOMAIN, "hdt_locate", "disk|unit|circle", "(1, 0)");
-  expect_error(hdt_nearest_vertex(t, nan_, 0, &v), HDT_EDOMAIN, "hdt_nearest_vertex", "nan|finite", "NaN");
-  expect_unchanged(t, &before, "bad ids");
+  bad_input_done(t, &before, "bad translation ids");
+}
+END_TEST
 
-  /* A removed id stays invalid. */
+/* hdt_locate and hdt_nearest_vertex of a point not in the open disk:
+   HDT_EDOMAIN. */
+START_TEST(bad_input_query_outside_disk) {
+  uint64_t rng;
+  snapshot_t before;
+  hdt_triangulation *t = bad_input_handle(&rng, &before);
+  size_t face = 4242;
+  int32_t tr = 4242;
+  uint32_t v = 4242;
+  expect_error(hdt_locate(t, 1, 0, &face, &tr), HDT_EDOMAIN, "hdt_locate", "disk|unit|circle", "(1, 0)");
+  expect_error(hdt_nearest_vertex(t, NAN, 0, &v), HDT_EDOMAIN, "hdt_nearest_vertex", "nan|finite", "NaN");
+  bad_input_done(t, &before, "queries outside the disk");
+}
+END_TEST
+
+/* A removed vertex id stays invalid (HDT_EINVAL, -1 from
+   hdt_vertex_is_dummy, nothing changed) and is never reused: the same point
+   inserted again gets the next id. */
+START_TEST(bad_input_removed_id) {
+  uint64_t rng;
+  snapshot_t before;
+  hdt_triangulation *t = bad_input_handle(&rng, &before);
   snapshot_free(&before);
-  uint32_t victim = 0;
+  uint32_t victim = 0, next = 0;
+  double x = 7, y = 7;
   ck_assert_int_eq(hdt_insert(t, 0.05, -0.07, &victim), HDT_OK);
   ck_assert_int_eq(hdt_remove_vertex(t, victim), HDT_OK);
   before = snapshot(t);
@@ -838,8 +957,6 @@ START_TEST(bad_input_is_rejected) {
   expect_error(hdt_vertex_point(t, victim, &x, &y), HDT_EINVAL, "hdt_vertex_point", "vertex", "removed vertex");
   ck_assert_int_eq(hdt_vertex_is_dummy(t, victim), -1);
   expect_unchanged(t, &before, "removed id");
-  /* and is never reused. */
-  uint32_t next = 0;
   ck_assert_int_eq(hdt_insert(t, 0.05, -0.07, &next), HDT_OK);
   expect(next == before.bound, "re-inserting a removed point gave id %u, expected %zu", next, before.bound);
   expect_valid(t, "after bad input");
@@ -1313,7 +1430,18 @@ int main(void) {
       duplicates_and_close_points,
       points_near_the_circle,
       extreme_coordinates,
-      bad_input_is_rejected,
+      bad_input_insert_point,
+      bad_input_insert_many_point,
+      bad_input_null_handle_status,
+      bad_input_null_handle_answers,
+      bad_input_null_outputs,
+      bad_input_create,
+      bad_input_faces_small_buffer,
+      bad_input_faces_count_only,
+      bad_input_vertex_ids,
+      bad_input_translation_ids,
+      bad_input_query_outside_disk,
+      bad_input_removed_id,
       dummies_go_after_many_points,
       dummy_removal_statistics,
       vertex_removal,

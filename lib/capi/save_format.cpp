@@ -29,6 +29,8 @@
 #include <sys/mman.h>
 #endif
 
+#include <zlib.h>
+
 #include "capi/guard.hpp"
 #include "group/canonical.hpp"
 
@@ -48,38 +50,11 @@ constexpr uint32_t kVersion = 1;
 constexpr std::size_t kHeader = 44, kVertexBytes = 25, kFaceBytes = 48, kChecksum = 4;
 constexpr std::size_t kWordsAt = kHeader;
 
-// CRC-32 (ISO-HDLC: reflected, polynomial 0xEDB88320, as zlib's crc32),
-// eight bytes at a step with eight tables ("slicing by 8"): one table
-// lookup a byte without the byte-at-a-time table's dependency from byte to
-// byte, so that the checksum stays a small part of a load. tests/test_save.c
-// checks it against a bit-by-bit
-// CRC of its own.
-struct CrcTables {
-  uint32_t t[8][256];
-  CrcTables() {
-    for (uint32_t b = 0; b < 256; ++b) {
-      uint32_t c = b;
-      for (int k = 0; k < 8; ++k) c = c & 1 ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      t[0][b] = c;
-    }
-    for (uint32_t b = 0; b < 256; ++b)
-      for (int j = 1; j < 8; ++j) t[j][b] = (t[j - 1][b] >> 8) ^ t[0][t[j - 1][b] & 0xFF];
-  }
-};
-
-uint32_t crc32(const unsigned char *p, std::size_t n) {
-  static const CrcTables tables;
-  const auto &t = tables.t;
-  uint32_t c = 0xFFFFFFFFu;
-  for (; n >= 8; p += 8, n -= 8) {
-    const uint32_t lo = c ^ (uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24);
-    const uint32_t hi = uint32_t(p[4]) | uint32_t(p[5]) << 8 | uint32_t(p[6]) << 16 | uint32_t(p[7]) << 24;
-    c = t[7][lo & 0xFF] ^ t[6][(lo >> 8) & 0xFF] ^ t[5][(lo >> 16) & 0xFF] ^ t[4][lo >> 24] ^ t[3][hi & 0xFF] ^
-        t[2][(hi >> 8) & 0xFF] ^ t[1][(hi >> 16) & 0xFF] ^ t[0][hi >> 24];
-  }
-  for (; n > 0; ++p, --n) c = (c >> 8) ^ t[0][(c ^ *p) & 0xFF];
-  return c ^ 0xFFFFFFFFu;
-}
+// CRC-32 (ISO-HDLC: reflected, polynomial 0xEDB88320) of n bytes: zlib's
+// crc32, which is that CRC, in its size_t form (crc32_z, zlib >= 1.2.9) so
+// that a file past 4 GiB needs no loop here. tests/test_save.c checks it
+// against a bit-by-bit CRC of its own.
+uint32_t checksum(const unsigned char *p, std::size_t n) { return uint32_t(crc32_z(0, p, n)); }
 
 class Writer {
  public:
@@ -242,7 +217,7 @@ void write_saved(const Triangulation &t, unsigned char *out) {
     for (int i = 0; i < 3; ++i) w.u32(f.n[i]);
     for (int i = 0; i < 3; ++i) w.u32(uint32_t(f.nt[i]));
   }
-  w.u32(crc32(out, std::size_t(w.at() - out)));
+  w.u32(checksum(out, std::size_t(w.at() - out)));
 }
 
 Triangulation read_saved(const unsigned char *bytes, std::size_t size) {
@@ -275,7 +250,7 @@ Triangulation read_saved(const unsigned char *bytes, std::size_t size) {
                 ": it is truncated or corrupted");
   const uint32_t stored = uint32_t(bytes[size - 4]) | uint32_t(bytes[size - 3]) << 8 | uint32_t(bytes[size - 2]) << 16 |
                           uint32_t(bytes[size - 1]) << 24;
-  const uint32_t computed = crc32(bytes, size - kChecksum);
+  const uint32_t computed = checksum(bytes, size - kChecksum);
   if (stored != computed) {
     char text[160];
     std::snprintf(text, sizeof text,
