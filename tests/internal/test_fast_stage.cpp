@@ -26,6 +26,7 @@
 #include "group/presentation.hpp"
 #include "predicates/double_double.hpp"
 #include "predicates/kernel.hpp"
+#include "predicates/stage_exact.hpp"
 #include "surface/exact_polygon.hpp"
 #include "surface/polygon.hpp"
 
@@ -247,6 +248,8 @@ START_TEST(refined_stages_agree_with_exact_near_ties) {
   const auto t0 = std::chrono::steady_clock::now();
   surface::Surface M(g);
   Kernel kernel{M};
+  // The kernel's last stage on its own, on the same surface, as the reference.
+  predicates::ExactStage exact_stage(M);
   const int n = 4 * g;
   const std::vector<Copy> copies = copies_around_v0(M);
   std::vector<int32_t> vertex_site(n), off_site(n);
@@ -291,17 +294,17 @@ START_TEST(refined_stages_agree_with_exact_near_ties) {
       for (int k = 0; k < n; ++k) {
         const predicates::FilterStatistics before = kernel.statistics();
         const int s = kernel.beyond_side(p, k);
-        check("beyond_side", s, before, [&] { return kernel.beyond_side_exact(p, k); });
+        check("beyond_side", s, before, [&] { return to_int(exact_stage.beyond_side(p, k)); });
       }
       for (int t = 0; t < 3; ++t) {
         const TranslatedPoint a{0, 0, copies[rng() % copies.size()].h}, b{0, 0, copies[rng() % copies.size()].h};
         const predicates::FilterStatistics before = kernel.statistics();
         const int s = kernel.compare_distance(p, a, b);
-        check("compare_distance", s, before, [&] { return kernel.compare_distance_exact(p, a, b); });
+        check("compare_distance", s, before, [&] { return to_int(exact_stage.compare_distance(p, a, b)); });
       }
       const predicates::FilterStatistics before = kernel.statistics();
       const bool same = kernel.same_point(p, v0_site);
-      ck_assert_int_eq(same, kernel.same_point_exact(p, v0_site));
+      ck_assert_int_eq(same, exact_stage.distinct(p, v0_site) == predicates::Sign::zero);
       const predicates::FilterStatistics after = kernel.statistics();
       if (after.filtered() == before.filtered()) ++compared, ties += same;
       by_mpfr["same_point"] += after[Stage::mpfr] != before[Stage::mpfr];
