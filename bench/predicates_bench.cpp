@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "predicates/kernel.hpp"
+#include "predicates/stage_exact.hpp"
 #include "surface/polygon.hpp"
 
 using namespace hdt;
@@ -52,6 +53,7 @@ int main(int argc, char **argv) {
   for (int g : {2, 4, 8, 16}) {
     surface::Surface M(g);
     predicates::Kernel kernel{M};
+    predicates::ExactStage exact_stage(M);  // the kernel's last stage, timed on its own
     const std::vector<TranslatedPoint> pts = random_points(kernel, calls + 4);
     // Exact calls cost far more: fewer of them, shrinking with the genus.
     const std::size_t exact_calls = std::max<std::size_t>(20, calls / (20 * std::size_t(g)));
@@ -61,22 +63,22 @@ int main(int argc, char **argv) {
     // Warm the caches: the rounded matrices of every id in use (computed on
     // first use, in multiprecision) and the exact ones of the first points.
     for (std::size_t i = 0; i < calls; ++i) kernel.beyond_side(pts[i], 0);
-    for (std::size_t i = 0; i < exact_calls; ++i) kernel.orientation_exact(pts[i], pts[i + 1], pts[i + 2]);
+    for (std::size_t i = 0; i < exact_calls; ++i) exact_stage.orientation(pts[i], pts[i + 1], pts[i + 2]);
     kernel.reset_statistics();
     report("orientation",
            nanoseconds_per_call(calls, [&](std::size_t i) { return kernel.orientation(pts[i], pts[i + 1], pts[i + 2]); }),
            nanoseconds_per_call(exact_calls,
-                                [&](std::size_t i) { return kernel.orientation_exact(pts[i], pts[i + 1], pts[i + 2]); }));
+                                [&](std::size_t i) { return to_int(exact_stage.orientation(pts[i], pts[i + 1], pts[i + 2])); }));
     report("in_circle",
            nanoseconds_per_call(
                calls, [&](std::size_t i) { return kernel.in_circle(pts[i], pts[i + 1], pts[i + 2], pts[i + 3]); }),
            nanoseconds_per_call(exact_calls, [&](std::size_t i) {
-             return kernel.in_circle_exact(pts[i], pts[i + 1], pts[i + 2], pts[i + 3]);
+             return to_int(exact_stage.in_circle(pts[i], pts[i + 1], pts[i + 2], pts[i + 3]));
            }));
     report("beyond_side",
            nanoseconds_per_call(calls, [&](std::size_t i) { return kernel.beyond_side(pts[i], int(i % (4 * g))); }),
            nanoseconds_per_call(exact_calls,
-                                [&](std::size_t i) { return kernel.beyond_side_exact(pts[i], int(i % (4 * g))); }));
+                                [&](std::size_t i) { return to_int(exact_stage.beyond_side(pts[i], int(i % (4 * g)))); }));
     const auto &s = kernel.statistics();
     std::printf("%-6d filter decided %lu of %lu calls (%.4f%%)\n", g, s.filtered(), s.calls(),
                 100.0 * double(s.filtered()) / double(s.calls()));

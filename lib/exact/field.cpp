@@ -87,14 +87,12 @@ FieldElement Field::mul(const FieldElement &a, const Cyclotomic &b) const {
 }
 
 bool Field::is_zero(const FieldElement &a) const {
-  // Zero needs u = v = 0, unless sigma lies in Q(zeta) (then u^2 = v^2 sigma^2
-  // and the signs of u and v decide); no evaluation otherwise.
-  if (a.u.is_zero() || a.v.is_zero()) return a.u.is_zero() && a.v.is_zero();
-  return norm_vanishes(a) && sign(a.u) != sign(a.v);
-}
-
-bool Field::norm_vanishes(const FieldElement &a) const {
-  return base_.sub(base_.mul(a.u, a.u), base_.mul(base_.mul(a.v, a.v), sigma_squared_)).is_zero();
+  // u + v sigma = 0 with v != 0 would put sigma = -u/v in Q(zeta_8g), and it
+  // never is: Q(zeta_8g) is abelian over Q, so its real subfield Q(sigma)
+  // would be Galois, hence totally real; but sigma^2 = cos(pi/2g) has the
+  // conjugate cos((2g-1) pi/2g) = -cos(pi/2g) < 0 (2g-1 is prime to 4g), whose
+  // square roots are not real. So zero is exactly u = v = 0.
+  return a.u.is_zero() && a.v.is_zero();
 }
 
 template <class T>
@@ -153,16 +151,9 @@ Sign Field::sign_at(const FieldElement &a) const {
 Sign Field::sign(const Cyclotomic &a) const { return sign(FieldElement{a, {}}); }
 
 Sign Field::sign(const FieldElement &a) const {
-  if (a.u.is_zero() && a.v.is_zero()) return Sign::zero;
-  if (!a.u.is_zero() && !a.v.is_zero()) {
-    // u + v sigma = 0 with v != 0 would put sigma in Q(zeta); then
-    // u^2 = v^2 sigma^2 and the value is 0 or 2u.
-    if (norm_vanishes(a)) {
-      const Sign su = sign(a.u), sv = sign(a.v);
-      return su == sv ? su : Sign::zero;
-    }
-  }
-  // Non-zero: rising precision terminates.
+  // Zero exactly when u = v = 0 (is_zero); otherwise rising precision
+  // terminates.
+  if (is_zero(a)) return Sign::zero;
   if (const Sign s = sign_at<double>(a); decided(s)) return s;
   // Past the compile-time rungs, the run-time ones up to the precision that
   // the norm bound proves sufficient (sufficient_bits), where a non-zero

@@ -4,8 +4,8 @@
 // (up to the positive factor sin(pi/4g)^-2 per letter, which no sign
 // depends on), the points of Q0, and every translated image of a point given
 // as doubles. An element is u + v sigma with u, v in Q(zeta_{8g}); it is zero
-// exactly when u = v = 0 unless sigma itself lies in Q(zeta), a case
-// sign() handles too. The sign of a real element is found by evaluation at
+// exactly when u = v = 0, since sigma never lies in Q(zeta_{8g}) (field.cpp,
+// Field::is_zero, has the argument). The sign of a real element is found by evaluation at
 // rising precision with a rigorous error bound: double, then the rungs of
 // FieldLadder (precision_ladder.hpp) up to 136063 bits, then its run-time
 // rungs up to one that a lower bound on |a| from its norm proves
@@ -69,9 +69,6 @@ class Field {
   struct Evaluator;
   template <class T>
   const Evaluator<T> &evaluator() const;
-  // u^2 - v^2 sigma^2 = 0: only possible with both parts non-zero when sigma
-  // lies in Q(zeta); then u + v sigma is 0 or 2u.
-  bool norm_vanishes(const FieldElement &a) const;
   // a's value at the precision of T and a bound on its error, both in
   // units of 2^*exponent.
   template <class T>

@@ -31,12 +31,6 @@ HyperboloidPoint<T> to_hyperboloid(const Complex<T> &z) {
 }
 
 template <class T>
-Complex<T> to_disk(const HyperboloidPoint<T> &p) {
-  const T s = T(1) / (T(1) + p.t);
-  return {p.u * s, p.v * s};
-}
-
-template <class T>
 struct Lorentz {
   std::array<std::array<T, 3>, 3> m{{{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}}};
 
@@ -57,14 +51,6 @@ struct Lorentz {
     Lorentz r;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) r.m[i][j] = m[i][0] * o.m[0][j] + m[i][1] * o.m[1][j] + m[i][2] * o.m[2][j];
-    return r;
-  }
-
-  // The inverse of a Lorentz matrix is J L^T J with J = diag(1, -1, -1).
-  Lorentz inverse() const {
-    Lorentz r;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) r.m[i][j] = ((i == 0) == (j == 0) ? T(1) : T(-1)) * m[j][i];
     return r;
   }
 

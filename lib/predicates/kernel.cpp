@@ -108,10 +108,6 @@ int Kernel::orientation(const TranslatedPoint &p, const TranslatedPoint &q, cons
   return orientation(p, q, r);
 }
 
-int Kernel::orientation_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
-  return to_int(exact_.orientation(p, q, r));
-}
-
 // ---- in_circle ----
 
 Kernel::Decision Kernel::in_circle_stages(Predicate which, const TranslatedPoint &p, const TranslatedPoint &q,
@@ -140,11 +136,6 @@ int Kernel::in_circle(const TranslatedPoint &p, const TranslatedPoint &q, const 
   Decision d = in_circle_stages(Predicate::in_circle, p, q, r, s);
   if (!decided(d.sign)) d = {exact(), Stage::exact};
   return decide(Predicate::in_circle, d, exact);
-}
-
-int Kernel::in_circle_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
-                            const TranslatedPoint &s) {
-  return to_int(exact_.in_circle(p, q, r, s));
 }
 
 int Kernel::in_circle_perturbed_staged(const std::array<TranslatedPoint, 4> &pt,
@@ -232,8 +223,6 @@ void Kernel::beyond_sides(const TranslatedPoint &p, int *signs) {
     signs[k] = decide(Predicate::beyond_side, beyond_side_stages(a, k, p), [&] { return exact_.beyond_side(p, k); });
 }
 
-int Kernel::beyond_side_exact(const TranslatedPoint &p, int side) { return to_int(exact_.beyond_side(p, side)); }
-
 // ---- compare_distance ----
 
 Kernel::Decision Kernel::compare_distance_stages(const TranslatedPoint &p, const TranslatedPoint &a,
@@ -251,10 +240,6 @@ int Kernel::compare_distance(const TranslatedPoint &p, const TranslatedPoint &a,
                 [&] { return exact_.compare_distance(p, a, b); });
 }
 
-int Kernel::compare_distance_exact(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b) {
-  return to_int(exact_.compare_distance(p, a, b));
-}
-
 // ---- same_point: the sign of |N_p - N_q|, zero for the same point ----
 
 Kernel::Decision Kernel::distinct_stages(const TranslatedPoint &p, const TranslatedPoint &q) {
@@ -269,10 +254,6 @@ Kernel::Decision Kernel::distinct_stages(const TranslatedPoint &p, const Transla
 
 bool Kernel::same_point(const TranslatedPoint &p, const TranslatedPoint &q) {
   return decide(Predicate::same_point, distinct_stages(p, q), [&] { return exact_.distinct(p, q); }) == 0;
-}
-
-bool Kernel::same_point_exact(const TranslatedPoint &p, const TranslatedPoint &q) {
-  return exact_.distinct(p, q) == Sign::zero;
 }
 
 // ---- large_circumdisk ----
@@ -298,10 +279,6 @@ int Kernel::large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q,
     return decide(Predicate::large_circumdisk, {s, Stage::double_filter},
                   [&] { return exact_.large_circumdisk(p, q, r); });
   return large_circumdisk(p, q, r);
-}
-
-int Kernel::large_circumdisk_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r) {
-  return to_int(exact_.large_circumdisk(p, q, r));
 }
 
 // ---- constructions ----

@@ -158,7 +158,6 @@ class Kernel {
   // the radius rho has cosh rho = |c_3| / sqrt<m, m>, and
   // cosh^2(sys/4) = 1 + cos(pi/2g): the test is c_3^2 >= (1 + cos(pi/2g)) <m, m>.
   int large_circumdisk(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
-  int large_circumdisk_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
 
   // orientation, in_circle_perturbed and large_circumdisk with each point's
   // double point given (a, b, c, e: certified as the double stage's, any
@@ -190,14 +189,6 @@ class Kernel {
   // on a line through a vertex is near-degenerate by construction).
   std::optional<int> orientation_before_exact(const TranslatedPoint &p, const TranslatedPoint &q,
                                               const TranslatedPoint &r);
-
-  // The exact stage alone (for tests against the pipeline).
-  int orientation_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r);
-  int in_circle_exact(const TranslatedPoint &p, const TranslatedPoint &q, const TranslatedPoint &r,
-                      const TranslatedPoint &s);
-  int beyond_side_exact(const TranslatedPoint &p, int side);
-  bool same_point_exact(const TranslatedPoint &p, const TranslatedPoint &q);
-  int compare_distance_exact(const TranslatedPoint &p, const TranslatedPoint &a, const TranslatedPoint &b);
 
   // Registers the home image of the stored point (x, y) with home `home`
   // when it lies far from F_g (home_image.hpp) and has none yet; true when

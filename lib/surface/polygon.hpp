@@ -89,9 +89,6 @@ Complex<T> polygon_side_midpoint(int genus, int k) {
   return {radius * cos(angle), radius * sin(angle)};
 }
 
-// The side paired with s_k (by g_k: s_{k+2g} -> s_k).
-inline int paired_side(const group::Presentation &p, int k) { return p.inverse(k); }
-
 // The coordinates of v_k and m_k correctly rounded to double (k any int);
 // polygon_vertex<double> and polygon_side_midpoint<double> are a few ulps
 // off. Equal exact coordinates give equal doubles (x = y at angle pi/4,

@@ -203,6 +203,23 @@ START_TEST(relation_in_plain_double_within_its_error_bound) {
 }
 END_TEST
 
+// The test's own inverse map of the hyperboloid to the disk,
+// (t, u, v) -> (u, v) / (1 + t), and inverse of a Lorentz matrix, J L^T J
+// with J = diag(1, -1, -1): the library needs neither.
+template <class T>
+group::Complex<T> to_disk(const group::HyperboloidPoint<T> &p) {
+  const T s = T(1) / (T(1) + p.t);
+  return {p.u * s, p.v * s};
+}
+
+template <class T>
+group::Lorentz<T> lorentz_inverse(const group::Lorentz<T> &L) {
+  group::Lorentz<T> r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r.m[i][j] = ((i == 0) == (j == 0) ? T(1) : T(-1)) * L.m[j][i];
+  return r;
+}
+
 START_TEST(lorentz_matches_moebius) {
   std::mt19937 rng(7);
   for (int g : {2, 3, 7}) {
@@ -213,7 +230,7 @@ START_TEST(lorentz_matches_moebius) {
       const auto m = gens.moebius(w);
       const auto L = gens.lorentz(w);
       const group::Complex<double> z{0.3 - 0.001 * trial, 0.2};
-      const auto image = group::to_disk(L.apply(group::to_hyperboloid(z)));
+      const auto image = to_disk(L.apply(group::to_hyperboloid(z)));
       const auto direct = m.apply(z);
       ck_assert_double_eq_tol(image.re, direct.re, 1e-9);
       ck_assert_double_eq_tol(image.im, direct.im, 1e-9);
@@ -223,7 +240,7 @@ START_TEST(lorentz_matches_moebius) {
       // L^{-1} L = I, up to rounding that grows with the entries' size (on the
       // accurately rounded matrix: the plain product drifts off the group).
       const auto La = group::accurate_lorentz(p, w);
-      const auto I = La.inverse() * La;
+      const auto I = lorentz_inverse(La) * La;
       const double tol = 1e-14 * La.m[0][0] * La.m[0][0];
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) ck_assert_double_eq_tol(I.m[i][j], (i == j ? 1.0 : 0.0), tol);
@@ -402,14 +419,15 @@ START_TEST(moebius_centres_within_their_bounds) {
 END_TEST
 
 START_TEST(side_pairing_maps_paired_sides) {
-  // g_k maps side s_{paired_side(k)} onto s_k: midpoint to midpoint, and the
+  // g_k maps side s_j onto s_k, j = k^-1 (the letter of g_k^-1, as the
+  // presentation pairs sides): midpoint to midpoint, and the
   // endpoints v_{k+2g-1}, v_{k+2g} to v_k, v_{k-1}.
   using T = exact::mp_real<50>;
   for (int g = 2; g <= 6; ++g) {
     const Presentation p(g);
     const group::GeneratorSet<T> gens(p);
     for (int k = 0; k < p.letter_count(); ++k) {
-      const int j = surface::paired_side(p, k);
+      const int j = p.inverse(k);
       ck_assert_int_eq(j, (k + 2 * g) % (4 * g));
       auto gap = [&](group::Complex<T> from, group::Complex<T> to) {
         const auto image = gens.moebius(k).apply(from);

@@ -26,6 +26,7 @@
 #include "group/presentation.hpp"
 #include "predicates/double_double.hpp"
 #include "predicates/kernel.hpp"
+#include "predicates/stage_exact.hpp"
 #include "surface/exact_polygon.hpp"
 #include "surface/polygon.hpp"
 
@@ -247,6 +248,8 @@ START_TEST(refined_stages_agree_with_exact_near_ties) {
   const auto t0 = std::chrono::steady_clock::now();
   surface::Surface M(g);
   Kernel kernel{M};
+  // The kernel's last stage on its own, on the same surface, as the reference.
+  predicates::ExactStage exact_stage(M);
   const int n = 4 * g;
   const std::vector<Copy> copies = copies_around_v0(M);
   std::vector<int32_t> vertex_site(n), off_site(n);
@@ -291,17 +294,17 @@ START_TEST(refined_stages_agree_with_exact_near_ties) {
       for (int k = 0; k < n; ++k) {
         const predicates::FilterStatistics before = kernel.statistics();
         const int s = kernel.beyond_side(p, k);
-        check("beyond_side", s, before, [&] { return kernel.beyond_side_exact(p, k); });
+        check("beyond_side", s, before, [&] { return to_int(exact_stage.beyond_side(p, k)); });
       }
       for (int t = 0; t < 3; ++t) {
         const TranslatedPoint a{0, 0, copies[rng() % copies.size()].h}, b{0, 0, copies[rng() % copies.size()].h};
         const predicates::FilterStatistics before = kernel.statistics();
         const int s = kernel.compare_distance(p, a, b);
-        check("compare_distance", s, before, [&] { return kernel.compare_distance_exact(p, a, b); });
+        check("compare_distance", s, before, [&] { return to_int(exact_stage.compare_distance(p, a, b)); });
       }
       const predicates::FilterStatistics before = kernel.statistics();
       const bool same = kernel.same_point(p, v0_site);
-      ck_assert_int_eq(same, kernel.same_point_exact(p, v0_site));
+      ck_assert_int_eq(same, exact_stage.distinct(p, v0_site) == predicates::Sign::zero);
       const predicates::FilterStatistics after = kernel.statistics();
       if (after.filtered() == before.filtered()) ++compared, ties += same;
       by_mpfr["same_point"] += after[Stage::mpfr] != before[Stage::mpfr];
@@ -392,11 +395,52 @@ START_TEST(double_points_within_their_error_bounds) {
 }
 END_TEST
 
+// Kernel::hyperboloid's last resort, the 133-bit point, answers where the
+// double point (8u + 2^-102 / w relative, w = 1 - |z|^2 computed with
+// error-free products) misses 1e-9 and the double-double one
+// (4 * 2^-100 / w) misses 1e-12: for an untranslated point, w between about
+// 2^-90 (where the MPFR point's 4 * 2^-132 / w misses 1e-12 too) and 2^-72.
+// z = (1 - 2^-53, 2^-26 - 2^-55) has w = 2^-80 - 2^-106 - 2^-110. Checked
+// against the vector in 400 bits (the squares of doubles are exact there).
+START_TEST(hyperboloid_falls_back_to_the_mpfr_point) {
+  surface::Surface M(2);
+  Kernel kernel{M};
+  const double x = 1 - 0x1p-53, y = 0x1p-26 - 0x1p-55;
+  const TranslatedPoint p{x, y, 0};
+  const Big bx(x), by(y), r2 = bx * bx + by * by, w = Big(1) - r2;
+  ck_assert(w == ldexp(Big(1), -80) - ldexp(Big(1), -106) - ldexp(Big(1), -110));
+  // Where each stage stands on p (the kernel's stages, built alike).
+  const predicates::FilteredPoint f = predicates::filtered_point(x, y);
+  ck_assert(!(f.error < 1e-9 * f.n[0]));
+  predicates::MpfrStage mpfr(M);
+  predicates::DoubleDoubleStage double_double(M, mpfr);
+  predicates::FastPoint d;
+  ck_assert(double_double.point(p, &d));
+  ck_assert(!(d.error < 1e-12 * static_cast<double>(d.n[0])));
+  predicates::MidPoint m;
+  ck_assert(mpfr.point(p, &m));
+  ck_assert(m.error < 1e-12 * static_cast<double>(m.n[0]));
+  bool accurate = false;
+  const std::array<double, 3> n = kernel.hyperboloid(p, &accurate);
+  ck_assert(accurate);
+  const Big ref[3] = {(Big(1) + r2) / w, Big(2) * bx / w, Big(2) * by / w};
+  for (int i = 0; i < 3; ++i) {
+    // Within the MPFR point's certified bound and the rounding to double,
+    // far inside the 1e-12 of N0 that `accurate` promises.
+    const Big off = abs(Big(n[i]) - ref[i]);
+    ck_assert_msg(off <= Big(m.error) + ldexp(abs(ref[i]), -53), "N%d: %.17g, reference %.17g, bound %g", i, n[i],
+                  static_cast<double>(ref[i]), m.error);
+    ck_assert(off < Big(1e-12) * ref[0]);
+  }
+}
+END_TEST
+
 int main(void) {
   return run_suite("fast_stage", 600, [](TCase *tc) {
     tcase_add_test(tc, double_double_error_bounds);
     tcase_add_loop_test(tc, double_points_within_their_error_bounds, 0, 3);
     tcase_add_loop_test(tc, corner_clusters_agree_with_reference, 0, 2);
     tcase_add_loop_test(tc, refined_stages_agree_with_exact_near_ties, 0, 2);
+    tcase_add_test(tc, hyperboloid_falls_back_to_the_mpfr_point);
   });
 }
