@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "exact/unsupported.hpp"
 #include "group/presentation.hpp"
 #include "hdt.h"
 
@@ -46,8 +47,10 @@ hdt_status guarded(const char *function, Body &&body) noexcept {
     return fail(HDT_EINVAL, function, e.what());
   } catch (const std::domain_error &e) {
     return fail(HDT_EDOMAIN, function, e.what());
-  } catch (const std::length_error &e) {
+  } catch (const exact::Unsupported &e) {
     return fail(HDT_ENOTSUP, function, e.what());
+  } catch (const std::length_error &e) {  // a container asked past its max_size
+    return fail(HDT_ENOMEM, function, std::string("out of memory: ") + e.what());
   } catch (const std::logic_error &e) {
     try {
       return fail(HDT_EINTERNAL, function, std::string("internal error: ") + e.what());

@@ -21,6 +21,7 @@
 #include <string>
 
 #include "dummies/dummy_thinning.hpp"
+#include "exact/unsupported.hpp"
 #include "group/cyclic.hpp"
 #include "mesh/editor.hpp"
 #include "predicates/representative.hpp"
@@ -329,7 +330,7 @@ mesh::Triangulation new_triangulation(int genus) {
     if (it != cache.end()) return mesh::Triangulation(*it->second);
   }
   if (genus > kDummyGenusMax)
-    throw std::length_error("dummy points are built up to genus " + std::to_string(kDummyGenusMax) +
+    throw exact::Unsupported("dummy points are built up to genus " + std::to_string(kDummyGenusMax) +
                             " (HDT_CREATE_GENUS_MAX), not " + std::to_string(genus) +
                             ": beyond it their double-precision construction loses every bit");
   // Built outside the lock.

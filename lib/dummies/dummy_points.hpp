@@ -19,7 +19,7 @@ constexpr int kDummyGenusMax = 256;
 // (whose surface keeps what the construction computed: its first user's
 // insertions find warm caches) and keeps its template; later calls copy
 // the template (thread-safe; two threads may both build one, the first
-// template stays). Throws std::length_error above kDummyGenusMax.
+// template stays). Throws exact::Unsupported above kDummyGenusMax.
 mesh::Triangulation new_triangulation(int genus);
 
 }  // namespace hdt::dummies

@@ -17,6 +17,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "exact/unsupported.hpp"
 #include "group/word_matrix.hpp"
 #include "predicates/double_double.hpp"
 #include "predicates/stage_double_double.hpp"
@@ -217,7 +218,7 @@ class DummyRelaxation {
   }
   bool full_effort() const { return t_.genus() <= 32; }
   // Runs a step; true when a frame it needed lies beyond the canonical
-  // words' reach (std::length_error: above genus 128, copies near F_g's
+  // words' reach (exact::Unsupported: above genus 128, copies near F_g's
   // corners two faces out have words of 2g + 1 letters). Every product is
   // taken before the faces it describes change, so the faces stay whole;
   // the caller undoes or drops the step.
@@ -226,7 +227,7 @@ class DummyRelaxation {
     try {
       step();
       return false;
-    } catch (const std::length_error &) {
+    } catch (const exact::Unsupported &) {
       estimate_ = INFINITY;
       return true;
     }

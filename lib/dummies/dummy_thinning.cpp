@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "exact/unsupported.hpp"
 #include "predicates/representative.hpp"
 #include "dummies/dummy_relaxation.hpp"
 #include "dummies/hyperboloid_vectors.hpp"
@@ -97,7 +98,7 @@ class DummyThinning {
       bool relaxed = false;
       try {
         relaxed = relax();
-      } catch (const std::length_error &) {
+      } catch (const exact::Unsupported &) {
         // A translation beyond the canonical words' reach while its points
         // go in (the relaxation's own tries undo such a step; not met): each
         // insertion and removal is whole, and the rounds below go on.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "exact/precision_ladder.hpp"
+#include "exact/unsupported.hpp"
 #include "group/dehn.hpp"
 #include "group/generators.hpp"
 #include "group/word_matrix.hpp"
@@ -774,7 +775,7 @@ Word canonical_word(const Presentation &p, const Letter *input, std::size_t leng
       if ((s.steps == 0 || s.rung > 2) && peel_tracked<mp_real<PeelLadder::kDigits10[2]>>(p, d, w, out, bound)) break;
       // Longer than the top rung certifies: a run-time rung.
       if (s.steps == 0 && w.size() > max_runtime_length)
-        throw std::length_error("the Dehn-reduced word has " + std::to_string(w.size()) +
+        throw exact::Unsupported("the Dehn-reduced word has " + std::to_string(w.size()) +
                                 " letters and needs a run-time precision, computed up to " +
                                 std::to_string(max_runtime_length) + " letters");
       const std::size_t rung = s.steps == 0 ? PeelLadder::rung_for(word_certified_bits(p, 2 * w.size())) : s.rung;

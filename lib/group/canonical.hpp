@@ -25,7 +25,7 @@ namespace hdt::group {
 std::size_t canonical_ladder_length(const Presentation &p);
 
 // Words of any length. Throws std::invalid_argument for invalid letters;
-// std::length_error only for a word that needs a run-time precision (past
+// exact::Unsupported only for a word that needs a run-time precision (past
 // the ladder's reach and the tracked bound's at 160 digits) and whose
 // Dehn-reduced rest then has more than max_runtime_length letters: the cost
 // grows about as the cube of the length there (g_0^2000 at genus 1024: 6 s).

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "exact/unsupported.hpp"
 #include "group/canonical.hpp"
 #include "group/dehn.hpp"
 #include "group/moebius_centre.hpp"
@@ -20,7 +21,7 @@ std::size_t TranslationTable::WordHash::operator()(const Word &w) const noexcept
 
 TranslationTable::TranslationTable(const Presentation &p)
     : presentation_(p), neighbour_count_(group::neighbour_count(p)), centres_(p) {
-  if (neighbour_count_ >= std::size_t(INT32_MAX)) throw std::length_error("translation ids of N exceed int32");
+  if (neighbour_count_ >= std::size_t(INT32_MAX)) throw exact::Unsupported("translation ids of N exceed int32");
 }
 
 const Word &TranslationTable::word(TranslationId id) const {
@@ -39,7 +40,7 @@ TranslationId TranslationTable::find_canonical(const Word &w) const {
 
 TranslationId TranslationTable::add_canonical(const Word &canonical) {
   if (const TranslationId id = find_canonical(canonical); id >= 0) return id;
-  if (size() >= std::size_t(INT32_MAX)) throw std::length_error("translation table is full");
+  if (size() >= std::size_t(INT32_MAX)) throw exact::Unsupported("translation table is full");
   const auto id = static_cast<TranslationId>(size());
   // One pass in double over the letters (far_ is a vector<bool>: room for
   // it first, so that a failure adds nothing).

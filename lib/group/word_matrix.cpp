@@ -17,6 +17,7 @@
 
 #include "exact/precision_ladder.hpp"
 #include "exact/unit_disk.hpp"
+#include "exact/unsupported.hpp"
 #include "group/dehn.hpp"
 #include "group/generators.hpp"
 #include "group/rotated_products.hpp"
@@ -215,7 +216,7 @@ auto with_certified_product(const Presentation &p, const Word &r, double target,
     return f(P);
   });
   if (result) return *result;
-  throw std::length_error(too_long(r.size()));
+  throw exact::Unsupported(too_long(r.size()));
 }
 
 // ---- The group in double, for norm_log2_lower_bound ----
@@ -581,7 +582,7 @@ auto with_bounded_product(const Presentation &p, const Word &w, double target, F
         return f(m, double(error) * (1 + 0x1p-50));
       });
   if (result) return *result;
-  throw std::length_error(too_long(w.size()));
+  throw exact::Unsupported(too_long(w.size()));
 }
 
 }  // namespace

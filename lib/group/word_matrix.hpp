@@ -46,7 +46,7 @@ double moebius_precision_bits(const Presentation &p, std::size_t m, double targe
 // error bound computed along the product (not the a priori one above)
 // certifies a, b within 2^-72 (|a| + |b|): each Lorentz entry within
 // 2^-66 L_00 before the rounding to double. Products are cached through the
-// rotation symmetry (rotated_products.hpp). Throws std::length_error when
+// rotation symmetry (rotated_products.hpp). Throws exact::Unsupported when
 // even the top rung cannot certify the word (not met: a word of N needs a
 // few dozen bits above the target). The Moebius matrix also to about twice
 // double precision: each part of a and b split into moebius + moebius_low
@@ -78,7 +78,7 @@ Complex<double> accurate_image(const Presentation &p, const Word &w, Complex<dou
 // other words get the multiprecision product, on the lowest rung whose error
 // bound, computed along the product, meets the target. Failures throw
 // std::domain_error (the result does not fit in double; the message says
-// how) or, as a safety net not met in practice, std::length_error (even the
+// how) or, as a safety net not met in practice, exact::Unsupported (even the
 // top rung cannot certify the product).
 
 // A certified lower bound on log2(|a| + |b|), the operator norm of the

@@ -7,8 +7,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "predicates/representative.hpp"
+#include "exact/unsupported.hpp"
 #include "mesh/triangulation.hpp"
+#include "predicates/representative.hpp"
 
 namespace hdt::mesh {
 
@@ -92,7 +93,7 @@ Triangulation::Inserted Triangulation::insert_walked(double x, double y, Transla
 uint32_t Triangulation::insert_located(double x, double y, TranslationId home, bool dummy, const Walk &at) {
   group::TranslationTable &T = table();
   const auto id = uint32_t(vertices_.size());
-  if (id == kNone) throw std::length_error("too many vertices");
+  if (id == kNone) throw exact::Unsupported("too many vertices");
   scratch_.old_faces.clear();
   scratch_.boundary.clear();
   scratch_.new_faces.clear();
