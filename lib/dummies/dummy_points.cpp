@@ -21,6 +21,7 @@
 #include <string>
 
 #include "dummies/dummy_thinning.hpp"
+#include "dummies/mesh_names.hpp"
 #include "exact/unsupported.hpp"
 #include "group/cyclic.hpp"
 #include "mesh/editor.hpp"
@@ -30,14 +31,6 @@
 
 namespace hdt::dummies {
 
-using mesh::Corner;
-using mesh::Face;
-using mesh::kNone;
-using mesh::next;
-using mesh::prev;
-using mesh::Triangulation;
-using mesh::TranslationId;
-using mesh::Vertex;
 using predicates::TranslatedPoint;
 
 class DummyBuilder {

@@ -17,6 +17,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "dummies/mesh_names.hpp"
 #include "exact/unsupported.hpp"
 #include "group/word_matrix.hpp"
 #include "predicates/double_double.hpp"
@@ -25,16 +26,6 @@
 #include "mesh/triangulation.hpp"
 
 namespace hdt::dummies {
-
-using mesh::Corner;
-using mesh::Face;
-using mesh::kNone;
-using mesh::next;
-using mesh::prev;
-using mesh::StarFace;
-using mesh::TranslationId;
-using mesh::Triangulation;
-using mesh::Vertex;
 
 namespace {
 

@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "dummies/mesh_names.hpp"
 #include "exact/unsupported.hpp"
 #include "predicates/representative.hpp"
 #include "dummies/dummy_relaxation.hpp"
@@ -22,16 +23,6 @@
 #include "mesh/editor.hpp"
 
 namespace hdt::dummies {
-
-using mesh::Corner;
-using mesh::Face;
-using mesh::kNone;
-using mesh::next;
-using mesh::prev;
-using mesh::StarFace;
-using mesh::TranslationId;
-using mesh::Triangulation;
-using mesh::Vertex;
 
 namespace {
 
