@@ -59,7 +59,7 @@ class Ladder {
   static_assert(sizeof...(Digits10) > 0, "a ladder has a rung");
   static_assert(((rung_index(Digits10) < std::size(kRungDigits10)) && ...), "a rung of kRungDigits10");
 
-  static constexpr unsigned kDigits10[] = {Digits10...};
+  static constexpr unsigned kDigits10[sizeof...(Digits10)] = {Digits10...};
   // The compile-time rungs are 0 .. kSize - 1, the run-time ones kSize on.
   static constexpr std::size_t kSize = sizeof...(Digits10);
 
