@@ -54,8 +54,8 @@ namespace {
 using PeelLadder = exact::Ladder<40, 80, 160, 320, 640, 1280, 2560>;
 constexpr std::size_t kRungs = PeelLadder::kSize;
 
-// Relative cost of a matrix-vector product on each rung (MPFR, measured on
-// x86-64: 0.5 us at 40 digits, 31 us at 2560).
+// Relative cost of a matrix-vector product on each rung (MPFR on x86-64,
+// measured once): the plan of rungs below needs only their ratios.
 constexpr double kRungCost[kRungs] = {1, 1.4, 1.9, 3, 7.3, 22, 58};
 
 // The longest product, in letters, that `bits` of precision certify: n
@@ -767,8 +767,7 @@ Word canonical_word(const Presentation &p, const Letter *input, std::size_t leng
       // (or a run-time precision), 160 digits with the tracked bound: the
       // words of points near the circle are long but their points stay
       // within cosh 2^53 of O, a few hundred bits, where the length asks for
-      // tens of thousands (a word of 1908 letters at genus 1024: 8.1 s on a
-      // run-time precision of 90,000 bits, 0.43 s for the whole call now).
+      // tens of thousands, whose products cost far more.
       using exact::mp_real;
       if (peel_tracked<mp_real<PeelLadder::kDigits10[0]>>(p, d, w, out, bound)) break;
       const Segment s = plan_segment(p, w.size());

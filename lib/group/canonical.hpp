@@ -28,7 +28,7 @@ std::size_t canonical_ladder_length(const Presentation &p);
 // exact::Unsupported only for a word that needs a run-time precision (past
 // the ladder's reach and the tracked bound's at 160 digits) and whose
 // Dehn-reduced rest then has more than max_runtime_length letters: the cost
-// grows about as the cube of the length there (g_0^2000 at genus 1024: 6 s).
+// grows about as the cube of the length there.
 Word canonical_word(const Presentation &p, const Letter *w, std::size_t length,
                     std::size_t max_runtime_length = std::size_t(-1));
 inline Word canonical_word(const Presentation &p, const Word &w) { return canonical_word(p, w.data(), w.size()); }

@@ -14,14 +14,14 @@
 // it: the element when it is indexed, -1 when it is not.
 //
 // The translation table uses it to name a product or an inverse from the
-// double matrices it already has, instead of canonicalising a word (some
-// 400,000 instructions at genus 32, where nearly every new product lies in N).
+// double matrices it already has, instead of canonicalising a word (a Dehn
+// reduction and a multiprecision check, for products that nearly all lie
+// in N).
 //
 // The cells are a flat open-addressing table whose slots hold the centre
-// itself: a query costs one or two cache lines per cell. (A hash map of
-// cells to ids and a per-id entry beside it cost a division and four
-// pointer chases per cell: at genus 128 and 10^6 points its lookups took
-// about 3% of insertion's time in perf samples.) A cell may keep an older,
+// itself: a query costs one or two cache lines per cell, where a hash map
+// of cells to ids with a per-id entry beside it costs a division and four
+// pointer chases. A cell may keep an older,
 // less accurate centre of its element when a better one falls in the next
 // cell: both are centres of the same element within their errors, so either
 // names it.

@@ -39,9 +39,9 @@ Moebius<T> generator(const Presentation &p, Letter k) {
 }
 
 // cos(a pi/2g) for a = 0..g in the multiprecision type T, each within one
-// ulp of T (cos(g pi/2g) = 0 exactly). Why not a cos per angle: at 2560
-// digits mpfr_cos was 10% of a first hdt_create at genus 120, since every
-// new rung's generator set takes g + 1 of them. Here one sin_cos gives
+// ulp of T (cos(g pi/2g) = 0 exactly). Why not a cos per angle: mpfr_cos
+// at thousands of digits is costly, and every new rung's generator set
+// takes g + 1 of them. Here one sin_cos gives
 // z = e^{i pi/2g} and the powers z^a follow by complex products, 32 bits
 // above T's precision: each product adds at most 3 units of 2^-prec to the
 // error of z^a (|z^a| = 1), z's own error is at most 2 units, so z^a is

@@ -509,9 +509,9 @@ int constant_step(const Presentation &p, const Word &u) {
 // Products of the runs 0, d, 2d, ... (every element of N is a rotated
 // run: neighbours.hpp) by length, each with its bound, extended on demand:
 // one pass of 2g letters per step serves all the runs of that step, where a
-// product per run cost 2g^2 letters per step (at genus 128, 176,000 letter
-// products and 30% of the first hdt_create on the 265-bit rung). Per genus,
-// rung and step, for the life of the process like the generator sets.
+// product per run cost 2g^2 letters per step, which dominated a first
+// hdt_create at large genus. Per genus, rung and step, for the life of the
+// process like the generator sets.
 template <class T>
 struct RunPrefixes {
   explicit RunPrefixes(const Presentation &p, double bits) : bound(p, bits) {}

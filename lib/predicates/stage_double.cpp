@@ -112,8 +112,8 @@ Sign DoubleStage::disk_orientation(const FilteredPoint &fa, const FilteredPoint 
 
 Sign DoubleStage::large_circumdisk(const FilteredPoint &a, const FilteredPoint &b, const FilteredPoint &c) const {
   auto as_refined = [](const FilteredPoint &f) { return RefinedPoint<double>{{f.n[0], f.n[1], f.n[2]}, f.error}; };
-  // k within 4u of the exact value, computed once (a cos per face was 2% of
-  // a load, which tests every face).
+  // k within 4u of the exact value, computed once, not a cos per face: a
+  // load tests every face.
   return refined::large_circumdisk_sign(as_refined(a), as_refined(b), as_refined(c), quarter_systole_cosh2_, kUnit);
 }
 

@@ -46,11 +46,9 @@ inline TranslatedPoint stored(const TranslatedPoint &p) { return {p.x, p.y, 0, -
 // A small direct-mapped cache of a stage's points, 2^Bits slots: a walk or
 // a conflict search asks for the same few corners and query again and
 // again. Points along a curve that crosses the sides of F_g make conflict
-// searches of a few dozen translated points: 64 slots missed a quarter of
-// their lookups (to 5% more instructions per insertion), 256 still 8% of
-// the double stage's in-circle lookups along a geodesic at genus 2, 1024
-// miss 3% (the double stage's size; 3% fewer instructions in curves_bench
-// --shape geodesic).
+// searches of a few dozen translated points, which a cache of a few dozen
+// slots misses often; the double stage, which sees them all, has 1024
+// (the size chosen on curves_bench --shape geodesic).
 template <class Point, int Bits = 8>
 class PointCache {
  public:
