@@ -209,8 +209,9 @@ class DummyRelaxation {
   }
   bool full_effort() const { return t_.genus() <= 32; }
   // Runs a step; true when a frame it needed lies beyond the canonical
-  // words' reach (exact::Unsupported: above genus 128, copies near F_g's
-  // corners two faces out have words of 2g + 1 letters). Every product is
+  // words' reach (exact::Unsupported; not met by the construction at any
+  // genus 2 .. 256, a safety net for copies near F_g's corners two faces
+  // out, whose words have 2g + 1 letters). Every product is
   // taken before the faces it describes change, so the faces stay whole;
   // the caller undoes or drops the step.
   template <class Step>

@@ -4,9 +4,10 @@
 // (up to the positive factor sin(pi/4g)^-2 per letter, which no sign
 // depends on), the points of Q0, and every translated image of a point given
 // as doubles. An element is u + v sigma with u, v in Q(zeta_{8g}); it is zero
-// exactly when u = v = 0, since sigma never lies in Q(zeta_{8g}) (field.cpp,
-// Field::is_zero, has the argument). The sign of a real element is found by evaluation at
-// rising precision with a rigorous error bound: double, then the rungs of
+// exactly when u = v = 0, since sigma never lies in Q(zeta_{8g})
+// (Field::is_zero in field.cpp has the argument). The sign of a real
+// element is found by evaluation at rising precision with a rigorous error
+// bound: double, then the rungs of
 // FieldLadder (precision_ladder.hpp) up to 136063 bits, then its run-time
 // rungs up to one that a lower bound on |a| from its norm proves
 // sufficient, so every sign is decided, with no cap. Points placed far from

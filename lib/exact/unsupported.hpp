@@ -2,8 +2,8 @@
 // long for the top rung of a precision ladder, a genus past the dummy
 // construction's, more vertices or translation ids than 32-bit ids name.
 // It is not a bug and not bad input; the C API reports it as HDT_ENOTSUP
-// (capi/guard.hpp). A std::length_error of the standard library (a
-// container past its max_size) stays what it is.
+// (capi/guard.hpp), which reports a std::length_error of the standard
+// library (a container past its max_size) as HDT_ENOMEM.
 #pragma once
 
 #include <stdexcept>
