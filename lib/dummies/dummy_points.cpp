@@ -170,14 +170,14 @@ class DummyBuilder {
   }
 
   // A face's circle as the refinement sees it: cosh of the radius (INFINITY
-  // when the three points lie on a horocycle or hypercycle, or rounding made
-  // nonsense) and the centre (the centroid when there is no circle) in the
-  // disk, in the face's canonical frame.
+  // when rounding made nonsense) and the centre in the disk, in the face's
+  // canonical frame; or the centroid (circle(F, true)) for a face whose
+  // large circle only the exact test saw.
   struct Circle {
     double cosh_r, cx, cy;
   };
 
-  // From the corners' hyperboloid vectors P (in double or MidReal): the
+  // From the corners' hyperboloid vectors P (in double or MpfrReal): the
   // plane's Euclidean normal, whose Minkowski dual is the centre.
   template <class Real>
   static Circle circle_of(const Real (&P)[3][3]) {
@@ -186,16 +186,15 @@ class DummyBuilder {
     const Real v[3] = {P[2][0] - P[0][0], P[2][1] - P[0][1], P[2][2] - P[0][2]};
     const Real m[3] = {u[1] * v[2] - u[2] * v[1], -(u[2] * v[0] - u[0] * v[2]), -(u[0] * v[1] - u[1] * v[0])};
     const Real mm = m[0] * m[0] - m[1] * m[1] - m[2] * m[2];
+    // Three points on a horocycle or hypercycle have no circle: a face so
+    // large occurs in the construction at no genus up to kDummyGenusMax
+    // (each genus was run to check).
+    if (!(mm > 0)) throw std::logic_error("dummy points: a face without a circumcircle");
+    const Real s = Real(m[0] > 0 ? 1 : -1) / sqrt(mm);
     Real centre[3];
-    double cosh_r = INFINITY;
-    if (mm > 0) {
-      const Real s = Real(m[0] > 0 ? 1 : -1) / sqrt(mm);
-      for (int j = 0; j < 3; ++j) centre[j] = m[j] * s;
-      cosh_r = static_cast<double>(centre[0] * P[0][0] - centre[1] * P[0][1] - centre[2] * P[0][2]);
-      if (!(cosh_r >= 1)) cosh_r = INFINITY;  // rounding made nonsense: still a candidate
-    } else {  // a horocycle or hypercycle: take the centroid
-      return centroid_of(P);
-    }
+    for (int j = 0; j < 3; ++j) centre[j] = m[j] * s;
+    double cosh_r = static_cast<double>(centre[0] * P[0][0] - centre[1] * P[0][1] - centre[2] * P[0][2]);
+    if (!(cosh_r >= 1)) cosh_r = INFINITY;  // rounding made nonsense: still a candidate
     return {cosh_r, static_cast<double>(centre[1] / (1 + centre[0])), static_cast<double>(centre[2] / (1 + centre[0]))};
   }
   template <class Real>
@@ -223,11 +222,11 @@ class DummyBuilder {
       far = far || !(n[0] < 0x1p16);
     }
     if (far) {
-      predicates::MidReal M[3][3];
+      predicates::MpfrReal M[3][3];
       bool mid = true;
       for (int i = 0; i < 3 && mid; ++i) {
-        std::array<predicates::MidReal, 3> n;
-        mid = K_.hyperboloid_mid(t_.corner(F, i), &n);
+        std::array<predicates::MpfrReal, 3> n;
+        mid = K_.hyperboloid_mpfr(t_.corner(F, i), &n);
         for (int j = 0; j < 3; ++j) M[i][j] = n[j];
       }
       if (mid) return centroid ? centroid_of(M) : circle_of(M);

@@ -18,7 +18,6 @@
 #include <utility>
 
 #include "dummies/mesh_names.hpp"
-#include "exact/unsupported.hpp"
 #include "group/word_matrix.hpp"
 #include "predicates/double_double.hpp"
 #include "predicates/stage_double_double.hpp"
@@ -140,7 +139,7 @@ class DummyRelaxation {
       // The most promising merges first: smallest fan estimate.
       auto candidates = edges();
       for (auto &e : candidates) {
-        beyond_reach([&] { merge(e.second[0], e.second[1], cap, false); });
+        merge(e.second[0], e.second[1], cap, false);
         e.first = estimate_;
       }
       std::sort(candidates.begin(), candidates.end());
@@ -150,7 +149,7 @@ class DummyRelaxation {
         if (vface_[u] == kNone || vface_[w] == kNone) continue;
         bool kept = false;
         saved_ = false;  // merge saves the state once it changes it
-        beyond_reach([&] { kept = merge(u, w, cap) && repair(u, ok); });
+        kept = merge(u, w, cap) && repair(u, ok);
         if (kept) ++merged_here;
         else if (saved_) restore();
       }
@@ -208,22 +207,6 @@ class DummyRelaxation {
     return n;
   }
   bool full_effort() const { return t_.genus() <= 32; }
-  // Runs a step; true when a frame it needed lies beyond the canonical
-  // words' reach (exact::Unsupported; not met by the construction at any
-  // genus 2 .. 256, a safety net for copies near F_g's corners two faces
-  // out, whose words have 2g + 1 letters). Every product is
-  // taken before the faces it describes change, so the faces stay whole;
-  // the caller undoes or drops the step.
-  template <class Step>
-  bool beyond_reach(Step &&step) {
-    try {
-      step();
-      return false;
-    } catch (const exact::Unsupported &) {
-      estimate_ = INFINITY;
-      return true;
-    }
-  }
   bool movable(uint32_t v) const { return v >= fixed_ && vface_[v] != kNone; }
   // The word's matrix in double-double (from its 133-bit matrix).
   // Cached by id in a hash map: a few thousand ids at genus 128, of the
@@ -231,11 +214,11 @@ class DummyRelaxation {
   const std::array<std::array<DD, 3>, 3> &lorentz_dd(TranslationId t) {
     auto it = dd_.find(t);
     if (it == dd_.end()) {
-      const group::Lorentz<predicates::MidReal> M =
-          group::accurate_lorentz_as<predicates::MidReal>(t_.surface().presentation(), T_.word(t));
+      const group::Lorentz<predicates::MpfrReal> M =
+          group::accurate_lorentz_as<predicates::MpfrReal>(t_.surface().presentation(), T_.word(t));
       std::array<std::array<DD, 3>, 3> L;
       for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) L[i][j] = predicates::round_to_fast(M.m[i][j]);
+        for (int j = 0; j < 3; ++j) L[i][j] = predicates::round_to_double_double(M.m[i][j]);
       it = dd_.emplace(t, L).first;
     }
     return it->second;
@@ -401,7 +384,7 @@ class DummyRelaxation {
   void smooth_all() {
     save();
     for (uint32_t v = fixed_; v < P_.size() && !broken_; ++v)
-      if (beyond_reach([&] { smooth(v); })) broken_ = true;
+      smooth(v);
     if (broken_) restore();
   }
 

@@ -16,7 +16,6 @@
 #include <vector>
 
 #include "dummies/mesh_names.hpp"
-#include "exact/unsupported.hpp"
 #include "predicates/representative.hpp"
 #include "dummies/dummy_relaxation.hpp"
 #include "dummies/hyperboloid_vectors.hpp"
@@ -86,15 +85,7 @@ class DummyThinning {
     // much as the relaxation, which grows fast with the genus). Genus 2
     // keeps the 14-point set of the rounds.
     if (t_.genus() >= 3) {
-      bool relaxed = false;
-      try {
-        relaxed = relax();
-      } catch (const exact::Unsupported &) {
-        // A translation beyond the canonical words' reach while its points
-        // go in (the relaxation's own tries undo such a step; not met): each
-        // insertion and removal is whole, and the rounds below go on.
-      }
-      if (relaxed) {
+      if (relax()) {
         e_.compact_ids();
         return;
       }

@@ -6,7 +6,7 @@
 // doubles) is dyadic over this basis, so no rational arithmetic (and no gcd)
 // is needed. Products are reduced modulo the n-th cyclotomic polynomial.
 // Zero is decided exactly (all coefficients zero); the real value of an
-// element that is real is evaluated in MPFR by sign.hpp.
+// element that is real is evaluated in MPFR by Field::sign (field.hpp).
 #pragma once
 
 #include <boost/multiprecision/gmp.hpp>

@@ -13,18 +13,8 @@ int Triangulation::corner_of(const Face &f, uint32_t v) const {
   throw std::logic_error("a face does not hold the vertex it should");
 }
 
-int Triangulation::twin_by_translations(uint32_t f, int i) const {
-  // Two edges of N join the same vertices to f (a non-simplicial stage of
-  // the dummy construction): the translations tell them apart.
-  const Face &F = faces_[f];
-  const Face &N = faces_.at(F.n[i]);
-  const uint32_t a = F.v[next(i)], b = F.v[prev(i)];
-  group::TranslationTable &T = table();
-  for (int k = 0; k < 3; ++k)
-    if (N.n[k] == f && N.v[next(k)] == b && N.v[prev(k)] == a && T.compose(F.nt[i], N.t[prev(k)]) == F.t[next(i)] &&
-        T.compose(F.nt[i], N.t[next(k)]) == F.t[prev(i)])
-      return k;
-  return -1;
+void Triangulation::ambiguous_twin() {
+  throw std::logic_error("twin: two edges of a face's neighbour join the same vertices (not a simplicial complex)");
 }
 
 // One call of replace(): its steps, in order.

@@ -130,7 +130,10 @@ class Triangulation {
   // vertices()[v].face, each with its frame relative to that one.
   void star(uint32_t v, std::vector<StarFace> *out) const;
   // The edge of f.n[i] that is edge i of f seen from the other side.
-  // Inline: insertion asks it for every edge of the hole's boundary.
+  // Inline: insertion asks it for every edge of the hole's boundary. Two
+  // candidates (f.n[i] meeting f along two edges with the same ends) occur
+  // in no simplicial complex, nor in the dummy construction's early stages
+  // at any genus up to HDT_CREATE_GENUS_MAX (each genus was run to check).
   int twin(uint32_t f, int i) const {
     const Face &F = faces_[f];
     const Face &N = faces_[F.n[i]];
@@ -138,7 +141,8 @@ class Triangulation {
     int found = -1, matches = 0;
     for (int k = 0; k < 3; ++k)
       if (N.n[k] == f && N.v[next(k)] == b && N.v[prev(k)] == a) found = k, ++matches;
-    return matches <= 1 ? found : twin_by_translations(f, i);
+    if (matches > 1) [[unlikely]] ambiguous_twin();
+    return found;
   }
 
   // Walks from face `start` (its canonical copy) to a face whose copy
@@ -164,7 +168,7 @@ class Triangulation {
   // of the new faces go to *ids in order. Throws before changing anything.
   void replace(const std::vector<uint32_t> &old, const std::vector<NewFace> &created,
                const std::vector<BoundaryEdge> &boundary, std::vector<uint32_t> *ids);
-  int twin_by_translations(uint32_t f, int i) const;
+  [[noreturn]] static void ambiguous_twin();
   int corner_of(const Face &f, uint32_t v) const;
 
   // The walk starts in the copy start_frame(canonical copy of start); the

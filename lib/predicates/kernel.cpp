@@ -287,12 +287,12 @@ std::array<double, 3> Kernel::hyperboloid(const TranslatedPoint &p, bool *accura
   const FilteredPoint f = double_.point(p);
   const bool good = f.error < 1e-9 * f.n[0];
   if (!good) {
-    FastPoint d;
+    DoubleDoublePoint d;
     if (double_double_.point(p, &d) && d.error < 1e-12 * static_cast<double>(d.n[0])) {
       if (accurate) *accurate = true;
       return {static_cast<double>(d.n[0]), static_cast<double>(d.n[1]), static_cast<double>(d.n[2])};
     }
-    MidPoint m;
+    MpfrPoint m;
     if (mpfr_.point(p, &m) && m.error < 1e-12 * static_cast<double>(m.n[0])) {
       if (accurate) *accurate = true;
       return {static_cast<double>(m.n[0]), static_cast<double>(m.n[1]), static_cast<double>(m.n[2])};
@@ -302,8 +302,8 @@ std::array<double, 3> Kernel::hyperboloid(const TranslatedPoint &p, bool *accura
   return {f.n[0], f.n[1], f.n[2]};
 }
 
-bool Kernel::hyperboloid_mid(const TranslatedPoint &p, std::array<MidReal, 3> *n) {
-  MidPoint m;
+bool Kernel::hyperboloid_mpfr(const TranslatedPoint &p, std::array<MpfrReal, 3> *n) {
+  MpfrPoint m;
   if (!mpfr_.point(p, &m)) return false;
   for (int i = 0; i < 3; ++i) (*n)[i] = m.n[i];
   return true;

@@ -180,7 +180,7 @@ class Kernel {
   // whose double formulas cancel: far from O at large genus the coordinates
   // reach cosh(2R) ~ 1e10 and a circumcentre loses twice their bits. False
   // when that stage has no approximation of p.
-  bool hyperboloid_mid(const TranslatedPoint &p, std::array<MidReal, 3> *n);
+  bool hyperboloid_mpfr(const TranslatedPoint &p, std::array<MpfrReal, 3> *n);
 
   // orientation(p, q, r) when a stage before the field K_g's decides it,
   // else nothing: for callers that may answer "cannot tell" (the early

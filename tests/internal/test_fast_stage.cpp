@@ -254,13 +254,13 @@ START_TEST(refined_stages_agree_with_exact_near_ties) {
   const std::vector<Copy> copies = copies_around_v0(M);
   std::vector<int32_t> vertex_site(n), off_site(n);
   for (int j = 0; j < n; ++j) {
-    const group::Complex<predicates::MidReal> v = surface::polygon_vertex<predicates::MidReal>(g, j);
+    const group::Complex<predicates::MpfrReal> v = surface::polygon_vertex<predicates::MpfrReal>(g, j);
     const group::Complex<double> rounded = surface::vertex(M.presentation(), j);
     const surface::ExactSite exact = surface::exact_vertex(M.field(), j);
     vertex_site[j] = M.add_site(exact, &v, &rounded);
     // v_j + 2^-108, exactly: too near the ties for double-double (its site
     // coordinates are within 2^-106), decided by the 133-bit stage (2^-128).
-    const group::Complex<predicates::MidReal> w{v.re + kOff, v.im};
+    const group::Complex<predicates::MpfrReal> w{v.re + kOff, v.im};
     const group::Complex<double> w_rounded{static_cast<double>(w.re), static_cast<double>(w.im)};
     const surface::ExactSite moved{M.field().add(exact.X, M.field().from_double(kOff)), exact.Y, exact.Z};
     off_site[j] = M.add_site(moved, &w, &w_rounded);
@@ -414,10 +414,10 @@ START_TEST(hyperboloid_falls_back_to_the_mpfr_point) {
   ck_assert(!(f.error < 1e-9 * f.n[0]));
   predicates::MpfrStage mpfr(M);
   predicates::DoubleDoubleStage double_double(M, mpfr);
-  predicates::FastPoint d;
+  predicates::DoubleDoublePoint d;
   ck_assert(double_double.point(p, &d));
   ck_assert(!(d.error < 1e-12 * static_cast<double>(d.n[0])));
-  predicates::MidPoint m;
+  predicates::MpfrPoint m;
   ck_assert(mpfr.point(p, &m));
   ck_assert(m.error < 1e-12 * static_cast<double>(m.n[0]));
   bool accurate = false;
