@@ -3,6 +3,7 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 
 #include <mpfr.h>
 
@@ -82,6 +83,17 @@ hdt_status copy_word(const group::Word &w, int32_t *out, size_t capacity, size_t
     throw ApiError(HDT_EBUFS, "the word has " + std::to_string(w.size()) + " letters, capacity is " +
                                   std::to_string(capacity));
   std::copy(w.begin(), w.end(), out);
+  return HDT_OK;
+}
+
+hdt_status copy_text(const std::string &s, const char *what, char *text, size_t capacity, size_t *length) {
+  if (capacity > 0 && !text) throw ApiError(HDT_EINVAL, "text is NULL but capacity is " + std::to_string(capacity));
+  *length = s.size();
+  if (capacity == 0) return HDT_OK;
+  if (capacity < s.size() + 1)
+    throw ApiError(HDT_EBUFS, std::string(what) + " has " + std::to_string(s.size()) + " bytes and its NUL, capacity is " +
+                                  std::to_string(capacity));
+  std::memcpy(text, s.c_str(), s.size() + 1);
   return HDT_OK;
 }
 

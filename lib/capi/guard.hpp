@@ -70,6 +70,12 @@ void check_genus(int genus);
 // (out may then be NULL); HDT_EBUFS, with *out_length set, when it is too
 // small. Throws ApiError.
 hdt_status copy_word(const group::Word &w, int32_t *out, size_t capacity, size_t *out_length);
+// Two-call pattern for a text output (hdt_svg): *length gets the text's
+// length without its NUL; capacity 0 asks for it only (text may then be
+// NULL); HDT_EBUFS, nothing written, when capacity < length + 1; else the
+// text and a NUL are written. `what` names the text in the message. Throws
+// ApiError.
+hdt_status copy_text(const std::string &s, const char *what, char *text, size_t capacity, size_t *length);
 // Two-call pattern for a list output (hdt_faces, hdt_vertices): sets *count
 // to the list's size, and tells whether to fill the caller's buffers of
 // `capacity` items: false for capacity 0 (a size query). Throws ApiError:

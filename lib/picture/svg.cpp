@@ -690,7 +690,7 @@ HDT_API hdt_status hdt_svg(const hdt_triangulation *t, double size, const char *
       throw ApiError(HDT_EINVAL, "unknown flags " + std::to_string(flags & ~kKnownFlags) +
                                      " (HDT_SVG_NEIGHBOURS = 1, HDT_SVG_HIDE_DUMMIES = 2, HDT_SVG_VORONOI = 4 and "
                                      "HDT_SVG_SIDE_LABELS = 8 are known)");
-    if (capacity > 0 && !text)
+    if (capacity > 0 && !text)  // before the drawing, which copy_text would check after
       throw ApiError(HDT_EINVAL, "text is NULL but capacity is " + std::to_string(capacity));
 
     Snapshot s;
@@ -701,15 +701,7 @@ HDT_API hdt_status hdt_svg(const hdt_triangulation *t, double size, const char *
     Text f;
     draw(f, s, g, size, title, flags);
 
-    const std::string &out = f.str();
-    *length = out.size();
-    if (capacity < out.size() + 1) {
-      if (capacity == 0) return HDT_OK;
-      throw ApiError(HDT_EBUFS, "the picture has " + std::to_string(out.size()) + " bytes and its NUL, capacity is " +
-                                    std::to_string(capacity));
-    }
-    std::memcpy(text, out.c_str(), out.size() + 1);
-    return HDT_OK;
+    return hdt::capi::copy_text(f.str(), "the picture", text, capacity, length);
   });
 }
 
