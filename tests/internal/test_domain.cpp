@@ -33,6 +33,21 @@ std::string bolza_text(const char *pairing) {
          mx + "\n" + x + " " + my + "\n";
 }
 
+// The regular 12-gon of genus 3: v_k = r e^{i (2k+1) pi/12}, r^2 = cos(pi/6)
+// = sqrt3/2, in Q(b), b = 3^{1/4}: v_0 = (b^3 + b)/4 + i (b^3 - b)/4 (r cos(pi/12)
+// = 3^{1/4} (sqrt3 + 1)/4), v_1 = (b + i b)/2, v_2 = (y_0, x_0), v_3 = (-y_0, x_0),
+// v_4 = (-b + i b)/2, v_5 = (-x_0, y_0), then the negatives.
+std::string genus3_text() {
+  const std::string x = "1/4*b^3+1/4*b", y = "1/4*b^3-1/4*b", h = "1/2*b";
+  const std::string mx = "-1/4*b^3-1/4*b", my = "-1/4*b^3+1/4*b", mh = "-1/2*b";
+  const std::string half[6][2] = {{x, y}, {h, h}, {y, x}, {my, x}, {mh, h}, {mx, y}};
+  std::string t = "field b^4-3 b 1.316+/-0.01\n12\n6 7 8 9 10 11 0 1 2 3 4 5\n";
+  for (const auto &v : half) t += v[0] + " " + v[1] + "\n";
+  const std::string neg[6][2] = {{mx, my}, {mh, mh}, {my, mx}, {y, mx}, {h, mh}, {x, my}};
+  for (const auto &v : neg) t += v[0] + " " + v[1] + "\n";
+  return t;
+}
+
 // The area from the vertices in double, through nothing of lib/domain but
 // vertex_double: (n - 2) pi minus the angles, each arg(T_v(prev) / T_v(next)).
 double double_area(const FundamentalPolygon &P) {
@@ -148,6 +163,18 @@ START_TEST(bolza_octagon_with_the_commutator_pairing) {
 }
 END_TEST
 
+START_TEST(regular_12_gon_of_genus_3) {
+  const FundamentalPolygon P(parse_polygon_text(genus3_text()));
+  ck_assert_int_eq(P.genus(), 3);
+  ck_assert_uint_eq(P.cycles().size(), 1);
+  ck_assert_uint_eq(P.cycles()[0].size(), 12);
+  const double r = std::sqrt(std::sqrt(3.0) / 2);
+  for (int k = 0; k < 12; ++k)
+    ck_assert_msg(std::abs(P.vertex_double(k) - std::polar(r, (2 * k + 1) * M_PI / 12)) < 1e-15, "vertex %d", k);
+  check_gauss_bonnet(P, "genus 3");
+}
+END_TEST
+
 START_TEST(refusals_name_the_reason) {
   const PolygonText good = random_octagon(7).text();
   PolygonText t = good;
@@ -241,6 +268,7 @@ int main() {
     tcase_add_test(tc, random_decagons_pass_with_two_cycles_of_five);
     tcase_add_test(tc, bolza_octagon_in_a_number_field);
     tcase_add_test(tc, bolza_octagon_with_the_commutator_pairing);
+    tcase_add_test(tc, regular_12_gon_of_genus_3);
     tcase_add_test(tc, refusals_name_the_reason);
     tcase_add_test(tc, turn_counting_tells_4_pi_from_2_pi);
     tcase_add_test(tc, parse_errors_name_the_token);
