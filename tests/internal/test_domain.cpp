@@ -33,19 +33,32 @@ std::string bolza_text(const char *pairing) {
          mx + "\n" + x + " " + my + "\n";
 }
 
-// The regular 12-gon of genus 3: v_k = r e^{i (2k+1) pi/12}, r^2 = cos(pi/6)
-// = sqrt3/2, in Q(b), b = 3^{1/4}: v_0 = (b^3 + b)/4 + i (b^3 - b)/4 (r cos(pi/12)
-// = 3^{1/4} (sqrt3 + 1)/4), v_1 = (b + i b)/2, v_2 = (y_0, x_0), v_3 = (-y_0, x_0),
-// v_4 = (-b + i b)/2, v_5 = (-x_0, y_0), then the negatives.
-std::string genus3_text() {
-  const std::string x = "1/4*b^3+1/4*b", y = "1/4*b^3-1/4*b", h = "1/2*b";
-  const std::string mx = "-1/4*b^3-1/4*b", my = "-1/4*b^3+1/4*b", mh = "-1/2*b";
-  const std::string half[6][2] = {{x, y}, {h, h}, {y, x}, {my, x}, {mh, h}, {mx, y}};
-  std::string t = "field b^4-3 b 1.316+/-0.01\n12\n6 7 8 9 10 11 0 1 2 3 4 5\n";
-  for (const auto &v : half) t += v[0] + " " + v[1] + "\n";
-  const std::string neg[6][2] = {{mx, my}, {mh, mh}, {my, mx}, {y, mx}, {h, mh}, {x, my}};
-  for (const auto &v : neg) t += v[0] + " " + v[1] + "\n";
+// A regular 12-gon v_k = r e^{i (2k+1) pi/12} with opposite sides paired,
+// from x + i y = v_0 and h = Re v_1 = Im v_1 in the field of `minpoly`:
+// v_2 = (y, x), v_3 = (-y, x), v_4 = (-h, h), v_5 = (-x, y), then the negatives.
+PolygonText regular_12_gon(const char *minpoly, const char *gen, const char *ball, const char *xs, const char *ys,
+                           const char *hs) {
+  PolygonText t;
+  t.field = make_field(minpoly, gen, ball);
+  const Number x = make_element(*t.field, xs), y = make_element(*t.field, ys), h = make_element(*t.field, hs);
+  t.vertices = {{x, y}, {h, h}, {y, x}, {-y, x}, {-h, h}, {-x, y}};
+  for (int k = 0; k < 6; ++k) t.vertices.push_back(-t.vertices[std::size_t(k)]);
+  for (int k = 0; k < 12; ++k) t.paired.push_back((k + 6) % 12);
   return t;
+}
+
+// Genus 3: r^2 = cos(pi/6) = sqrt3/2, in Q(b), b = 3^{1/4}: r cos(pi/12) =
+// 3^{1/4} (sqrt3 + 1)/4, so x = (b^3 + b)/4, y = (b^3 - b)/4, h = b/2.
+PolygonText genus_3_12_gon() {
+  return regular_12_gon("b^4-3", "b", "1.316+/-0.01", "1/4*b^3+1/4*b", "1/4*b^3-1/4*b", "1/2*b");
+}
+
+// Angles pi/3, sum 4 pi: cosh R = cot(pi/12) cot(pi/6) gives r^2 = sqrt3 - 1;
+// with c = sqrt(2 sqrt3 - 2) (c^4 + 4c^2 - 8 = 0, sqrt3 = c^2/2 + 1) x = c^3/8 +
+// c/2, y = c^3/8, h = c/2. Sides equal, pairings composing to the identity
+// around the one cycle (a rotation by 4 pi), and still no surface.
+PolygonText four_pi_12_gon() {
+  return regular_12_gon("c^4+4*c^2-8", "c", "1.21+/-0.01", "1/8*c^3+1/2*c", "1/8*c^3", "1/2*c");
 }
 
 // The area from the vertices in double, through nothing of lib/domain but
@@ -164,7 +177,7 @@ START_TEST(bolza_octagon_with_the_commutator_pairing) {
 END_TEST
 
 START_TEST(regular_12_gon_of_genus_3) {
-  const FundamentalPolygon P(parse_polygon_text(genus3_text()));
+  const FundamentalPolygon P(genus_3_12_gon());
   ck_assert_int_eq(P.genus(), 3);
   ck_assert_uint_eq(P.cycles().size(), 1);
   ck_assert_uint_eq(P.cycles()[0].size(), 12);
@@ -172,6 +185,21 @@ START_TEST(regular_12_gon_of_genus_3) {
   for (int k = 0; k < 12; ++k)
     ck_assert_msg(std::abs(P.vertex_double(k) - std::polar(r, (2 * k + 1) * M_PI / 12)) < 1e-15, "vertex %d", k);
   check_gauss_bonnet(P, "genus 3");
+}
+END_TEST
+
+// The 4 pi 12-gon's pairings (built here as FundamentalPolygon builds them)
+// compose to the identity around its cycle: only the turn count refuses it.
+START_TEST(a_4_pi_cycle_composes_to_the_identity) {
+  const PolygonText t = four_pi_12_gon();
+  auto v = [&t](int k) { return t.vertices[std::size_t(((k % 12) + 12) % 12)]; };
+  Moebius around = identity(v(0).re);
+  for (int u = 0, step = 0; step < 12; ++step, u = (u + 7) % 12) {
+    const int j = t.paired[std::size_t(u)];  // the pairing of side j sends v_u to v_{j+1}
+    const int i = t.paired[std::size_t(j)];
+    around = segment_map(v(i + 1), v(i), v(j), v(j + 1)) * around;
+  }
+  ck_assert(around.is_identity());
 }
 END_TEST
 
@@ -205,6 +233,7 @@ START_TEST(refusals_name_the_reason) {
   for (int s : {1, -1})
     for (const auto &p : xy) t.vertices.emplace_back(q(s * p[0], 10), q(s * p[1], 10));
   expect_refusal(t, "sum to between 5 pi and 6 pi: the angle sum must be 2 pi");
+  expect_refusal(four_pi_12_gon(), "vertex cycle (0 7 2 9 4 11 6 1 8 3 10 5) sum to 4 pi: the angle sum must be 2 pi");
 }
 END_TEST
 
@@ -258,6 +287,8 @@ START_TEST(text_round_trip_is_exact) {
   const std::string written = polygon_text(b);
   ck_assert_msg(written.rfind("field a^4-2*a^2-1 a ", 0) == 0, "%s", written.c_str());
   expect_same(b, parse_polygon_text(written));
+  const PolygonText g3 = genus_3_12_gon();
+  expect_same(g3, parse_polygon_text(polygon_text(g3)));
 }
 END_TEST
 
@@ -269,6 +300,7 @@ int main() {
     tcase_add_test(tc, bolza_octagon_in_a_number_field);
     tcase_add_test(tc, bolza_octagon_with_the_commutator_pairing);
     tcase_add_test(tc, regular_12_gon_of_genus_3);
+    tcase_add_test(tc, a_4_pi_cycle_composes_to_the_identity);
     tcase_add_test(tc, refusals_name_the_reason);
     tcase_add_test(tc, turn_counting_tells_4_pi_from_2_pi);
     tcase_add_test(tc, parse_errors_name_the_token);
