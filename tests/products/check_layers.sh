@@ -11,6 +11,7 @@ set -euo pipefail
 lib=$1
 declare -A uses=(
   [exact]=""
+  [domain]="exact"
   [group]="exact"
   [surface]="exact group"
   [predicates]="exact group surface"
@@ -47,7 +48,7 @@ for layer in "${!uses[@]}"; do
   fi
 done
 if [ $status -eq 0 ]; then
-  for layer in exact group surface predicates mesh dummies dual capi picture; do
+  for layer in exact domain group surface predicates mesh dummies dual capi picture; do
     echo "layer $layer uses: ${uses[$layer]:-nothing}"
   done
 fi
