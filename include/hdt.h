@@ -70,7 +70,7 @@ HDT_API const char *hdt_last_error_message(void) HDT_NOEXCEPT;
    a later function can test at compile time, e.g. hdt_save (HDT_0.4) with
    #if HDT_VERSION >= 400. hdt_version() is the library's own at run time. */
 #define HDT_VERSION_MAJOR 0
-#define HDT_VERSION_MINOR 6
+#define HDT_VERSION_MINOR 7
 #define HDT_VERSION_PATCH 0
 #define HDT_VERSION (HDT_VERSION_MAJOR * 10000 + HDT_VERSION_MINOR * 100 + HDT_VERSION_PATCH)
 
@@ -722,6 +722,81 @@ typedef int (*hdt_progress_fn)(void *user, size_t done, size_t total);
    with the function it began with). */
 HDT_API hdt_status hdt_set_progress(hdt_triangulation *t, hdt_progress_fn fn, void *user,
                                     double interval_seconds) HDT_NOEXCEPT;
+
+/* ---- Surfaces given by a fundamental polygon (symbol version HDT_0.7) ----
+   Any closed orientable hyperbolic surface, given as CGAL's
+   Triangulation_on_hyperbolic_surface_2 takes it: a convex geodesic polygon
+   of the Poincare disk with n vertices v_0 .. v_{n-1} (counterclockwise,
+   n even) and a pairing of its sides; side k runs from v_k to v_{k+1}
+   (indices mod n), and the pairing of side k is the isometry that sends
+   side j = paired(k), taken from v_{j+1} to v_j, onto side k from v_k to
+   v_{k+1}. Coordinates are exact: rationals, or elements of one real number
+   field (docs/polygons.md). Everything is checked exactly as the surface
+   is made (no tolerance): n even and at least 4, the pairing a matching of
+   distinct sides, every vertex inside the open unit disk, the polygon
+   strictly convex and counterclockwise, paired sides of equal length, and
+   around every vertex cycle the pairings compose to the identity with angle
+   sum exactly 2 pi; the genus comes from Euler's formula and must be >= 2.
+   A polygon that fails is refused with HDT_EINVAL and a
+   hdt_last_error_message that names the token, side, vertex or cycle at
+   fault. A surface is not changed after it is made; one thread at a time
+   uses it. This release reads, checks and describes such surfaces;
+   triangulating them comes in a later node. */
+typedef struct hdt_surface hdt_surface; /* opaque */
+
+/* A surface from the text of its fundamental polygon (length bytes, no NUL
+   needed): CGAL's Hyperbolic_fundamental_domain_2 text format (n, the n
+   paired sides, then the n vertices as exact rationals "p/q" or decimals
+   "0.125"), optionally after a line "field MINPOLY GEN MID+/-RAD" naming a
+   real number field whose elements the coordinates may then be
+   (polynomials in GEN); docs/polygons.md. *out is NULL on failure:
+   HDT_EINVAL for out NULL, text NULL with length > 0, malformed text or a
+   polygon that fails a check; HDT_ENOMEM. Time: polynomial in n and in the
+   size of the numbers (exact arithmetic). */
+HDT_API hdt_status hdt_surface_from_polygon(hdt_surface **out, const char *text, size_t length) HDT_NOEXCEPT;
+/* A random genus-2 surface, built as CGAL's
+   Hyperbolic_fundamental_domain_factory_2 builds them: a centrally
+   symmetric polygon with rational vertices, side k paired with side
+   k + sides/2, its last vertex computed exactly so that the angle
+   condition holds. sides: 8 (one vertex cycle) or 10 (two cycles of five).
+   The same seed gives the same polygon on every platform. *out is NULL on
+   failure: HDT_EINVAL for out NULL or another number of sides. */
+HDT_API hdt_status hdt_surface_random_symmetric(hdt_surface **out, int sides, uint64_t seed) HDT_NOEXCEPT;
+/* Frees the surface; NULL is a no-op. */
+HDT_API void hdt_surface_destroy(hdt_surface *s) HDT_NOEXCEPT;
+/* The genus, or 0 when s is NULL. */
+HDT_API int hdt_surface_genus(const hdt_surface *s) HDT_NOEXCEPT;
+/* n, the number of sides (= vertices) of the polygon, or 0 when s is NULL. */
+HDT_API int hdt_surface_side_count(const hdt_surface *s) HDT_NOEXCEPT;
+/* Vertex v_k (k taken mod n), each coordinate rounded to double.
+   HDT_EINVAL for s, x or y NULL. */
+HDT_API hdt_status hdt_surface_vertex(const hdt_surface *s, int k, double *x, double *y) HDT_NOEXCEPT;
+/* The side paired with side k (k taken mod n) into *paired_side, and the
+   pairing isometry of side k as hdt_word_matrix gives an element:
+   z -> (a z + b) / (conj(b) z + conj(a)), |a|^2 - |b|^2 = 1, Re a >= 0,
+   m = (Re a, Im a, Re b, Im b). a^2 and a b are computed exactly and
+   rounded, then a and b taken from them in double: a few units in the
+   last place. Either output may be NULL. HDT_EINVAL for s NULL. */
+HDT_API hdt_status hdt_surface_pairing(const hdt_surface *s, int k, int *paired_side, double m[4]) HDT_NOEXCEPT;
+/* The vertex cycles (the sets of polygon vertices that are one point of
+   the surface): *count receives their number; cycle[k] (n entries, for
+   k = 0 .. n-1) the index of vertex k's cycle, the cycles numbered in the
+   order of their smallest vertex. capacity 0 asks for *count only (cycle
+   may then be NULL); HDT_EBUFS, with *count set and nothing else written,
+   when 0 < capacity < n. HDT_EINVAL for s or count NULL, cycle NULL with
+   capacity > 0. */
+HDT_API hdt_status hdt_surface_vertex_cycles(const hdt_surface *s, int *cycle, size_t capacity,
+                                             size_t *count) HDT_NOEXCEPT;
+/* The polygon as text that hdt_surface_from_polygon reads back as the same
+   surface (the same pairing and exactly the same coordinates): CGAL's format
+   for a rational polygon, which CGAL's from_stream reads; with the field
+   line first otherwise. Two-call pattern as in hdt_svg: *length receives
+   the text's length without its NUL; capacity 0 asks for it (text may then
+   be NULL); HDT_EBUFS, with *length set and nothing written, when
+   0 < capacity < *length + 1; otherwise the text and a NUL are written.
+   HDT_EINVAL for s or length NULL, text NULL with capacity > 0. */
+HDT_API hdt_status hdt_surface_polygon_text(const hdt_surface *s, char *text, size_t capacity,
+                                            size_t *length) HDT_NOEXCEPT;
 
 #ifdef __cplusplus
 }

@@ -18,7 +18,7 @@ declare -A uses=(
   [mesh]="exact group surface predicates"
   [dummies]="exact group surface predicates mesh"
   [dual]="exact group surface predicates mesh"
-  [capi]="exact group surface predicates mesh dummies dual"
+  [capi]="exact domain group surface predicates mesh dummies dual"
   [picture]="capi"
 )
 
