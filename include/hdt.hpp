@@ -5,7 +5,7 @@
 // the C one. What this header adds:
 //   - hdt::Triangulation, an RAII owner of an hdt_triangulation (movable,
 //     not copyable; copy() makes an independent one through hdt_save and
-//     hdt_load);
+//     hdt_load), and hdt::PolygonSurface, one of an hdt_surface;
 //   - results as values and std::vector, the two-call pattern done inside;
 //   - a failing status as an hdt::Error exception carrying the status and
 //     hdt_last_error_message(). The C API's guarantees carry over: a call
@@ -305,6 +305,77 @@ class Triangulation {
  private:
   explicit Triangulation(hdt_triangulation *t) noexcept : t_(t) {}
   hdt_triangulation *t_ = nullptr;
+};
+
+// ---- A surface given by a fundamental polygon (HDT_0.7) ----
+
+// The pairing of a side: the side glued to it and the isometry
+// z -> (a z + b) / (conj(b) z + conj(a)) as hdt_surface_pairing gives it.
+struct Pairing {
+  int paired_side;
+  Matrix matrix;
+};
+
+class PolygonSurface {
+ public:
+  // From the polygon's text (hdt_surface_from_polygon; docs/polygons.md).
+  static PolygonSurface from_polygon(const std::string &text) {
+    hdt_surface *s = nullptr;
+    detail::check(hdt_surface_from_polygon(&s, text.data(), text.size()), "hdt_surface_from_polygon");
+    return PolygonSurface(s);
+  }
+  // A random genus-2 polygon with 8 or 10 sides (hdt_surface_random_symmetric).
+  static PolygonSurface random_symmetric(int sides, uint64_t seed) {
+    hdt_surface *s = nullptr;
+    detail::check(hdt_surface_random_symmetric(&s, sides, seed), "hdt_surface_random_symmetric");
+    return PolygonSurface(s);
+  }
+  PolygonSurface(PolygonSurface &&other) noexcept : s_(std::exchange(other.s_, nullptr)) {}
+  PolygonSurface &operator=(PolygonSurface &&other) noexcept {
+    if (this != &other) {
+      hdt_surface_destroy(s_);
+      s_ = std::exchange(other.s_, nullptr);
+    }
+    return *this;
+  }
+  PolygonSurface(const PolygonSurface &) = delete;
+  PolygonSurface &operator=(const PolygonSurface &) = delete;
+  ~PolygonSurface() { hdt_surface_destroy(s_); }
+  // The C handle, owned by this object.
+  hdt_surface *handle() const noexcept { return s_; }
+
+  int genus() const { return hdt_surface_genus(s_); }
+  int side_count() const { return hdt_surface_side_count(s_); }
+  Point vertex(int k) const {
+    Point p;
+    detail::check(hdt_surface_vertex(s_, k, &p.x, &p.y), "hdt_surface_vertex");
+    return p;
+  }
+  Pairing pairing(int k) const {
+    Pairing p;
+    detail::check(hdt_surface_pairing(s_, k, &p.paired_side, p.matrix.data()), "hdt_surface_pairing");
+    return p;
+  }
+  // The cycle index of each vertex (cycles numbered by their smallest vertex).
+  std::vector<int> vertex_cycles() const {
+    std::vector<int> cycle(static_cast<std::size_t>(side_count()));
+    std::size_t count = 0;
+    detail::check(hdt_surface_vertex_cycles(s_, cycle.data(), cycle.size(), &count), "hdt_surface_vertex_cycles");
+    return cycle;
+  }
+  // The exact text, which from_polygon reads back as the same surface.
+  std::string polygon_text() const {
+    std::size_t length = 0;
+    detail::check(hdt_surface_polygon_text(s_, nullptr, 0, &length), "hdt_surface_polygon_text");
+    std::string text(length + 1, '\0');
+    detail::check(hdt_surface_polygon_text(s_, &text[0], text.size(), &length), "hdt_surface_polygon_text");
+    text.resize(length);
+    return text;
+  }
+
+ private:
+  explicit PolygonSurface(hdt_surface *s) noexcept : s_(s) {}
+  hdt_surface *s_ = nullptr;
 };
 
 }  // namespace hdt

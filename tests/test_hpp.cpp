@@ -7,6 +7,7 @@
 
 #include <check.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -153,6 +154,33 @@ START_TEST(surface_and_group) {
 }
 END_TEST
 
+// The polygon surface's wrapper gives the C API's values; a refused polygon
+// throws its status; its text round-trips; ownership moves.
+START_TEST(polygon_surfaces) {
+  hdt::PolygonSurface s = hdt::PolygonSurface::random_symmetric(10, 4);
+  ck_assert_int_eq(s.genus(), 2);
+  ck_assert_int_eq(s.side_count(), 10);
+  double x, y, m[4];
+  int paired;
+  ck_assert_int_eq(hdt_surface_vertex(s.handle(), 3, &x, &y), HDT_OK);
+  ck_assert(s.vertex(3).x == x && s.vertex(3).y == y);
+  ck_assert_int_eq(hdt_surface_pairing(s.handle(), 3, &paired, m), HDT_OK);
+  const hdt::Pairing p = s.pairing(3);
+  ck_assert(p.paired_side == paired && p.matrix[0] == m[0] && p.matrix[3] == m[3]);
+  const std::vector<int> cycles = s.vertex_cycles();
+  ck_assert_int_eq(int(cycles.size()), 10);
+  ck_assert_int_eq(cycles[0], 0);
+  ck_assert(*std::max_element(cycles.begin(), cycles.end()) == 1);
+  const std::string text = s.polygon_text();
+  hdt::PolygonSurface t = hdt::PolygonSurface::from_polygon(text);
+  ck_assert(t.polygon_text() == text);
+  s = std::move(t);
+  ck_assert(s.polygon_text() == text && t.handle() == nullptr);
+  ck_assert_int_eq(status_of([] { hdt::PolygonSurface::from_polygon("8\n4 5 6 7 0 1 2 x\n"); }), HDT_EINVAL);
+  ck_assert_int_eq(status_of([] { hdt::PolygonSurface::random_symmetric(6, 1); }), HDT_EINVAL);
+}
+END_TEST
+
 int main() {
   Suite *s = suite_create("hpp");
   TCase *tc = tcase_create("hpp");
@@ -161,6 +189,7 @@ int main() {
   tcase_add_test(tc, failures_throw_the_status_and_change_nothing);
   tcase_add_test(tc, ownership_moves_and_copies);
   tcase_add_test(tc, surface_and_group);
+  tcase_add_test(tc, polygon_surfaces);
   suite_add_tcase(s, tc);
   SRunner *runner = srunner_create(s);
   srunner_run_all(runner, CK_NORMAL);
