@@ -751,8 +751,10 @@ typedef struct hdt_surface hdt_surface; /* opaque */
    real number field whose elements the coordinates may then be
    (polynomials in GEN); docs/polygons.md. *out is NULL on failure:
    HDT_EINVAL for out NULL, text NULL with length > 0, malformed text or a
-   polygon that fails a check; HDT_ENOMEM. Time: polynomial in n and in the
-   size of the numbers (exact arithmetic). */
+   polygon that fails a check; HDT_ENOMEM. Limits, refused up front with
+   HDT_EINVAL: n <= 2^20, a field of degree <= 256, powers of the generator
+   written <= 1024. Time: polynomial in n and in the size of the numbers
+   (exact arithmetic). */
 HDT_API hdt_status hdt_surface_from_polygon(hdt_surface **out, const char *text, size_t length) HDT_NOEXCEPT;
 /* A random genus-2 surface, built as CGAL's
    Hyperbolic_fundamental_domain_factory_2 builds them: a centrally

@@ -238,6 +238,9 @@ START_TEST(bad_polygons_are_refused_with_the_reason) {
   memcpy(v1, "\n1/4*a^3-a 1/4*a\n", 17);
   expect_refused(text, "not strictly convex");
   expect_refused("field a^2-4 a 2+/-0.1\n4\n", "not irreducible");
+  /* refused before e-antic spends time on them */
+  expect_refused("field a^100000-2 a 1+/-0.1\n4\n", "the largest field degree");
+  expect_refused("field a^2-2 a 1.4+/-0.1\n4\n2 3 0 1\na^99999999999 0 0 1/2 -1/2 0 0 -1/2\n", "a power above 1024");
   hdt_surface *s = NULL;
   expect(hdt_surface_from_polygon(NULL, bolza, strlen(bolza)) == HDT_EINVAL, "out NULL accepted");
   expect(hdt_surface_from_polygon(&s, NULL, 3) == HDT_EINVAL && s == NULL, "text NULL accepted");

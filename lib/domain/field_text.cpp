@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <stdexcept>
+#include <string>
 
 namespace hdt::domain {
 
@@ -26,6 +27,21 @@ bool is_polynomial_text(const std::string &s) {
   return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) {
     return std::isalnum(c) || c == '_' || c == '^' || c == '*' || c == '/' || c == '+' || c == '-';
   });
+}
+
+// The largest exponent written after a `^` (0 when none; more than
+// kExponentMax when any is): the cost of e-antic's parsing, factoring and
+// root isolation grows with it, so it is bounded before they run.
+long largest_exponent(const std::string &s) {
+  long largest = 0;
+  for (std::size_t i = s.find('^'); i != std::string::npos; i = s.find('^', i + 1)) {
+    std::size_t j = i + 1;
+    long e = 0;
+    while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j])) && e <= kExponentMax)
+      e = 10 * e + (s[j++] - '0');
+    largest = std::max(largest, e);
+  }
+  return largest;
 }
 
 // The defining polynomial of K is irreducible over Q: by Gauss's lemma, when
@@ -50,6 +66,9 @@ FieldPtr make_field(const std::string &minpoly, const std::string &gen, const st
   if (!is_identifier(gen)) throw std::invalid_argument("the generator's name `" + gen + "` is not an identifier");
   if (!is_polynomial_text(minpoly))
     throw std::invalid_argument("`" + minpoly + "` is not a polynomial in " + gen + " (no spaces; * and ^)");
+  if (largest_exponent(minpoly) > kFieldDegreeMax)
+    throw std::invalid_argument("`" + minpoly + "` has a power above " + std::to_string(kFieldDegreeMax) +
+                                ", the largest field degree this build reads");
   const std::size_t pm = ball.find("+/-");
   if (pm == std::string::npos || pm == 0 || pm + 3 == ball.size())
     throw std::invalid_argument("the embedding `" + ball + "` is not a ball MID+/-RAD");
@@ -81,6 +100,8 @@ std::string element_token(const Number &x) {
 Number make_element(const eantic::renf_class &K, const std::string &token) {
   if (!is_polynomial_text(token))
     throw std::invalid_argument("`" + token + "` is not a polynomial in " + K.gen_name());
+  if (largest_exponent(token) > kExponentMax)
+    throw std::invalid_argument("`" + token + "` has a power above " + std::to_string(kExponentMax));
   try {
     return Number(K, token);
   } catch (const std::exception &) {
