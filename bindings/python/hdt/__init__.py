@@ -4,8 +4,10 @@ hyperbolic surfaces M_g.
 :class:`Triangulation` (module :mod:`hdt.triangulation`) holds a point set on
 M_g and its Delaunay triangulation; :mod:`hdt.picture` draws one (SVG, or
 matplotlib); :mod:`hdt.surface` and :mod:`hdt.group` give the polygon F_g,
-the systole and words in the group Gamma_g. NumPy is optional: with it,
-methods returning many numbers return NumPy arrays, without it lists.
+the systole and words in the group Gamma_g; :class:`Surface` (also in
+:mod:`hdt.surface`) is a surface given by any fundamental polygon. NumPy
+is optional: with it, methods returning many numbers return NumPy arrays,
+without it lists.
 
 A pure-Python ctypes package over the C ABI of include/hdt.h. The library is
 found through the environment variable HDT_LIBRARY (a file path), else by its
@@ -43,7 +45,7 @@ from .group import (
 )
 from .library import abi_version, version
 from .sampling import random_points
-from .surface import point_representative, polygon_side_midpoint, polygon_vertex, systole
+from .surface import Surface, point_representative, polygon_side_midpoint, polygon_vertex, systole
 from .triangulation import (Cells, Edges, Faces, Location, Neighbours, Quality, Refined, Star, Stars, Triangulation,
                             Vertices, Voronoi)
 
@@ -70,6 +72,7 @@ __all__ = [
     "Star",
     "Stars",
     "Status",
+    "Surface",
     "Triangulation",
     "Vertices",
     "Voronoi",

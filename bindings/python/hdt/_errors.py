@@ -94,9 +94,9 @@ class InternalError(Error):
 
 
 class HandleClosed(InvalidArgument):
-    """A :class:`hdt.Triangulation` used after :meth:`~hdt.Triangulation.close`
-    (the Python side of the library's NULL-handle HDT_EINVAL; never passed
-    to the library)."""
+    """A :class:`hdt.Triangulation` or :class:`hdt.Surface` used after its
+    close() (the Python side of the library's NULL-handle HDT_EINVAL; never
+    passed to the library)."""
 
 
 _CLASS_OF_STATUS = {

@@ -52,11 +52,15 @@ _double_p = ctypes.POINTER(ctypes.c_double)
 _size_p = ctypes.POINTER(ctypes.c_size_t)
 _word = ctypes.POINTER(ctypes.c_int32)
 _handle = ctypes.c_void_p  # hdt_triangulation *
+_surface = ctypes.c_void_p  # hdt_surface *
+_surface_p = ctypes.POINTER(ctypes.c_void_p)
 _handle_p = ctypes.POINTER(ctypes.c_void_p)
 _uint32 = ctypes.c_uint32
 _uint32_p = ctypes.POINTER(ctypes.c_uint32)
 _int32 = ctypes.c_int32
 _int32_p = ctypes.POINTER(ctypes.c_int32)
+_int_p = ctypes.POINTER(ctypes.c_int)
+_uint64 = ctypes.c_uint64
 _uint8_p = ctypes.POINTER(ctypes.c_uint8)
 _unsigned = ctypes.c_uint
 _char_p = ctypes.POINTER(ctypes.c_char)  # an output buffer of bytes
@@ -118,6 +122,16 @@ PROTOTYPES = {
     "hdt_epsilon_net": (_status, (_handle, _double, _size, _size_p, _size_p)),
     "hdt_quality": (_status, (_handle, _double_p, _double_p, _double_p, _double_p)),
     "hdt_set_progress": (_status, (_handle, progress_fn, ctypes.c_void_p, _double)),
+    # Surfaces given by a fundamental polygon (HDT_0.7).
+    "hdt_surface_from_polygon": (_status, (_surface_p, _text, _size)),  # bytes passed as they are, no copy
+    "hdt_surface_random_symmetric": (_status, (_surface_p, _int, _uint64)),
+    "hdt_surface_destroy": (None, (_surface,)),
+    "hdt_surface_genus": (_int, (_surface,)),
+    "hdt_surface_side_count": (_int, (_surface,)),
+    "hdt_surface_vertex": (_status, (_surface, _int, _double_p, _double_p)),
+    "hdt_surface_pairing": (_status, (_surface, _int, _int_p, _double_p)),
+    "hdt_surface_vertex_cycles": (_status, (_surface, _int_p, _size, _size_p)),
+    "hdt_surface_polygon_text": (_status, (_surface, _char_p, _size, _size_p)),
 }
 
 
