@@ -239,7 +239,12 @@ START_TEST(bad_polygons_are_refused_with_the_reason) {
   expect_refused(text, "not strictly convex");
   expect_refused("field a^2-4 a 2+/-0.1\n4\n", "not irreducible");
   /* refused before e-antic spends time on them */
-  expect_refused("field a^100000-2 a 1+/-0.1\n4\n", "the largest field degree");
+  expect_refused("field a^300-2 a 1+/-0.1\n4\n", "the largest field degree");
+  expect_refused("field a^100000-2 a 1+/-0.1\n4\n", "a power above 1024");
+  expect_refused("field a^2-2 a 5+/-0.1\n4\n", "holds 0 real roots");
+  expect_refused("field a^2-2 a 0+/-2\n4\n", "holds 2 real roots");
+  expect_refused("field a^^2-2 a 1.4+/-0.1\n4\n", "expected a power after ^");
+  expect_refused("field a^2-2 a 1.4+/-0.1\n4\n2 3 0 1\nb 0 0 1/2 -1/2 0 0 -1/2\n", "expected a at character 1");
   expect_refused("field a^2-2 a 1.4+/-0.1\n4\n2 3 0 1\na^99999999999 0 0 1/2 -1/2 0 0 -1/2\n", "a power above 1024");
   hdt_surface *s = NULL;
   expect(hdt_surface_from_polygon(NULL, bolza, strlen(bolza)) == HDT_EINVAL, "out NULL accepted");

@@ -21,13 +21,10 @@ namespace hdt::domain {
 
 using FieldPtr = boost::intrusive_ptr<const eantic::renf_class>;
 
-// Limits checked before e-antic sees a token, so that every text is read in
-// bounded time: the field's degree (factoring and isolating a root of degree
-// 256 takes about 0.1 s, of degree 2048 seconds), and any power written in a
-// polynomial (x^k is built before it is reduced modulo the minimal
-// polynomial).
+// The largest field degree read, so that every text is read in bounded
+// time (factoring and isolating a root of degree 256 takes about 0.1 s, of
+// degree 2048 seconds). Written powers are bounded too (polynomial_text.hpp).
 constexpr long kFieldDegreeMax = 256;
-constexpr long kExponentMax = 1024;
 
 // The field of the three tokens. Throws std::invalid_argument naming what is
 // wrong: a malformed token, a polynomial e-antic cannot read, one that is

@@ -6,6 +6,8 @@
 #include <iterator>
 #include <sstream>
 
+#include "domain/rational_text.hpp"
+
 namespace hdt::domain {
 
 namespace {
@@ -32,40 +34,6 @@ std::vector<Token> tokenise(const std::string &text) {
     out.push_back(std::move(t));
   }
   return out;
-}
-
-bool all_digits(const std::string &s, std::size_t from, std::size_t to) {
-  if (from >= to) return false;
-  for (std::size_t i = from; i < to; ++i)
-    if (!std::isdigit(static_cast<unsigned char>(s[i]))) return false;
-  return true;
-}
-
-// [+-]digits[/digits] with a nonzero denominator, or [+-]digits.digits; the
-// exact rational, or false.
-bool rational_token(const std::string &s, mpq_class &q) {
-  const std::size_t start = (!s.empty() && (s[0] == '+' || s[0] == '-')) ? 1 : 0;
-  const bool negative = start == 1 && s[0] == '-';
-  const std::size_t slash = s.find('/'), dot = s.find('.');
-  if (slash != std::string::npos && dot == std::string::npos) {
-    if (!all_digits(s, start, slash) || !all_digits(s, slash + 1, s.size())) return false;
-    const mpz_class num(s.substr(start, slash - start), 10), den(s.substr(slash + 1), 10);
-    if (den == 0) return false;
-    q = mpq_class(num, den);
-  } else if (dot != std::string::npos && slash == std::string::npos) {
-    if (!all_digits(s, start, dot) || !all_digits(s, dot + 1, s.size())) return false;
-    mpz_class den;
-    mpz_ui_pow_ui(den.get_mpz_t(), 10, s.size() - dot - 1);
-    q = mpq_class(mpz_class(s.substr(start, dot - start) + s.substr(dot + 1), 10), den);
-  } else if (slash == std::string::npos && dot == std::string::npos) {
-    if (!all_digits(s, start, s.size())) return false;
-    q = mpq_class(mpz_class(s.substr(start), 10));
-  } else {
-    return false;
-  }
-  q.canonicalize();
-  if (negative) q = -q;
-  return true;
 }
 
 class Reader {
@@ -107,8 +75,7 @@ class Reader {
 
   long integer(const std::string &what, long low, long high) {
     const std::string &s = take(what);
-    const std::size_t start = (!s.empty() && (s[0] == '+' || s[0] == '-')) ? 1 : 0;
-    if (all_digits(s, start, s.size()) && s.size() - start <= 18) {
+    if (is_integer_text(s) && s.size() <= 18) {
       const long v = std::stol(s);
       if (v >= low && v <= high) return v;
     }
@@ -134,7 +101,7 @@ class Reader {
     const std::string what = std::string(axis) + " of vertex " + std::to_string(k);
     const std::string &s = take(what);
     mpq_class q;
-    if (rational_token(s, q)) return K ? Number(*K, q) : Number(q);
+    if (parse_rational(s, q)) return K ? Number(*K, q) : Number(q);
     if (!K) {
       --next_;
       fail(what + ", a rational p/q or p or a decimal [-]digits.digits");
