@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "domain/distance.hpp"
+#include "domain/klein.hpp"
 #include "domain/turning.hpp"
 
 namespace hdt::domain {
@@ -12,18 +14,6 @@ std::string cycle_text(const std::vector<int> &cycle) {
   std::string s = "(";
   for (std::size_t t = 0; t < cycle.size(); ++t) s += (t ? " " : "") + std::to_string(cycle[t]);
   return s + ")";
-}
-
-// The Klein model's point of z: 2z / (1 + |z|^2). Geodesics of the disk are
-// its chords, so hyperbolic convexity is Euclidean convexity there.
-Complex klein(const Complex &z) {
-  const Number s = Number(z.re.parent(), 2) / (1 + norm2(z));
-  return s * z;
-}
-
-// cosh d(a, b) = 1 + 2 |a - b|^2 / ((1 - |a|^2)(1 - |b|^2)), in the field.
-Number cosh_distance(const Complex &a, const Complex &b) {
-  return 1 + 2 * norm2(a - b) / ((1 - norm2(a)) * (1 - norm2(b)));
 }
 
 }  // namespace
