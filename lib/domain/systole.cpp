@@ -1,6 +1,7 @@
 #include "domain/systole.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <stdexcept>
 #include <string>
@@ -8,6 +9,7 @@
 
 #include "domain/base_point.hpp"
 #include "domain/distance.hpp"
+#include "exact/unsupported.hpp"
 
 namespace hdt::domain {
 
@@ -57,7 +59,7 @@ std::size_t walk(const std::vector<Element> &g, const Complex &c, const Number &
   std::size_t count = 0;
   for (; !accepted.empty(); accepted.pop_front(), ++count) {
     if (count == tile_limit)
-      throw std::runtime_error("domain::systole: the walk exceeds " + std::to_string(tile_limit) + " tiles");
+      throw exact::Unsupported("the certified systole's walk exceeds " + std::to_string(tile_limit) + " tiles");
     const Word &h = accepted.front();
     keep_if_shorter(best, h);
     for (int k = 0; k < int(g.size()); ++k) {
@@ -69,6 +71,17 @@ std::size_t walk(const std::vector<Element> &g, const Complex &c, const Number &
   return count;
 }
 
+// The walk accepts about the area of the ball B(c, L + 2R) over P's, 4 pi (g - 1):
+// a walk estimated past the limit is refused before it starts.
+void refuse_long_walks(const FundamentalPolygon &P, double L, double R, std::size_t tile_limit) {
+  const double estimate = (std::cosh(L + 2 * R) - 1) / (2.0 * (P.genus() - 1));
+  if (!(estimate <= double(tile_limit)))
+    throw exact::Unsupported("the certified systole would walk about " + std::to_string(std::llround(estimate)) +
+                             " tiles (a vertex " + std::to_string(R) +
+                             " from the base point: a thin polygon), more than the limit " +
+                             std::to_string(tile_limit));
+}
+
 }  // namespace
 
 Systole systole(const FundamentalPolygon &P, std::size_t tile_limit) {
@@ -76,6 +89,7 @@ Systole systole(const FundamentalPolygon &P, std::size_t tile_limit) {
   const Complex c = base_point(P);
   Shortest best = shortest_of_length_two(g);
   const double L = length_from_cosh2_half(best.cosh2).hi, R = radius_above(P, c);
+  refuse_long_walks(P, L, R, tile_limit);
   const Number bound(c.re.parent(), cosh_above(sum_above(L, sum_above(R, R))));
   const std::size_t walked = walk(g, c, bound, tile_limit, best);
   return {best.word, best.cosh2, length_from_cosh2_half(best.cosh2), walked};

@@ -29,9 +29,10 @@
 // ball's area over P's), so it grows like e^{2R}: quick for polygons that are
 // round about c (the Bolza octagon: R = 2.45, 761 tiles), out of reach for
 // thin ones with vertices near the circle (R = 5.8: some 10^6 tiles and
-// more). tile_limit stops such a walk with std::runtime_error rather than
-// let it run for hours; a tighter acceptance test (several base points) would
-// be the cure and is not done.
+// more). A walk whose estimate (that area ratio) passes tile_limit is refused
+// with exact::Unsupported before it starts, and one that passes it anyway is
+// stopped so; a tighter acceptance test (several base points) would be the
+// cure and is not done.
 #pragma once
 
 #include <cstddef>
@@ -49,6 +50,6 @@ struct Systole {
   std::size_t tiles_walked;  // the tiles the walk accepted
 };
 
-Systole systole(const FundamentalPolygon &P, std::size_t tile_limit = 100000);
+Systole systole(const FundamentalPolygon &P, std::size_t tile_limit = 20000);
 
 }  // namespace hdt::domain
