@@ -740,8 +740,9 @@ HDT_API hdt_status hdt_set_progress(hdt_triangulation *t, hdt_progress_fn fn, vo
    A polygon that fails is refused with HDT_EINVAL and a
    hdt_last_error_message that names the token, side, vertex or cycle at
    fault. A surface is not changed after it is made; one thread at a time
-   uses it. This release reads, checks and describes such surfaces;
-   triangulating them comes in a later node. */
+   uses it. This release reads, checks and describes such surfaces, with
+   their systole, neighbour count and representatives; triangulating them
+   comes in a later node. */
 typedef struct hdt_surface hdt_surface; /* opaque */
 
 /* A surface from the text of its fundamental polygon (length bytes, no NUL
@@ -799,6 +800,36 @@ HDT_API hdt_status hdt_surface_vertex_cycles(const hdt_surface *s, int *cycle, s
    HDT_EINVAL for s or length NULL, text NULL with capacity > 0. */
 HDT_API hdt_status hdt_surface_polygon_text(const hdt_surface *s, char *text, size_t capacity,
                                             size_t *length) HDT_NOEXCEPT;
+/* The systole of s, certified: *lo <= sys <= *hi, the two within a few
+   units in the last place. It is the least translation length over the
+   group, found exactly (docs/polygons.md): every element g with
+   d(c, g c) <= L + 2R is walked, c a base point inside the polygon, R the
+   largest distance from c to a vertex, L the least length among the
+   pairings and their products of two, and the least cosh^2(l/2) among them
+   compared exactly. Their number grows like e^(2R): a walk estimated at
+   more than 20000 tiles (thin polygons, with vertices far from c) is
+   refused at once with HDT_ENOTSUP naming the estimate. Computed on the
+   first call (about 2 ms a tile; 761 tiles for the Bolza octagon), kept
+   for the next. HDT_EINVAL for s, lo or hi NULL. */
+HDT_API hdt_status hdt_surface_systole(const hdt_surface *s, double *lo, double *hi) HDT_NOEXCEPT;
+/* |N|: the number of group elements h (the identity included) whose copy
+   h(P) of the polygon meets it, found around the vertex cycles: 1 + the
+   sum over cycles C of |C| (|C| - 1) - n. HDT_EINVAL for s or count NULL. */
+HDT_API hdt_status hdt_surface_neighbour_count(const hdt_surface *s, size_t *count) HDT_NOEXCEPT;
+/* The representative of the disk point (x, y): the element t, as its word
+   in the pairings (letter k is the pairing of side k; t = g_{w_0} g_{w_1}
+   ...), with t(x + iy) in the polygon's half-open fundamental set (its
+   interior, the interior of the side of smaller index of each pair, the
+   smallest vertex of each cycle), and t(x + iy) rounded into *rx, *ry
+   (either may be NULL). Exact: the geodesic from a base point to (x, y),
+   taken exactly, is walked through the tiling, which ends for every convex
+   fundamental polygon, Dirichlet domain or not (docs/polygons.md). Two-call
+   pattern for the word as in hdt_point_representative (capacity 0 asks for
+   *length; HDT_EBUFS, with *length set and nothing else written).
+   HDT_EDOMAIN for a point that is not finite or not inside the open unit
+   disk; HDT_EINVAL for s or length NULL, word NULL with capacity > 0. */
+HDT_API hdt_status hdt_surface_representative(const hdt_surface *s, double x, double y, double *rx, double *ry,
+                                              int32_t *word, size_t capacity, size_t *length) HDT_NOEXCEPT;
 
 #ifdef __cplusplus
 }

@@ -363,6 +363,30 @@ class PolygonSurface {
     detail::check(hdt_surface_vertex_cycles(s_, cycle.data(), cycle.size(), &count), "hdt_surface_vertex_cycles");
     return cycle;
   }
+  // The certified systole: lo <= sys <= hi (hdt_surface_systole).
+  std::array<double, 2> systole() const {
+    std::array<double, 2> b;
+    detail::check(hdt_surface_systole(s_, &b[0], &b[1]), "hdt_surface_systole");
+    return b;
+  }
+  std::size_t neighbour_count() const {
+    std::size_t count = 0;
+    detail::check(hdt_surface_neighbour_count(s_, &count), "hdt_surface_neighbour_count");
+    return count;
+  }
+  // The point in the fundamental set and the word in the pairings taking
+  // (x, y) there (hdt_surface_representative).
+  Representative representative(double x, double y) const {
+    Representative r;
+    std::size_t length = 0;
+    detail::check(hdt_surface_representative(s_, x, y, &r.point.x, &r.point.y, nullptr, 0, &length),
+                  "hdt_surface_representative");
+    r.word.resize(length);
+    if (length > 0)
+      detail::check(hdt_surface_representative(s_, x, y, &r.point.x, &r.point.y, r.word.data(), length, &length),
+                    "hdt_surface_representative");
+    return r;
+  }
   // The exact text, which from_polygon reads back as the same surface.
   std::string polygon_text() const {
     std::size_t length = 0;

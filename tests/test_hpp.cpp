@@ -178,6 +178,16 @@ START_TEST(polygon_surfaces) {
   ck_assert(s.polygon_text() == text && t.handle() == nullptr);
   ck_assert_int_eq(status_of([] { hdt::PolygonSurface::from_polygon("8\n4 5 6 7 0 1 2 x\n"); }), HDT_EINVAL);
   ck_assert_int_eq(status_of([] { hdt::PolygonSurface::random_symmetric(6, 1); }), HDT_EINVAL);
+  double lo, hi, rx, ry;
+  std::size_t count, length;
+  ck_assert_int_eq(hdt_surface_systole(s.handle(), &lo, &hi), HDT_OK);
+  ck_assert(s.systole()[0] == lo && s.systole()[1] == hi);
+  ck_assert_int_eq(hdt_surface_neighbour_count(s.handle(), &count), HDT_OK);
+  ck_assert(s.neighbour_count() == count);
+  int32_t word[64];
+  ck_assert_int_eq(hdt_surface_representative(s.handle(), 0.9, 0.2, &rx, &ry, word, 64, &length), HDT_OK);
+  const hdt::Representative r = s.representative(0.9, 0.2);
+  ck_assert(r.point.x == rx && r.point.y == ry && r.word == hdt::Word(word, word + length));
 }
 END_TEST
 

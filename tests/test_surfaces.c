@@ -212,6 +212,101 @@ START_TEST(bolza_octagon_is_the_built_in_m2) {
 }
 END_TEST
 
+/* The Bolza octagon's systole, neighbour set and representatives are the
+   built-in M_2's, computed by the other path (the cyclotomic field, Dehn's
+   algorithm, the canonical words). */
+START_TEST(bolza_octagon_group_is_the_built_in_one) {
+  hdt_surface *s = surface_from_text(bolza);
+  double lo, hi;
+  OK(hdt_surface_systole(s, &lo, &hi));
+  expect(lo <= hdt_systole(2) && hdt_systole(2) <= hi && hi - lo < 1e-12, "systole in [%.17g, %.17g], M_2's %.17g",
+         lo, hi, hdt_systole(2));
+  size_t count, builtin;
+  OK(hdt_surface_neighbour_count(s, &count));
+  OK(hdt_neighbour_count(2, &builtin));
+  expect(count == builtin, "|N| = %zu, the built-in M_2 has %zu", count, builtin);
+  uint64_t seed = 5;
+  for (int i = 0; i < 200; ++i) {
+    const double r = 0.995 * sqrt(uniform01(&seed)), a = 2 * acos(-1.0) * uniform01(&seed);
+    const double x = r * cos(a), y = r * sin(a);
+    double rx, ry, bx, by;
+    size_t length;
+    OK(hdt_surface_representative(s, x, y, &rx, &ry, NULL, 0, &length));
+    OK(hdt_point_representative(2, x, y, &bx, &by, NULL, 0, &length));
+    expect(fabs(rx - bx) < 1e-12 && fabs(ry - by) < 1e-12, "(%.17g, %.17g): representative (%.17g, %.17g), M_2's (%.17g, %.17g)",
+           x, y, rx, ry, bx, by);
+  }
+  hdt_surface_destroy(s);
+}
+END_TEST
+
+/* The pairings' product along a word, applied to z in double. */
+static double complex pairings_image(const polygon_t *p, const int32_t *w, size_t length, double complex z) {
+  for (size_t i = length; i-- > 0;) z = apply(p, w[i], z);
+  return z;
+}
+
+/* Inside the closed polygon, in double with a margin: left of every side's
+   geodesic, taken in the Klein model where it is the chord. */
+static int inside(const polygon_t *p, double complex z, double margin) {
+  const double complex k = 2 * z / (1 + creal(z * conj(z)));
+  for (int i = 0; i < p->n; ++i) {
+    const double complex a = 2 * p->v[i] / (1 + creal(p->v[i] * conj(p->v[i])));
+    const double complex b = 2 * p->v[(i + 1) % p->n] / (1 + creal(p->v[(i + 1) % p->n] * conj(p->v[(i + 1) % p->n])));
+    if (cimag(conj(b - a) * (k - a)) < -margin) return 0;
+  }
+  return 1;
+}
+
+/* A random octagon: the systole against the least translation length of the
+   words of up to three pairings in double (2 cosh(l/2) = |tr|, the trace
+   2 Re a of the SU(1,1) form); representatives inside the polygon and the
+   images of the points under their words. */
+START_TEST(random_octagon_group) {
+  hdt_surface *s = random_surface(8, 1);
+  const polygon_t p = read_back(s);
+  double lo, hi, least = INFINITY;
+  OK(hdt_surface_systole(s, &lo, &hi));
+  for (int i = 0; i < 8; ++i)
+    for (int j = -1; j < 8; ++j)
+      for (int k = -1; k < 8; ++k) {
+        double complex A = p.a[i], B = p.b[i];
+        const int more[2] = {j, k};
+        for (int m = 0; m < 2; ++m) {
+          if (more[m] < 0) continue;
+          const double complex a = A * p.a[more[m]] + B * conj(p.b[more[m]]), b = A * p.b[more[m]] + B * conj(p.a[more[m]]);
+          A = a, B = b;
+        }
+        const double t = fabs(2 * creal(A));
+        if (t > 2 + 1e-6) least = fmin(least, 2 * acosh(t / 2));
+      }
+  expect(lo <= least + 1e-9 && fabs(least - lo) < 1e-9, "systole in [%.17g, %.17g], words of 3 pairings: %.17g", lo,
+         hi, least);
+  uint64_t seed = 9;
+  for (int i = 0; i < 100; ++i) {
+    const double r = 0.99 * sqrt(uniform01(&seed)), a = 2 * acos(-1.0) * uniform01(&seed);
+    const double complex z = r * cos(a) + I * r * sin(a);
+    int32_t word[256];
+    size_t length;
+    double rx, ry;
+    OK(hdt_surface_representative(s, creal(z), cimag(z), &rx, &ry, word, 256, &length));
+    const double complex image = pairings_image(&p, word, length, z);
+    expect(cabs(image - (rx + I * ry)) < 1e-9, "the word does not take (%g, %g) to its representative", creal(z),
+           cimag(z));
+    expect(inside(&p, rx + I * ry, 1e-12), "the representative of (%g, %g) is outside the polygon", creal(z), cimag(z));
+  }
+  size_t count;
+  OK(hdt_surface_neighbour_count(s, &count));
+  expect(count == 49, "|N| = %zu: one cycle of 8 vertices gives 1 + 8 * 7 - 8 = 49", count);
+  hdt_surface_destroy(s);
+  /* a thin octagon: the systole's walk is refused up front */
+  s = random_surface(8, 3);
+  expect(hdt_surface_systole(s, &lo, &hi) == HDT_ENOTSUP && strstr(hdt_last_error_message(), "would walk about"),
+         "the thin octagon's systole: %s", hdt_last_error_message());
+  hdt_surface_destroy(s);
+}
+END_TEST
+
 /* The text is refused, *out stays NULL, and the message says why. */
 static void expect_refused(const char *text, const char *phrase) {
   hdt_surface *s = (hdt_surface *)&s; /* not NULL: the call must clear it */
@@ -282,6 +377,7 @@ END_TEST
 
 int main(void) {
   const TTest *const tests[] = {random_octagons, random_decagons, bolza_octagon_is_the_built_in_m2,
+                                bolza_octagon_group_is_the_built_in_one, random_octagon_group,
                                 bad_polygons_are_refused_with_the_reason, null_and_small_buffers};
   return run_tests("surfaces", tests, sizeof tests / sizeof tests[0]);
 }

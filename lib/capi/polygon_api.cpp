@@ -7,6 +7,7 @@
 #include "capi/guard.hpp"
 #include "capi/surface_handle.hpp"
 #include "domain/fundamental_polygon.hpp"
+#include "domain/neighbours.hpp"
 #include "domain/polygon_text.hpp"
 #include "domain/random_octagon.hpp"
 #include "hdt.h"
@@ -124,6 +125,42 @@ HDT_API hdt_status hdt_surface_polygon_text(const hdt_surface *s, char *text, si
     const FundamentalPolygon &p = polygon_of(s);
     if (!length) throw ApiError(HDT_EINVAL, "length must not be NULL");
     return hdt::capi::copy_text(hdt::domain::polygon_text(p.text()), "the polygon's text", text, capacity, length);
+  });
+}
+
+HDT_API hdt_status hdt_surface_systole(const hdt_surface *s, double *lo, double *hi) HDT_NOEXCEPT {
+  return guarded("hdt_surface_systole", [&] {
+    const FundamentalPolygon &p = polygon_of(s);
+    if (!lo || !hi) throw ApiError(HDT_EINVAL, "lo and hi must not be NULL");
+    if (!s->systole) s->systole = hdt::domain::systole(p);
+    *lo = s->systole->length.lo, *hi = s->systole->length.hi;
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_surface_neighbour_count(const hdt_surface *s, size_t *count) HDT_NOEXCEPT {
+  return guarded("hdt_surface_neighbour_count", [&] {
+    const FundamentalPolygon &p = polygon_of(s);
+    if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
+    if (!s->neighbour_count) s->neighbour_count = hdt::domain::neighbours(p).size();
+    *count = *s->neighbour_count;
+    return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_surface_representative(const hdt_surface *s, double x, double y, double *rx, double *ry,
+                                              int32_t *word, size_t capacity, size_t *length) HDT_NOEXCEPT {
+  return guarded("hdt_surface_representative", [&] {
+    const FundamentalPolygon &p = polygon_of(s);
+    if (!length) throw ApiError(HDT_EINVAL, "length must not be NULL");
+    hdt::capi::check_disk_point(x, y);
+    if (!s->reduction) s->reduction = std::make_unique<hdt::domain::Reduction>(p);
+    const hdt::domain::Representative r = (*s->reduction)(p.exact_point(x, y));
+    const hdt::group::Word letters(r.word.letters.begin(), r.word.letters.end());
+    const hdt_status status = hdt::capi::copy_word(letters, word, capacity, length);
+    if (rx) *rx = static_cast<double>(r.point.re);
+    if (ry) *ry = static_cast<double>(r.point.im);
+    return status;
   });
 }
 

@@ -4,11 +4,21 @@
 // by its elements, as it compares them).
 #pragma once
 
+#include <memory>
+#include <optional>
 #include <utility>
 
 #include "domain/fundamental_polygon.hpp"
+#include "domain/representative.hpp"
+#include "domain/systole.hpp"
 
 struct hdt_surface {
   explicit hdt_surface(hdt::domain::FundamentalPolygon p) : polygon(std::move(p)) {}
   const hdt::domain::FundamentalPolygon polygon;
+  // Computed on first use and kept (the queries are const; one thread at a
+  // time uses a surface): the certified systole, the size of N, and the
+  // reduction into the polygon with its Klein form.
+  mutable std::optional<hdt::domain::Systole> systole;
+  mutable std::optional<std::size_t> neighbour_count;
+  mutable std::unique_ptr<hdt::domain::Reduction> reduction;
 };

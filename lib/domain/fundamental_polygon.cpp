@@ -46,6 +46,13 @@ std::size_t FundamentalPolygon::index(int k) const {
   return std::size_t(((k % n) + n) % n);
 }
 
+Complex FundamentalPolygon::exact_point(double x, double y) const {
+  mpq_class qx(x), qy(y);  // exact: a double is a dyadic rational
+  qx.canonicalize(), qy.canonicalize();
+  const auto &parent = vertices_.front().re.parent();
+  return {Number(parent, qx), Number(parent, qy)};
+}
+
 std::complex<double> FundamentalPolygon::vertex_double(int k) const {
   const Complex &z = vertex(k);
   return {static_cast<double>(z.re), static_cast<double>(z.im)};

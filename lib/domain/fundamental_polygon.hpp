@@ -37,6 +37,8 @@ class FundamentalPolygon {
   int paired(int k) const { return paired_[index(k)]; }
   const Complex &vertex(int k) const { return vertices_[index(k)]; }
   std::complex<double> vertex_double(int k) const;
+  // The point x + iy of two doubles, exactly, in the polygon's field.
+  Complex exact_point(double x, double y) const;
   // The isometry that sends side paired(k) onto side k (see above).
   const Moebius &pairing(int k) const { return pairings_[index(k)]; }
   // The vertex cycles, each from its smallest vertex in the order

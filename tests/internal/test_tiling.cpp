@@ -188,13 +188,7 @@ bool in_fundamental_set(const FundamentalPolygon &P, const Complex &z) {
 }
 
 // A point of the open disk from doubles, exactly, in P's field.
-Complex exact_point(const FundamentalPolygon &P, std::complex<double> z) {
-  mpq_class x(z.real()), y(z.imag());
-  x.canonicalize();
-  y.canonicalize();
-  const auto &parent = P.vertex(0).re.parent();
-  return {Number(parent, x), Number(parent, y)};
-}
+Complex exact_point(const FundamentalPolygon &P, std::complex<double> z) { return P.exact_point(z.real(), z.imag()); }
 
 void check_representative(const FundamentalPolygon &P, const Reduction &reduce, const Complex &z, const char *what) {
   const Representative r = reduce(z);

@@ -278,3 +278,36 @@ class Surface:
             buffer = ctypes.create_string_buffer(length.value + 1)
             check(lib.hdt_surface_polygon_text(handle, buffer, length.value + 1, ctypes.byref(length)))
         return buffer.raw[: length.value].decode("utf-8")
+
+    # ---- the group ----
+
+    def systole(self) -> Tuple[float, float]:
+        """The systole, certified: (lo, hi) with lo <= sys <= hi, a few units
+        in the last place apart, found by an exact walk over the tiles near
+        the polygon (computed once, kept). Raises :class:`hdt.NotSupported`
+        at once for a thin polygon whose walk would pass 20000 tiles."""
+        lo, hi = ctypes.c_double(), ctypes.c_double()
+        with self._lock:
+            check(lib.hdt_surface_systole(self._live("systole"), ctypes.byref(lo), ctypes.byref(hi)))
+        return lo.value, hi.value
+
+    def neighbour_count(self) -> int:
+        """|N|, the group elements h (the identity included) with h(P)
+        meeting the polygon P."""
+        count = ctypes.c_size_t()
+        with self._lock:
+            check(lib.hdt_surface_neighbour_count(self._live("neighbour_count"), ctypes.byref(count)))
+        return count.value
+
+    def representative(self, x: float, y: float) -> Tuple[Point, Word]:
+        """The representative of the disk point (x, y): ((rx, ry), word), the
+        word w of the element t = g_{w_0} g_{w_1} ... (letter k the pairing
+        of side k) with t(x + iy) in the polygon's half-open fundamental set,
+        and t(x + iy) rounded to floats; computed exactly. Raises
+        :class:`hdt.OutOfDomain` when (x, y) is not a finite point of the open
+        unit disk."""
+        rx, ry = ctypes.c_double(), ctypes.c_double()
+        with self._lock:
+            word = call_word(lib.hdt_surface_representative, self._live("representative"), c_coordinate(x, "x"),
+                             c_coordinate(y, "y"), ctypes.byref(rx), ctypes.byref(ry), capacity=32)
+        return (rx.value, ry.value), word

@@ -226,3 +226,35 @@ def test_garbage_collection_frees_the_surface():
     del surface
     gc.collect()
     assert reference() is None and not finalizer.alive
+
+
+def test_the_bolza_group_is_the_built_in_m2():
+    with hdt.Surface.from_polygon(BOLZA) as s:
+        lo, hi = s.systole()
+        assert lo <= hdt.systole(2) <= hi and hi - lo < 1e-12
+        assert s.neighbour_count() == hdt.neighbour_count(2)
+        for k in range(60):
+            z = cmath.rect(0.99 * math.sqrt((k + 0.5) / 60), 2.399963 * k)
+            (rx, ry), _ = s.representative(z.real, z.imag)
+            (bx, by), _ = hdt.point_representative(2, z.real, z.imag)
+            assert abs(rx - bx) < 1e-12 and abs(ry - by) < 1e-12
+
+
+def test_representatives_are_images_under_their_words(random_surface):
+    random_surface, _, _ = random_surface
+    for k in range(40):
+        z = cmath.rect(0.98 * math.sqrt((k + 0.5) / 40), 2.399963 * k)
+        (rx, ry), word = random_surface.representative(z.real, z.imag)
+        image = z
+        for letter in reversed(word):
+            image = apply(random_surface.pairing(letter), image)
+        assert abs(image - complex(rx, ry)) < 1e-9
+
+
+def test_a_thin_polygon_refuses_its_systole_at_once():
+    with hdt.Surface.random_symmetric(8, 3) as s:
+        with pytest.raises(hdt.NotSupported, match="would walk about"):
+            s.systole()
+    with hdt.Surface.random_symmetric(8, 1) as s:
+        with pytest.raises(hdt.OutOfDomain):
+            s.representative(1.0, 0.0)
