@@ -144,13 +144,16 @@ static void expect_text_round_trip(const hdt_surface *s) {
   hdt_surface_destroy(t);
 }
 
-START_TEST(random_octagons) {
-  for (uint64_t seed = 1; seed <= 10; ++seed) {
-    hdt_surface *s = random_surface(8, seed);
+/* Random polygons with `sides` sides, seeds 1..seeds: genus 2, `cycles`
+   vertex cycles, sides opposite paired, and every geometric check. */
+static void expect_random_surfaces(int sides, uint64_t seeds, size_t cycles) {
+  for (uint64_t seed = 1; seed <= seeds; ++seed) {
+    hdt_surface *s = random_surface(sides, seed);
     const polygon_t p = read_back(s);
-    expect(p.n == 8 && p.genus == 2 && p.cycles == 1, "seed %llu: %d sides, genus %d, %zu cycles",
+    expect(p.n == sides && p.genus == 2 && p.cycles == cycles, "seed %llu: %d sides, genus %d, %zu cycles",
            (unsigned long long)seed, p.n, p.genus, p.cycles);
-    for (int k = 0; k < 8; ++k) expect(p.paired[k] == (k + 4) % 8, "side %d paired with %d", k, p.paired[k]);
+    for (int k = 0; k < sides; ++k)
+      expect(p.paired[k] == (k + sides / 2) % sides, "side %d paired with %d", k, p.paired[k]);
     expect_pairings(&p);
     expect_gauss_bonnet(&p);
     expect_cycle_relations(&p);
@@ -158,21 +161,11 @@ START_TEST(random_octagons) {
     hdt_surface_destroy(s);
   }
 }
+
+START_TEST(random_octagons) { expect_random_surfaces(8, 10, 1); }
 END_TEST
 
-START_TEST(random_decagons) {
-  for (uint64_t seed = 1; seed <= 5; ++seed) {
-    hdt_surface *s = random_surface(10, seed);
-    const polygon_t p = read_back(s);
-    expect(p.n == 10 && p.genus == 2 && p.cycles == 2, "seed %llu: %d sides, genus %d, %zu cycles",
-           (unsigned long long)seed, p.n, p.genus, p.cycles);
-    expect_pairings(&p);
-    expect_gauss_bonnet(&p);
-    expect_cycle_relations(&p);
-    expect_text_round_trip(s);
-    hdt_surface_destroy(s);
-  }
-}
+START_TEST(random_decagons) { expect_random_surfaces(10, 5, 2); }
 END_TEST
 
 /* The Bolza surface's octagon, v_k = 2^(-1/4) e^(i (2k+1) pi/8), in

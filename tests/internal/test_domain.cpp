@@ -18,40 +18,12 @@ extern "C" {
 }
 
 #include "run_suite.hpp"
+#include "test_polygons.hpp"
 
 using namespace hdt::domain;
+using namespace hdt::domain::test;
 
 namespace {
-
-// The Bolza octagon: v_k = 2^{-1/4} e^{i (2k+1) pi/8} = x + i y and its
-// images, x = sqrt(sqrt2 + 1)/2, y = sqrt(sqrt2 - 1)/2. With a = sqrt(sqrt2 + 1)
-// (a^4 - 2a^2 - 1 = 0, a ~ 1.5538) x = a/2 and y = 1/(2a) = (a^3 - 2a)/2.
-std::string bolza_text(const char *pairing) {
-  const std::string x = "1/2*a", y = "1/2*a^3-a", mx = "-1/2*a", my = "-1/2*a^3+a";
-  return std::string("field a^4-2*a^2-1 a 1.5538+/-0.01\n8\n") + pairing + "\n" + x + " " + y + "\n" + y + " " + x +
-         "\n" + my + " " + x + "\n" + mx + " " + y + "\n" + mx + " " + my + "\n" + my + " " + mx + "\n" + y + " " +
-         mx + "\n" + x + " " + my + "\n";
-}
-
-// A regular 12-gon v_k = r e^{i (2k+1) pi/12} with opposite sides paired,
-// from x + i y = v_0 and h = Re v_1 = Im v_1 in the field of `minpoly`:
-// v_2 = (y, x), v_3 = (-y, x), v_4 = (-h, h), v_5 = (-x, y), then the negatives.
-PolygonText regular_12_gon(const char *minpoly, const char *gen, const char *ball, const char *xs, const char *ys,
-                           const char *hs) {
-  PolygonText t;
-  t.field = make_field(minpoly, gen, ball);
-  const Number x = make_element(*t.field, xs), y = make_element(*t.field, ys), h = make_element(*t.field, hs);
-  t.vertices = {{x, y}, {h, h}, {y, x}, {-y, x}, {-h, h}, {-x, y}};
-  for (int k = 0; k < 6; ++k) t.vertices.push_back(-t.vertices[std::size_t(k)]);
-  for (int k = 0; k < 12; ++k) t.paired.push_back((k + 6) % 12);
-  return t;
-}
-
-// Genus 3: r^2 = cos(pi/6) = sqrt3/2, in Q(b), b = 3^{1/4}: r cos(pi/12) =
-// 3^{1/4} (sqrt3 + 1)/4, so x = (b^3 + b)/4, y = (b^3 - b)/4, h = b/2.
-PolygonText genus_3_12_gon() {
-  return regular_12_gon("b^4-3", "b", "1.316+/-0.01", "1/4*b^3+1/4*b", "1/4*b^3-1/4*b", "1/2*b");
-}
 
 // Angles pi/3, sum 4 pi: cosh R = cot(pi/12) cot(pi/6) gives r^2 = sqrt3 - 1;
 // with c = sqrt(2 sqrt3 - 2) (c^4 + 4c^2 - 8 = 0, sqrt3 = c^2/2 + 1) x = c^3/8 +
@@ -109,12 +81,6 @@ void expect_same(const PolygonText &a, const PolygonText &b) {
   for (std::size_t k = 0; k < a.vertices.size(); ++k) ck_assert(a.vertices[k] == b.vertices[k]);
   ck_assert((a.field == nullptr) == (b.field == nullptr));
   if (a.field) ck_assert(*a.field == *b.field);
-}
-
-Number q(long p, long d) {
-  mpq_class r(p, d);
-  r.canonicalize();
-  return Number(r);
 }
 
 }  // namespace

@@ -29,39 +29,16 @@ extern "C" {
 }
 
 #include "run_suite.hpp"
+#include "test_polygons.hpp"
 
 using namespace hdt::domain;
+using hdt::domain::test::bolza;
+using hdt::domain::test::q;
 
 namespace {
 
-// The Bolza octagon and the regular genus-3 12-gon of test_domain.cpp.
-std::string bolza_text(const char *pairing) {
-  const std::string x = "1/2*a", y = "1/2*a^3-a", mx = "-1/2*a", my = "-1/2*a^3+a";
-  return std::string("field a^4-2*a^2-1 a 1.5538+/-0.01\n8\n") + pairing + "\n" + x + " " + y + "\n" + y + " " + x +
-         "\n" + my + " " + x + "\n" + mx + " " + y + "\n" + mx + " " + my + "\n" + my + " " + mx + "\n" + y + " " +
-         mx + "\n" + x + " " + my + "\n";
-}
+FundamentalPolygon genus_3_12_gon() { return FundamentalPolygon(test::genus_3_12_gon()); }
 
-FundamentalPolygon bolza(const char *pairing = "4 5 6 7 0 1 2 3") {
-  return FundamentalPolygon(parse_polygon_text(bolza_text(pairing)));
-}
-
-FundamentalPolygon genus_3_12_gon() {
-  PolygonText t;
-  t.field = make_field("b^4-3", "b", "1.316+/-0.01");
-  const Number x = make_element(*t.field, "1/4*b^3+1/4*b"), y = make_element(*t.field, "1/4*b^3-1/4*b"),
-               h = make_element(*t.field, "1/2*b");
-  t.vertices = {{x, y}, {h, h}, {y, x}, {-y, x}, {-h, h}, {-x, y}};
-  for (int k = 0; k < 6; ++k) t.vertices.push_back(-t.vertices[std::size_t(k)]);
-  for (int k = 0; k < 12; ++k) t.paired.push_back((k + 6) % 12);
-  return FundamentalPolygon(t);
-}
-
-Number q(long p, long d) {
-  mpq_class r(p, d);
-  r.canonicalize();
-  return Number(r);
-}
 
 // A Complex in P's field from a rational pair.
 Complex point(const FundamentalPolygon &P, long xp, long yp, long den) {
