@@ -830,6 +830,15 @@ HDT_API hdt_status hdt_surface_neighbour_count(const hdt_surface *s, size_t *cou
    disk; HDT_EINVAL for s or length NULL, word NULL with capacity > 0. */
 HDT_API hdt_status hdt_surface_representative(const hdt_surface *s, double x, double y, double *rx, double *ry,
                                               int32_t *word, size_t capacity, size_t *length) HDT_NOEXCEPT;
+/* The polygon drawn in the Poincare disk as an SVG document (UTF-8): its
+   sides as geodesic arcs, the two sides of each glued pair in one colour,
+   each labelled "k~j" (side k, glued to side j) near its midpoint, and the
+   vertices as dots coloured by vertex cycle, under a caption. size: the
+   width in pixels, as for hdt_svg. Two-call pattern as in hdt_svg.
+   HDT_EINVAL (nothing written) for s or length NULL, a bad size, text NULL
+   with capacity > 0; HDT_ENOMEM. */
+HDT_API hdt_status hdt_surface_svg(const hdt_surface *s, double size, char *text, size_t capacity,
+                                   size_t *length) HDT_NOEXCEPT;
 
 #ifdef __cplusplus
 }

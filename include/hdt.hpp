@@ -387,6 +387,15 @@ class PolygonSurface {
                     "hdt_surface_representative");
     return r;
   }
+  // The polygon drawn as SVG (hdt_surface_svg).
+  std::string svg(double size = 800) const {
+    std::size_t length = 0;
+    detail::check(hdt_surface_svg(s_, size, nullptr, 0, &length), "hdt_surface_svg");
+    std::string text(length + 1, '\0');
+    detail::check(hdt_surface_svg(s_, size, &text[0], text.size(), &length), "hdt_surface_svg");
+    text.resize(length);
+    return text;
+  }
   // The exact text, which from_polygon reads back as the same surface.
   std::string polygon_text() const {
     std::size_t length = 0;

@@ -188,6 +188,7 @@ START_TEST(polygon_surfaces) {
   ck_assert_int_eq(hdt_surface_representative(s.handle(), 0.9, 0.2, &rx, &ry, word, 64, &length), HDT_OK);
   const hdt::Representative r = s.representative(0.9, 0.2);
   ck_assert(r.point.x == rx && r.point.y == ry && r.word == hdt::Word(word, word + length));
+  ck_assert(s.svg(500).rfind("<svg ", 0) == 0);
 }
 END_TEST
 

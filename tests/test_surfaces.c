@@ -341,6 +341,37 @@ START_TEST(bad_polygons_are_refused_with_the_reason) {
 }
 END_TEST
 
+/* The picture: an SVG document with one arc per side, each labelled with
+   the side and the side glued to it, one dot per vertex, in as many dot
+   colours as there are vertex cycles. */
+START_TEST(the_polygon_picture) {
+  hdt_surface *s = random_surface(10, 2);
+  const polygon_t p = read_back(s);
+  size_t length = 0;
+  OK(hdt_surface_svg(s, 800, NULL, 0, &length));
+  char *svg = malloc(length + 1);
+  ck_assert_ptr_nonnull(svg);
+  expect(hdt_surface_svg(s, 800, svg, length, &length) == HDT_EBUFS, "no HDT_EBUFS without room for the NUL");
+  OK(hdt_surface_svg(s, 800, svg, length + 1, &length));
+  expect(strncmp(svg, "<svg ", 5) == 0 && strcmp(svg + length - 7, "</svg>\n") == 0, "not an SVG document");
+  for (int k = 0; k < p.n; ++k) {
+    char label[32];
+    snprintf(label, sizeof label, ">%d~%d</text>", k, p.paired[k]);
+    expect(strstr(svg, label) != NULL, "no label %s", label);
+  }
+  int arcs = 0, dots = 0;
+  for (const char *q = svg; (q = strstr(q, "<path fill=\"none\"")) != NULL; ++q) ++arcs;
+  for (const char *q = svg; (q = strstr(q, "<circle cx=")) != NULL; ++q) ++dots;
+  expect(arcs == p.n && dots == p.n + 1, "%d side paths and %d circles (the disk and the vertices) for %d sides", arcs,
+         dots, p.n);
+  expect(hdt_surface_svg(s, 0, NULL, 0, &length) == HDT_EINVAL, "size 0 accepted");
+  expect(hdt_surface_svg(s, NAN, NULL, 0, &length) == HDT_EINVAL, "size NaN accepted");
+  expect(hdt_surface_svg(NULL, 800, NULL, 0, &length) == HDT_EINVAL, "NULL surface accepted");
+  free(svg);
+  hdt_surface_destroy(s);
+}
+END_TEST
+
 /* NULL handles and buffers: a status, never a crash; nothing written on
    failure. */
 START_TEST(null_and_small_buffers) {
@@ -371,6 +402,6 @@ END_TEST
 int main(void) {
   const TTest *const tests[] = {random_octagons, random_decagons, bolza_octagon_is_the_built_in_m2,
                                 bolza_octagon_group_is_the_built_in_one, random_octagon_group,
-                                bad_polygons_are_refused_with_the_reason, null_and_small_buffers};
+                                bad_polygons_are_refused_with_the_reason, the_polygon_picture, null_and_small_buffers};
   return run_tests("surfaces", tests, sizeof tests / sizeof tests[0]);
 }

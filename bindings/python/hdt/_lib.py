@@ -133,6 +133,7 @@ PROTOTYPES = {
     "hdt_surface_vertex_cycles": (_status, (_surface, _int_p, _size, _size_p)),
     "hdt_surface_polygon_text": (_status, (_surface, _char_p, _size, _size_p)),
     "hdt_surface_systole": (_status, (_surface, _double_p, _double_p)),
+    "hdt_surface_svg": (_status, (_surface, _double, _char_p, _size, _size_p)),
     "hdt_surface_neighbour_count": (_status, (_surface, _size_p)),
     "hdt_surface_representative": (_status, (_surface, _double, _double, _double_p, _double_p, _word, _size,
                                              _size_p)),

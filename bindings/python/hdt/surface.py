@@ -279,6 +279,18 @@ class Surface:
             check(lib.hdt_surface_polygon_text(handle, buffer, length.value + 1, ctypes.byref(length)))
         return buffer.raw[: length.value].decode("utf-8")
 
+    def to_svg(self, size: float = 800) -> str:
+        """The polygon drawn in the Poincare disk as SVG text (hdt_surface_svg):
+        glued sides in one colour, each labelled "k~j", vertices coloured by
+        vertex cycle; size is the width in pixels."""
+        length = ctypes.c_size_t()
+        with self._lock:
+            handle = self._live("to_svg")
+            check(lib.hdt_surface_svg(handle, float(size), None, 0, ctypes.byref(length)))
+            buffer = ctypes.create_string_buffer(length.value + 1)
+            check(lib.hdt_surface_svg(handle, float(size), buffer, length.value + 1, ctypes.byref(length)))
+        return buffer.raw[: length.value].decode("utf-8")
+
     # ---- the group ----
 
     def systole(self) -> Tuple[float, float]:

@@ -258,3 +258,13 @@ def test_a_thin_polygon_refuses_its_systole_at_once():
     with hdt.Surface.random_symmetric(8, 1) as s:
         with pytest.raises(hdt.OutOfDomain):
             s.representative(1.0, 0.0)
+
+
+def test_the_picture_labels_every_side_with_its_partner(random_surface):
+    surface, sides, _ = random_surface
+    svg = surface.to_svg(400)
+    assert svg.startswith("<svg ") and svg.endswith("</svg>\n")
+    for k in range(sides):
+        assert f">{k}~{surface.paired_side(k)}</text>" in svg
+    with pytest.raises(hdt.InvalidArgument):
+        surface.to_svg(0)
