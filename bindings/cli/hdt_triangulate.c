@@ -24,6 +24,7 @@
 #include "point_reader.h"
 #include "progress_bar.h"
 #include "random_points.h"
+#include "polygon_file.h"
 #include "saved_file.h"
 #include "snapshot.h"
 
@@ -73,6 +74,10 @@ static void usage(FILE *f) {
           "                      given (standard input is then read only as \"-\")\n"
           "      --neighbours    with --svg: also the copies across the 4g sides of F_g\n"
           "                      (also spelled --neighbors)\n"
+          "      --polygon FILE  instead: read the fundamental polygon of a closed surface\n"
+          "                      in FILE (CGAL's text format), check it exactly, write\n"
+          "                      its genus, pairing, cycles, |N| and systole (with -o,\n"
+          "                      and --svg for a picture of it); no triangulation yet\n"
           "      --side-labels   with --svg: label the sides of F_g, s_k with g_k (which\n"
           "                      maps s_(k+2g) onto it) and s_(k+2g) with g_k^-1\n"
           "      --voronoi       also the Voronoi diagram: in the output, drawn with\n"
@@ -110,6 +115,7 @@ typedef struct options {
   const char *html;
   const char *save;
   const char *load;
+  const char *polygon;
   const char *input;
   int genus_given;
   int keep_dummies, neighbours, side_labels, voronoi, validate, stats, help, version;
@@ -119,7 +125,7 @@ typedef struct options {
 
 enum { OPT_GENUS, OPT_RANDOM, OPT_SEED, OPT_FORMAT, OPT_OUTPUT, OPT_SVG, OPT_NEIGHBOURS, OPT_VORONOI, OPT_KEEP,
        OPT_VALIDATE, OPT_STATS, OPT_HELP, OPT_VERSION, OPT_SAVE, OPT_LOAD, OPT_REFINE, OPT_EPSILON, OPT_HTML,
-       OPT_SIDE_LABELS };
+       OPT_SIDE_LABELS, OPT_POLYGON };
 
 typedef struct option_spec {
   const char *long_name; /* without "--" */
@@ -139,6 +145,7 @@ static const option_spec option_table[] = {
     {"load", 0, 1, OPT_LOAD},            {"voronoi", 0, 0, OPT_VORONOI},
     {"refine", 0, 1, OPT_REFINE},        {"epsilon", 0, 1, OPT_EPSILON},
     {"html", 0, 1, OPT_HTML},            {"side-labels", 0, 0, OPT_SIDE_LABELS},
+    {"polygon", 0, 1, OPT_POLYGON},
 };
 #define N_OPTIONS (sizeof option_table / sizeof option_table[0])
 
@@ -247,6 +254,7 @@ static int apply_option(options *o, const option_spec *spec, const char *shown, 
     case OPT_HTML: o->html = value; return 1;
     case OPT_SAVE: o->save = value; return 1;
     case OPT_LOAD: o->load = value; return 1;
+    case OPT_POLYGON: o->polygon = value; return 1;
     case OPT_NEIGHBOURS: o->neighbours = 1; return 1;
     case OPT_SIDE_LABELS: o->side_labels = 1; return 1;
     case OPT_VORONOI: o->voronoi = 1; return 1;
@@ -257,6 +265,21 @@ static int apply_option(options *o, const option_spec *spec, const char *shown, 
     case OPT_VERSION: o->version = 1; return 1;
   }
   return 0;
+}
+
+/* --polygon describes a surface given by its polygon; triangulating one is
+   not there yet, so it goes with -o and --svg only. */
+static int polygon_options_ok(const options *o, int refine_options) {
+  if (o->random || o->input || o->load || o->genus_given || refine_options || o->voronoi || o->html || o->save ||
+      o->mesh || o->format != FACE_FORMAT_TEXT || o->neighbours || o->side_labels || o->keep_dummies ||
+      o->validate || o->stats)
+    return usage_error("--polygon goes with -o and --svg only: triangulating a surface given by a polygon is not "
+                       "supported yet");
+  if (o->svg && strcmp(o->svg, "-") == 0 && (!o->output || strcmp(o->output, "-") == 0))
+    return usage_error("--svg - and the description would both go to standard output");
+  if (o->svg && o->output && strcmp(o->svg, o->output) == 0)
+    return usage_error("-o and --svg name the same file ('%s')", o->svg);
+  return 1;
 }
 
 static int parse_options(int argc, char **argv, options *o) {
@@ -304,6 +327,7 @@ static int parse_options(int argc, char **argv, options *o) {
     refine_options += spec->id == OPT_REFINE || spec->id == OPT_EPSILON;
   }
   if (o->help || o->version) return 1;
+  if (o->polygon) return polygon_options_ok(o, refine_options);
   if (o->random && o->input) return usage_error("--random and an input file ('%s') exclude each other", o->input);
   if (o->seed_given && !o->random) return usage_error("--seed needs --random");
   if (refine_options > 1) return usage_error("--refine and --epsilon exclude each other, and each is given once");
@@ -658,5 +682,6 @@ int main(int argc, char **argv) {
     printf(CLI_NAME " %s\nlibhdt %s (ABI %d)\n", HDT_CLI_VERSION, hdt_version_string(), hdt_abi_version());
     return fflush(stdout) == 0 ? CLI_EXIT_OK : CLI_EXIT_FAILURE;
   }
+  if (o.polygon) return polygon_file_describe(o.polygon, o.output, o.svg);
   return run(&o);
 }

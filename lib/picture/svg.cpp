@@ -1,5 +1,5 @@
 // lib/picture: the triangulation drawn in the Poincare disk as SVG text,
-// hdt_svg. The one drawing code of libhdt: the command-line tool
+// hdt_svg. The one drawing code of triangulations: the command-line tool
 // hdt-triangulate and the Python package both call it.
 //
 // A layer above lib/capi. The picture reads the triangulation only through

@@ -788,10 +788,40 @@ def test_mesh_formats(tmp):
     check(code == 2 and "vtu" in err, f"an unknown format names the mesh formats: {err}")
 
 
+def test_polygon(tmp):
+    """--polygon: a CGAL polygon read, checked and described; the Bolza octagon
+    in Q(a) has M_2's genus, |N| and systole; a bad polygon is refused with
+    the reason, and nothing is written; points with it are a usage error."""
+    bolza = ("field a^4-2*a^2-1 a 1.5538+/-0.01\n8\n4 5 6 7 0 1 2 3\n"
+             "1/2*a 1/2*a^3-a\n1/2*a^3-a 1/2*a\n-1/2*a^3+a 1/2*a\n-1/2*a 1/2*a^3-a\n"
+             "-1/2*a -1/2*a^3+a\n-1/2*a^3+a -1/2*a\n1/2*a^3-a -1/2*a\n1/2*a -1/2*a^3+a\n")
+    path = os.path.join(tmp, "bolza.txt")
+    with open(path, "w") as f:
+        f.write(bolza)
+    svg = os.path.join(tmp, "bolza.svg")
+    code, out, err = run("--polygon", path, "--svg", svg)
+    fields = {line.split()[0]: line.split()[1:] for line in out.splitlines() if line and not line.startswith("#")}
+    check(code == 0 and fields.get("genus") == ["2"] and fields.get("sides") == ["8"], f"--polygon: {code} {out!r} {err!r}")
+    check(fields.get("neighbours") == ["49"] and fields.get("vertex_cycles", [""])[0] == "1:", f"--polygon: {out!r}")
+    lo, hi = map(float, fields.get("systole", ["nan", "nan"]))
+    check(lo <= 3.0571418389619963 <= hi, f"--polygon: systole [{lo}, {hi}], M_2's is 3.0571418389619963")
+    with open(svg) as f:
+        check(f.read().startswith("<svg "), "--polygon --svg: no SVG")
+    bad = os.path.join(tmp, "square.txt")
+    with open(bad, "w") as f:
+        f.write("4\n2 3 0 1\n1/2 0 0 1/2 -1/2 0 0 -1/2\n")
+    out_file = os.path.join(tmp, "never.txt")
+    code, out, err = run("--polygon", bad, "-o", out_file)
+    check(code == 1 and "angle sum must be 2 pi" in err and not os.path.exists(out_file),
+          f"--polygon on a bad polygon: {code} {err!r}")
+    code, out, err = run("--polygon", path, "--random", "3")
+    check(code == 2 and "not supported yet" in err, f"--polygon with points: {code} {err!r}")
+
+
 TESTS = (test_help_and_version, test_random_text_and_json, test_dummies, test_input_forms, test_bad_input,
          test_usage_errors, test_outputs, test_utf8_bom, test_decimal_comma, test_empty_input_warning,
          test_random_cap, test_output_errors, test_save_and_load, test_voronoi, test_refine, test_mesh_formats,
-         test_html)
+         test_html, test_polygon)
 
 
 def main():
