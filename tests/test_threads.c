@@ -607,11 +607,89 @@ START_TEST(surface_functions_concurrently) {
 }
 END_TEST
 
+/* ---- Surfaces from polygons, one per thread ---- */
+
+/* The Bolza octagon in Q(a): every thread that reads it gets e-antic's one
+   field (e-antic's number fields are unique), so the threads share it. */
+static const char bolza_polygon[] =
+    "field a^4-2*a^2-1 a 1.5538+/-0.01\n8\n4 5 6 7 0 1 2 3\n"
+    "1/2*a 1/2*a^3-a\n1/2*a^3-a 1/2*a\n-1/2*a^3+a 1/2*a\n-1/2*a 1/2*a^3-a\n"
+    "-1/2*a -1/2*a^3+a\n-1/2*a^3+a -1/2*a\n1/2*a^3-a -1/2*a\n1/2*a -1/2*a^3+a\n";
+
+/* Makes a surface (the Bolza octagon, or a random decagon), reduces points
+   into it and folds the answers (bits of the representatives, the words'
+   letters, the text's length) into *sum. */
+static int polygon_work(int which, uint64_t *sum, failure_t *f) {
+  hdt_surface *s = NULL;
+  const hdt_status st = which == 0 ? hdt_surface_from_polygon(&s, bolza_polygon, strlen(bolza_polygon))
+                                   : hdt_surface_random_symmetric(&s, 10, (uint64_t)which);
+  TCHECK(f, st == HDT_OK, "surface %d: %s (%s)", which, hdt_status_string(st), hdt_last_error_message());
+  double xy[2 * 20];
+  disk_points(UINT64_C(0x5EED) + (uint64_t)which, 20, xy);
+  uint64_t h = 0;
+  for (int i = 0; i < 20; ++i) {
+    double rx, ry;
+    int32_t word[128];
+    size_t length = 0;
+    const hdt_status r = hdt_surface_representative(s, xy[2 * i], xy[2 * i + 1], &rx, &ry, word, 128, &length);
+    if (r != HDT_OK) {
+      hdt_surface_destroy(s);
+      return record_failure(f, "surface %d, point %d: %s", which, i, hdt_last_error_message());
+    }
+    h = fold_double(fold_double(h, rx), ry);
+    for (size_t k = 0; k < length; ++k) h = fold_double(h, (double)word[k]);
+  }
+  size_t length = 0;
+  TCHECK(f, hdt_surface_polygon_text(s, NULL, 0, &length) == HDT_OK, "surface %d: no text", which);
+  *sum = fold_double(h, (double)length);
+  hdt_surface_destroy(s);
+  return 0;
+}
+
+typedef struct polygon_ctx {
+  int thread;
+  pthread_barrier_t *barrier;
+  uint64_t sum;
+  failure_t failure;
+} polygon_ctx;
+
+static void *polygon_thread(void *arg) {
+  polygon_ctx *c = arg;
+  pthread_barrier_wait(c->barrier);
+  polygon_work(c->thread % 3, &c->sum, &c->failure);
+  return NULL;
+}
+
+/* Threads read polygons at once (two of them the same Bolza octagon, in one
+   shared e-antic field) and get the answers of one thread. */
+START_TEST(polygon_surfaces_concurrently) {
+  pthread_barrier_t barrier;
+  ck_assert_int_eq(pthread_barrier_init(&barrier, NULL, THREADS), 0);
+  static polygon_ctx ctx[THREADS];
+  memset(ctx, 0, sizeof ctx);
+  pthread_t th[THREADS];
+  for (int i = 0; i < THREADS; ++i) {
+    ctx[i].thread = i, ctx[i].barrier = &barrier;
+    ck_assert_int_eq(pthread_create(&th[i], NULL, polygon_thread, &ctx[i]), 0);
+  }
+  for (int i = 0; i < THREADS; ++i) ck_assert_int_eq(pthread_join(th[i], NULL), 0);
+  pthread_barrier_destroy(&barrier);
+  for (int i = 0; i < THREADS; ++i) {
+    expect(ctx[i].failure.text[0] == '\0', "thread %d: %s", i, ctx[i].failure.text);
+    uint64_t ref = 0;
+    failure_t f = {{0}};
+    expect(polygon_work(i % 3, &ref, &f) == 0, "single-threaded: %s", f.text);
+    expect(ctx[i].sum == ref, "thread %d: its answers differ from the single-threaded ones", i);
+  }
+}
+END_TEST
+
 int main(void) {
   const TTest *const tests[] = {
       concurrent_triangulations_match_sequential,
       errors_are_thread_local,
       surface_functions_concurrently,
+      polygon_surfaces_concurrently,
   };
   return run_tests("threads", tests, sizeof tests / sizeof tests[0]);
 }
