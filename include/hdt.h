@@ -739,10 +739,12 @@ HDT_API hdt_status hdt_set_progress(hdt_triangulation *t, hdt_progress_fn fn, vo
    sum exactly 2 pi; the genus comes from Euler's formula and must be >= 2.
    A polygon that fails is refused with HDT_EINVAL and a
    hdt_last_error_message that names the token, side, vertex or cycle at
-   fault. A surface is not changed after it is made; one thread at a time
-   uses it. This release reads, checks and describes such surfaces, with
-   their systole, neighbour count and representatives; triangulating them
-   comes in a later node. */
+   fault. A surface is not changed after it is made (its systole, |N| and
+   reduction are computed on first use and kept): one thread at a time uses
+   it, and distinct surfaces may be used from different threads at once,
+   also when they share a number field. This release reads, checks,
+   describes and draws such surfaces, with their systole, neighbour count
+   and representatives; triangulating them comes in a later node. */
 typedef struct hdt_surface hdt_surface; /* opaque */
 
 /* A surface from the text of its fundamental polygon (length bytes, no NUL

@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "domain/polynomial_text.hpp"
 #include "domain/rational_text.hpp"
@@ -82,6 +84,21 @@ void check_ball(const std::vector<mpq_class> &c, const std::string &ball, std::s
   *mid = ball.substr(0, pm), *rad = ball.substr(pm + 3);
 }
 
+// e-antic keeps one field per definition (its fields are unique) and frees it
+// with its last element; a thread freeing it while another is handed the
+// same field by make() is a race inside e-antic 1.3 (ThreadSanitizer sees
+// it: test_threads). So every field made here is kept until the process
+// ends, and made under one lock: its count never falls to zero while
+// threads use it. The fields are few (one per distinct field line read).
+FieldPtr kept_field(const std::string &minpoly, const std::string &gen, const std::string &ball) {
+  static std::mutex mutex;
+  static std::vector<FieldPtr> kept;
+  std::lock_guard<std::mutex> lock(mutex);
+  FieldPtr K = eantic::renf_class::make(minpoly, gen, ball);
+  if (std::find(kept.begin(), kept.end(), K) == kept.end()) kept.push_back(K);
+  return K;
+}
+
 }  // namespace
 
 // Everything e-antic is given has been checked first: its own parsing and
@@ -91,7 +108,7 @@ FieldPtr make_field(const std::string &minpoly, const std::string &gen, const st
   const std::vector<mpq_class> c = checked_minpoly(minpoly, gen);
   std::string mid, rad;
   check_ball(c, ball, &mid, &rad);
-  return eantic::renf_class::make(polynomial_text(c, gen), gen, mid + " +/- " + rad);
+  return kept_field(polynomial_text(c, gen), gen, mid + " +/- " + rad);
 }
 
 std::string minpoly_token(const eantic::renf_class &K) { return polynomial_text(minpoly_of(K), K.gen_name()); }
