@@ -5,7 +5,10 @@
 #include <cstdio>
 #include <cstring>
 
+#include <flint/flint.h>
 #include <mpfr.h>
+
+#include <thread>
 
 #include "exact/unit_disk.hpp"
 
@@ -19,16 +22,25 @@ thread_local std::string last_error;
 const char *last_error_message() noexcept { return last_error.c_str(); }
 
 namespace {
-// MPFR keeps constants (pi, ...) and cos/sin tables per thread; a thread that
-// ends without freeing them leaks them. One of these per thread that called
-// libhdt frees them at its exit.
-struct MpfrCacheRelease {
-  ~MpfrCacheRelease() { mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE); }
+// The thread that loaded the library: the main thread, in practice.
+const std::thread::id loading_thread = std::this_thread::get_id();
+
+// MPFR keeps constants (pi, ...) and cos/sin tables per thread, and FLINT
+// (under e-antic, lib/domain) its integers' memory pool; a thread that ends
+// without freeing them leaks them. One of these per thread that called
+// libhdt frees them at its exit. FLINT's are left to the loading thread's
+// exit, when the numbers e-antic keeps for the process (its fields, in
+// statics destroyed after this runs) would still need them.
+struct CacheRelease {
+  ~CacheRelease() {
+    mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE);
+    if (std::this_thread::get_id() != loading_thread) flint_cleanup();
+  }
 };
 }  // namespace
 
 void release_caches_at_thread_exit() noexcept {
-  static thread_local MpfrCacheRelease release;
+  static thread_local CacheRelease release;
   (void)release;
 }
 
