@@ -741,8 +741,11 @@ HDT_API hdt_status hdt_set_progress(hdt_triangulation *t, hdt_progress_fn fn, vo
    hdt_last_error_message that names the token, side, vertex or cycle at
    fault. A surface is not changed after it is made (its systole, |N| and
    reduction are computed on first use and kept): one thread at a time uses
-   it, and distinct surfaces may be used from different threads at once,
-   also when they share a number field. This release reads, checks,
+   it, and distinct surfaces may be used from different threads at once;
+   calls on surfaces with coordinates in a number field (and reading a text
+   with a field line) are serialized by one process-wide lock, since the
+   number-field library refines a shared embedding; rational surfaces run in
+   parallel. This release reads, checks,
    describes and draws such surfaces, with their systole, neighbour count
    and representatives; triangulating them comes in a later node. */
 typedef struct hdt_surface hdt_surface; /* opaque */

@@ -3,9 +3,11 @@
 #include <complex>
 #include <cstring>
 #include <string>
+#include <string_view>
 
 #include "capi/guard.hpp"
 #include "capi/surface_handle.hpp"
+#include "domain/field_lock.hpp"
 #include "domain/fundamental_polygon.hpp"
 #include "domain/neighbours.hpp"
 #include "domain/polygon_text.hpp"
@@ -15,6 +17,7 @@
 using hdt::capi::ApiError;
 using hdt::capi::guarded;
 using hdt::domain::Complex;
+using hdt::domain::FieldLock;
 using hdt::domain::FundamentalPolygon;
 
 namespace {
@@ -24,13 +27,18 @@ const FundamentalPolygon &polygon_of(const hdt_surface *s) {
   return s->polygon;
 }
 
-// *out gets the surface make() returns; NULL when it throws.
+// Whether calls on the surface do number-field arithmetic (field_lock.hpp).
+bool in_field(const FundamentalPolygon &p) { return bool(p.field()); }
+
+// *out gets the surface make() returns; NULL when it throws. make() runs
+// under the field lock when lock_field is true.
 template <class Make>
-hdt_status new_surface(const char *function, hdt_surface **out, Make &&make) {
+hdt_status new_surface(const char *function, hdt_surface **out, bool lock_field, Make &&make) {
   return guarded(function, [&] {
     if (!out) throw ApiError(HDT_EINVAL, "out must not be NULL");
     *out = nullptr;
     try {
+      const FieldLock lock(lock_field);
       *out = new hdt_surface(make());
     } catch (const hdt::domain::ParseError &e) {
       throw ApiError(HDT_EINVAL, e.what());
@@ -59,21 +67,26 @@ void su11(const hdt::domain::Moebius &M, double m[4]) {
 extern "C" {
 
 HDT_API hdt_status hdt_surface_from_polygon(hdt_surface **out, const char *text, size_t length) HDT_NOEXCEPT {
-  return new_surface("hdt_surface_from_polygon", out, [&] {
+  const bool field = text && hdt::domain::names_field(std::string_view(text, length));
+  return new_surface("hdt_surface_from_polygon", out, field, [&] {
     if (!text && length > 0) throw ApiError(HDT_EINVAL, "text is NULL but length is " + std::to_string(length));
     return FundamentalPolygon(hdt::domain::parse_polygon_text(std::string(text ? text : "", length)));
   });
 }
 
 HDT_API hdt_status hdt_surface_random_symmetric(hdt_surface **out, int sides, uint64_t seed) HDT_NOEXCEPT {
-  return new_surface("hdt_surface_random_symmetric", out, [&] {
+  return new_surface("hdt_surface_random_symmetric", out, false, [&] {
     if (sides != 8 && sides != 10)
       throw ApiError(HDT_EINVAL, "sides must be 8 or 10, not " + std::to_string(sides));
     return hdt::domain::random_symmetric_polygon(sides / 2, seed);
   });
 }
 
-HDT_API void hdt_surface_destroy(hdt_surface *s) HDT_NOEXCEPT { delete s; }
+HDT_API void hdt_surface_destroy(hdt_surface *s) HDT_NOEXCEPT {
+  if (!s) return;
+  const FieldLock lock(in_field(s->polygon));
+  delete s;
+}
 
 HDT_API int hdt_surface_genus(const hdt_surface *s) HDT_NOEXCEPT { return s ? s->polygon.genus() : 0; }
 
@@ -82,6 +95,7 @@ HDT_API int hdt_surface_side_count(const hdt_surface *s) HDT_NOEXCEPT { return s
 HDT_API hdt_status hdt_surface_vertex(const hdt_surface *s, int k, double *x, double *y) HDT_NOEXCEPT {
   return guarded("hdt_surface_vertex", [&] {
     const FundamentalPolygon &p = polygon_of(s);
+    const FieldLock lock(in_field(p));
     if (!x || !y) throw ApiError(HDT_EINVAL, "x and y must not be NULL");
     const std::complex<double> z = p.vertex_double(k);
     *x = z.real(), *y = z.imag();
@@ -92,6 +106,7 @@ HDT_API hdt_status hdt_surface_vertex(const hdt_surface *s, int k, double *x, do
 HDT_API hdt_status hdt_surface_pairing(const hdt_surface *s, int k, int *paired_side, double m[4]) HDT_NOEXCEPT {
   return guarded("hdt_surface_pairing", [&] {
     const FundamentalPolygon &p = polygon_of(s);
+    const FieldLock lock(in_field(p));
     double out[4];
     if (m) su11(p.pairing(k), out);
     if (paired_side) *paired_side = p.paired(k);
@@ -123,6 +138,7 @@ HDT_API hdt_status hdt_surface_polygon_text(const hdt_surface *s, char *text, si
                                             size_t *length) HDT_NOEXCEPT {
   return guarded("hdt_surface_polygon_text", [&] {
     const FundamentalPolygon &p = polygon_of(s);
+    const FieldLock lock(in_field(p));
     if (!length) throw ApiError(HDT_EINVAL, "length must not be NULL");
     return hdt::capi::copy_text(hdt::domain::polygon_text(p.text()), "the polygon's text", text, capacity, length);
   });
@@ -131,6 +147,7 @@ HDT_API hdt_status hdt_surface_polygon_text(const hdt_surface *s, char *text, si
 HDT_API hdt_status hdt_surface_systole(const hdt_surface *s, double *lo, double *hi) HDT_NOEXCEPT {
   return guarded("hdt_surface_systole", [&] {
     const FundamentalPolygon &p = polygon_of(s);
+    const FieldLock lock(in_field(p));
     if (!lo || !hi) throw ApiError(HDT_EINVAL, "lo and hi must not be NULL");
     if (!s->systole) s->systole = hdt::domain::systole(p);
     *lo = s->systole->length.lo, *hi = s->systole->length.hi;
@@ -141,6 +158,7 @@ HDT_API hdt_status hdt_surface_systole(const hdt_surface *s, double *lo, double 
 HDT_API hdt_status hdt_surface_neighbour_count(const hdt_surface *s, size_t *count) HDT_NOEXCEPT {
   return guarded("hdt_surface_neighbour_count", [&] {
     const FundamentalPolygon &p = polygon_of(s);
+    const FieldLock lock(in_field(p));
     if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
     if (!s->neighbour_count) s->neighbour_count = hdt::domain::neighbours(p).size();
     *count = *s->neighbour_count;
@@ -152,6 +170,7 @@ HDT_API hdt_status hdt_surface_representative(const hdt_surface *s, double x, do
                                               int32_t *word, size_t capacity, size_t *length) HDT_NOEXCEPT {
   return guarded("hdt_surface_representative", [&] {
     const FundamentalPolygon &p = polygon_of(s);
+    const FieldLock lock(in_field(p));
     if (!length) throw ApiError(HDT_EINVAL, "length must not be NULL");
     hdt::capi::check_disk_point(x, y);
     if (!s->reduction) s->reduction = std::make_unique<hdt::domain::Reduction>(p);

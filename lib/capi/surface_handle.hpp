@@ -1,7 +1,7 @@
 // The opaque handle behind hdt_surface: a closed hyperbolic surface given by
 // a fundamental polygon, checked on entry (lib/domain). Not changed after it
-// is made; one thread at a time (e-antic refines a field's embedding, shared
-// by its elements, as it compares them).
+// is made; one thread at a time, and every call on a surface over a number
+// field holds the field lock (domain/field_lock.hpp).
 #pragma once
 
 #include <memory>

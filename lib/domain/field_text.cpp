@@ -6,11 +6,11 @@
 
 #include <algorithm>
 #include <cctype>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "domain/field_lock.hpp"
 #include "domain/polynomial_text.hpp"
 #include "domain/rational_text.hpp"
 #include "domain/real_roots.hpp"
@@ -88,12 +88,12 @@ void check_ball(const std::vector<mpq_class> &c, const std::string &ball, std::s
 // with its last element; a thread freeing it while another is handed the
 // same field by make() is a race inside e-antic 1.3 (ThreadSanitizer sees
 // it: test_threads). So every field made here is kept until the process
-// ends, and made under one lock: its count never falls to zero while
-// threads use it. The fields are few (one per distinct field line read).
+// ends, and made under the field lock (field_lock.hpp): its count never
+// falls to zero while threads use it. The fields are few (one per distinct
+// field line read).
 FieldPtr kept_field(const std::string &minpoly, const std::string &gen, const std::string &ball) {
-  static std::mutex mutex;
   static std::vector<FieldPtr> kept;
-  std::lock_guard<std::mutex> lock(mutex);
+  const FieldLock lock(true);
   FieldPtr K = eantic::renf_class::make(minpoly, gen, ball);
   if (std::find(kept.begin(), kept.end(), K) == kept.end()) kept.push_back(K);
   return K;

@@ -117,6 +117,13 @@ class Reader {
 
 }  // namespace
 
+bool names_field(std::string_view text) {
+  std::size_t i = 0;
+  while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+  return text.compare(i, 5, "field") == 0 &&
+         (i + 5 == text.size() || std::isspace(static_cast<unsigned char>(text[i + 5])));
+}
+
 PolygonText parse_polygon_text(const std::string &text) { return Reader(text).read(); }
 
 PolygonText read_polygon_text(std::istream &in) {

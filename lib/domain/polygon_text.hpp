@@ -17,6 +17,7 @@
 #include <iosfwd>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "domain/complex.hpp"
@@ -37,6 +38,10 @@ struct PolygonText {
 };
 
 PolygonText read_polygon_text(std::istream &in);
+
+// Whether the text begins with a field line (its numbers then need the
+// FieldLock while they are read and checked: field_lock.hpp).
+bool names_field(std::string_view text);
 PolygonText parse_polygon_text(const std::string &text);
 
 // The same format back: read(write(p)) has the same field, pairing and
