@@ -807,15 +807,14 @@ HDT_API hdt_status hdt_surface_polygon_text(const hdt_surface *s, char *text, si
                                             size_t *length) HDT_NOEXCEPT;
 /* The systole of s, certified: *lo <= sys <= *hi, the two within a few
    units in the last place. It is the least translation length over the
-   group, found exactly (docs/polygons.md): every element g with
-   d(c, g c) <= L + 2R is walked, c a base point inside the polygon, R the
-   largest distance from c to a vertex, L the least length among the
-   pairings and their products of two, and the least cosh^2(l/2) among them
-   compared exactly. Their number grows like e^(2R): a walk estimated at
-   more than 20000 tiles (thin polygons, with vertices far from c) is
-   refused at once with HDT_ENOTSUP naming the estimate. Computed on the
-   first call (about 2 ms a tile; 761 tiles for the Bolza octagon), kept
-   for the next. HDT_EINVAL for s, lo or hi NULL. */
+   group, found exactly (docs/polygons.md): a walk over the tiles that may
+   come within L of the polygon (L the least length met), tested on
+   certified balls, then the shortest candidates compared exactly. The walk
+   keeps about the area of the polygon's (L + 0.7)-neighbourhood over the
+   polygon's, for round and thin polygons alike; one estimated at more than
+   20000 tiles is refused at once with HDT_ENOTSUP naming the estimate.
+   Computed on the first call, kept for the next (docs/polygons.md gives the
+   measured times). HDT_EINVAL for s, lo or hi NULL. */
 HDT_API hdt_status hdt_surface_systole(const hdt_surface *s, double *lo, double *hi) HDT_NOEXCEPT;
 /* |N|: the number of group elements h (the identity included) whose copy
    h(P) of the polygon meets it, found around the vertex cycles: 1 + the

@@ -4,11 +4,6 @@ namespace hdt::domain {
 
 Complex Moebius::apply(const Complex &z) const { return (a * z + b) / (c * z + d); }
 
-Complex Moebius::derivative(const Complex &z) const {
-  const Complex w = c * z + d;
-  return (a * d - b * c) / (w * w);
-}
-
 bool Moebius::is_identity() const { return b.is_zero() && c.is_zero() && !a.is_zero() && a == d; }
 
 Moebius operator*(const Moebius &f, const Moebius &g) {

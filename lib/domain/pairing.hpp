@@ -13,9 +13,6 @@ struct Moebius {
   Complex a, b, c, d;
 
   Complex apply(const Complex &z) const;  // z must not be the pole (c z + d != 0)
-  // The derivative at z is (a d - b c) / (c z + d)^2, the same for every
-  // multiple of the matrix (both scale by the square of the scalar).
-  Complex derivative(const Complex &z) const;
   bool is_identity() const;  // b = c = 0 and a = d (!= 0), exactly
 };
 

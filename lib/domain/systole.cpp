@@ -3,96 +3,234 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
-#include <stdexcept>
+#include <map>
 #include <string>
-#include <unordered_set>
+#include <utility>
 
+#include "domain/ball_isometry.hpp"
 #include "domain/base_point.hpp"
-#include "domain/distance.hpp"
+#include "domain/hyperboloid_ball.hpp"
+#include "domain/polygon_cover.hpp"
 #include "exact/unsupported.hpp"
 
 namespace hdt::domain {
 
 namespace {
 
-struct Shortest {
-  Word word;
-  Number cosh2;
+// The cover's target radius: smaller balls accept fewer tiles (about the
+// area of P's (L + 2r)-neighbourhood over P's) but cost more tests a tile.
+constexpr double kCoverRadius = 0.35;
+
+struct Tile {
+  int parent, letter;  // the tile is parent's isometry followed by pairing `letter`
+  BallIsometry h;
+  HyperboloidBall image;  // h(c)
+  bool accepted;
 };
 
-// Keeps w when it translates less than the best so far (exact comparison;
-// on a tie the first met stays).
-void keep_if_shorter(Shortest &best, const Word &w) {
-  if (w.element.is_identity()) return;
-  const Number c2 = cosh2_half_translation(w.element);
-  if (c2 < best.cosh2) best = {w, c2};
-}
-
-// The starting upper bound: the pairings and their products of two.
-Shortest shortest_of_length_two(const std::vector<Element> &g) {
-  Shortest best{{{0}, g[0]}, cosh2_half_translation(g[0])};
-  for (int k = 0; k < int(g.size()); ++k) {
-    keep_if_shorter(best, {{k}, g[std::size_t(k)]});
-    for (int m = 0; m < int(g.size()); ++m) keep_if_shorter(best, {{k, m}, g[std::size_t(k)] * g[std::size_t(m)]});
+class Walk {
+ public:
+  Walk(const FundamentalPolygon &P, std::size_t tile_limit)
+      : P_(P), tile_limit_(tile_limit), cover_(polygon_cover(P, kCoverRadius)) {
+    const Complex c = base_point(P);
+    centre_ = ball_of(c);
+    C_ = hyperboloid(centre_);
+    for (int k = 0; k < P.side_count(); ++k) g_.push_back(ball_isometry(P.pairing(k)));
+    for (int k = 0; k < P.side_count(); ++k) {
+      const ComplexBall v = ball_of(P.vertex(k));
+      normals_.push_back(line_normal(v, ball_of(P.vertex(k + 1)), C_));
+      radius_ = std::max(radius_, acosh(RealBall(0.0) - minkowski(C_, hyperboloid(v))).upper());
+    }
+    set_gap();
   }
-  return best;
-}
 
-double radius_above(const FundamentalPolygon &P, const Complex &c) {
-  double R = 0;
-  for (int k = 0; k < P.side_count(); ++k) R = std::max(R, arccosh_above(cosh_distance(c, P.vertex(k))));
-  return R;
-}
+  // The bound L from the pairings and their products of two, and the
+  // estimate of the walk's size, refused up front when past the limit.
+  void start() {
+    for (const BallIsometry &a : g_) {
+      improve(a.cosh_half_translation());
+      for (const BallIsometry &b : g_) improve((a * b).cosh_half_translation());
+    }
+    set_reach();
+    refuse_long_walks();
+  }
 
-Word extended(const Word &h, int k, const Element &g_k) {
-  Word w{h.letters, h.element * g_k};
-  w.letters.push_back(k);
-  return w;
-}
-
-// The breadth-first walk of systole.hpp; returns the count of tiles accepted.
-std::size_t walk(const std::vector<Element> &g, const Complex &c, const Number &bound, std::size_t tile_limit,
-                 Shortest &best) {
-  const Element one = identity_element(c.re);
-  std::unordered_set<Element, ElementHash> seen{one};
-  std::deque<Word> accepted{{{}, one}};
-  std::size_t count = 0;
-  for (; !accepted.empty(); accepted.pop_front(), ++count) {
-    if (count == tile_limit)
-      throw exact::Unsupported("the certified systole's walk exceeds " + std::to_string(tile_limit) + " tiles");
-    const Word &h = accepted.front();
-    keep_if_shorter(best, h);
-    for (int k = 0; k < int(g.size()); ++k) {
-      Word next = extended(h, k, g[std::size_t(k)]);
-      if (seen.insert(next.element).second && cosh_displacement(next.element, c) <= bound)
-        accepted.push_back(std::move(next));
+  void run() {
+    add(-1, -1, ball_identity());
+    for (std::size_t next = 0; next < queue_.size(); ++next) {
+      const int t = queue_[next];
+      for (int k = 0; k < int(g_.size()); ++k) add(t, k, tiles_[std::size_t(t)].h * g_[std::size_t(k)]);
     }
   }
-  return count;
-}
 
-// The walk accepts about the area of the ball B(c, L + 2R) over P's, 4 pi (g - 1):
-// a walk estimated past the limit is refused before it starts.
-void refuse_long_walks(const FundamentalPolygon &P, double L, double R, std::size_t tile_limit) {
-  const double estimate = (std::cosh(L + 2 * R) - 1) / (2.0 * (P.genus() - 1));
-  if (!(estimate <= double(tile_limit)))
-    throw exact::Unsupported("the certified systole would walk about " + std::to_string(std::llround(estimate)) +
-                             " tiles (a vertex " + std::to_string(R) +
-                             " from the base point: a thin polygon), more than the limit " +
-                             std::to_string(tile_limit));
-}
+  // The accepted non-identity tiles whose cosh(l/2) may be the least.
+  std::vector<std::vector<int>> candidates() const {
+    std::vector<std::vector<int>> words;
+    for (std::size_t i = 1; i < tiles_.size(); ++i)
+      if (tiles_[i].accepted && tiles_[i].h.cosh_half_translation().lower() <= best_upper_)
+        words.push_back(letters(int(i)));
+    return words;
+  }
+
+  std::size_t accepted() const { return queue_.size(); }
+
+ private:
+  const FundamentalPolygon &P_;
+  std::size_t tile_limit_;
+  std::vector<CoverBall> cover_;
+  ComplexBall centre_;
+  HyperboloidBall C_;
+  std::vector<BallIsometry> g_;
+  std::vector<HyperboloidBall> normals_;
+  double best_upper_ = INFINITY, L_ = INFINITY;  // >= the least cosh(l/2) met; >= its l
+  std::vector<RealBall> reach_;                  // sinh(r_j + L) per cover ball
+  double radius_ = 0;                            // >= d(c, v) for every vertex v: P is in B(c, radius_)
+  RealBall reach_whole_;                         // sinh(radius_ + L)
+  RealBall same_;                                // between cosh of 0 and of the least gap
+  double cell_ = 0;                              // side of a cell of the tiles' index
+  std::vector<Tile> tiles_;
+  std::deque<int> queue_;
+  std::map<std::pair<long, long>, std::vector<int>> cells_;
+
+  // Distinct tiles have centres at least 2 rho apart, rho the distance from
+  // c to P's boundary (the tiles' interiors are disjoint), so at least
+  // 2 sinh(rho) apart in the hyperboloid's (x1, x2): |dx1|^2 + |dx2|^2 -
+  // |dx0|^2 = 2 (cosh d - 1) = 4 sinh^2(d/2).
+  void set_gap() {
+    RealBall rho;
+    bool first = true;
+    for (const HyperboloidBall &n : normals_) {
+      const RealBall d = asinh(abs(minkowski(C_, n)));
+      if (first || d.lower() < rho.lower()) rho = d, first = false;
+    }
+    const RealBall low(rho.lower());
+    same_ = (RealBall(1.0) + cosh(RealBall(2.0) * low)) / RealBall(2.0);
+    cell_ = sinh(low).lower() / 2;
+    if (!(cell_ > 0)) throw exact::Unsupported("domain::systole: the base point is too near a side");
+  }
+
+  void improve(const RealBall &cosh_half) {
+    if (cosh_half.lower() > 1) best_upper_ = std::min(best_upper_, cosh_half.upper());
+  }
+
+  void set_reach() {
+    L_ = (RealBall(2.0) * acosh(RealBall(best_upper_))).upper();
+    reach_whole_ = sinh(RealBall(radius_) + RealBall(L_));
+    reach_.clear();
+    for (const CoverBall &b : cover_)
+      reach_.push_back(std::isfinite(b.radius) ? sinh(RealBall(b.radius) + RealBall(L_)) : RealBall(0.0));
+  }
+
+  // The walk accepts about the area of the (L + 2r)-neighbourhood of P
+  // (area A, perimeter p), A + p sinh t + 2 pi (cosh t - 1), over A.
+  void refuse_long_walks() const {
+    double perimeter = 0, r = 0;
+    for (int k = 0; k < P_.side_count(); ++k)
+      perimeter += acosh(RealBall(0.0) - minkowski(hyperboloid(ball_of(P_.vertex(k))),
+                                                  hyperboloid(ball_of(P_.vertex(k + 1)))))
+                       .upper();
+    for (const CoverBall &b : cover_)
+      if (b.children.empty() && std::isfinite(b.radius)) r = std::max(r, b.radius);
+    const double t = L_ + 2 * r, area = 4 * M_PI * (P_.genus() - 1);
+    const double estimate = 1 + (perimeter * std::sinh(t) + 2 * M_PI * (std::cosh(t) - 1)) / area;
+    if (!(estimate <= double(tile_limit_)))
+      throw exact::Unsupported("the certified systole would walk about " + std::to_string(std::llround(estimate)) +
+                               " tiles, more than the limit " + std::to_string(tile_limit_));
+  }
+
+  // h(P) may meet the L-neighbourhood N of P: some cover ball B(c_j, r_j) has
+  // its image within r_j + L of every side's half-plane. (A point q of h(P)
+  // within L of P lies in some h(B(c_j, r_j)); then d(h c_j, P) <= r_j + L,
+  // and the distance to P is at least the distance to each half-plane.)
+  // First the whole of P's ball B(c, R) is tried (its image is h(c)), then
+  // the test runs down the cover's quadtree: a node whose ball's image is
+  // beyond r + L of some half-plane holds no such point (its square is in
+  // that ball), and its subtree is dropped.
+  bool may_meet(const BallIsometry &h, int node = 0) const {
+    const CoverBall &b = cover_[std::size_t(node)];
+    if (std::isfinite(b.radius)) {
+      if (beyond(hyperboloid(h.apply(b.centre)), reach_[std::size_t(node)])) return false;
+      if (b.children.empty()) return true;
+    }
+    return std::any_of(b.children.begin(), b.children.end(), [&](int c) { return may_meet(h, c); });
+  }
+
+  // X is beyond `reach` (a sinh) of some side's half-plane.
+  bool beyond(const HyperboloidBall &X, const RealBall &reach) const {
+    return std::any_of(normals_.begin(), normals_.end(),
+                       [&](const HyperboloidBall &n) { return certainly_less(reach, minkowski(X, n)); });
+  }
+
+  std::pair<long, long> cell_of(const HyperboloidBall &X) const {
+    if (!(X.x1.upper() - X.x1.lower() < cell_ / 4 && X.x2.upper() - X.x2.lower() < cell_ / 4))
+      throw exact::Unsupported("domain::systole: a tile's ball is too wide to tell it from its neighbours");
+    return {long(std::floor(X.x1.mid() / cell_)), long(std::floor(X.x2.mid() / cell_))};
+  }
+
+  // The tile whose centre is X, if one was met: the same tile's centre is
+  // within a cell, a different one's at cosh-distance >= cosh(2 rho).
+  bool met(const HyperboloidBall &X, std::pair<long, long> cell) const {
+    for (long dx = -1; dx <= 1; ++dx)
+      for (long dy = -1; dy <= 1; ++dy) {
+        const auto it = cells_.find({cell.first + dx, cell.second + dy});
+        if (it == cells_.end()) continue;
+        for (const int t : it->second) {
+          const RealBall d = RealBall(0.0) - minkowski(X, tiles_[std::size_t(t)].image);
+          if (certainly_less(d, same_)) return true;
+          if (!certainly_less(same_, d))
+            throw exact::Unsupported("domain::systole: two tiles' centres too close for the balls to tell");
+        }
+      }
+    return false;
+  }
+
+  void add(int parent, int letter, BallIsometry h) {
+    HyperboloidBall X = hyperboloid(h.apply(centre_));
+    const std::pair<long, long> cell = cell_of(X);
+    if (met(X, cell)) return;
+    const bool accepted = !beyond(X, reach_whole_) && may_meet(h);
+    const int index = int(tiles_.size());
+    cells_[cell].push_back(index);
+    if (accepted) {
+      if (queue_.size() == tile_limit_)
+        throw exact::Unsupported("the certified systole's walk exceeds " + std::to_string(tile_limit_) + " tiles");
+      queue_.push_back(index);
+      if (parent >= 0) {
+        const double before = best_upper_;
+        improve(h.cosh_half_translation());
+        if (best_upper_ < before) set_reach();
+      }
+    }
+    tiles_.push_back({parent, letter, std::move(h), std::move(X), accepted});
+  }
+
+  std::vector<int> letters(int t) const {
+    std::vector<int> w;
+    for (; tiles_[std::size_t(t)].parent >= 0; t = tiles_[std::size_t(t)].parent) w.push_back(tiles_[std::size_t(t)].letter);
+    std::reverse(w.begin(), w.end());
+    return w;
+  }
+};
 
 }  // namespace
 
 Systole systole(const FundamentalPolygon &P, std::size_t tile_limit) {
-  const std::vector<Element> g = pairing_elements(P);
-  const Complex c = base_point(P);
-  Shortest best = shortest_of_length_two(g);
-  const double L = length_from_cosh2_half(best.cosh2).hi, R = radius_above(P, c);
-  refuse_long_walks(P, L, R, tile_limit);
-  const Number bound(c.re.parent(), cosh_above(sum_above(L, sum_above(R, R))));
-  const std::size_t walked = walk(g, c, bound, tile_limit, best);
-  return {best.word, best.cosh2, length_from_cosh2_half(best.cosh2), walked};
+  Walk walk(P, tile_limit);
+  walk.start();
+  walk.run();
+  // The least translation among the candidates, decided exactly (a tie keeps
+  // the first met, in the walk's order).
+  bool found = false;
+  Word best{{}, identity_element(P.vertex(0).re)};
+  Number best_cosh2(P.vertex(0).re.parent(), 0);
+  for (std::vector<int> &letters : walk.candidates()) {
+    Element e = word_element(P, letters);
+    if (e.is_identity()) continue;
+    Number c2 = cosh2_half_translation(e);
+    if (!found || c2 < best_cosh2) best = {std::move(letters), std::move(e)}, best_cosh2 = std::move(c2), found = true;
+  }
+  if (!found) throw exact::Unsupported("domain::systole: the walk found no non-identity element");
+  return {best, best_cosh2, length_from_cosh2_half(best_cosh2), walk.accepted()};
 }
 
 }  // namespace hdt::domain

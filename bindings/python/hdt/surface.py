@@ -295,9 +295,10 @@ class Surface:
 
     def systole(self) -> Tuple[float, float]:
         """The systole, certified: (lo, hi) with lo <= sys <= hi, a few units
-        in the last place apart, found by an exact walk over the tiles near
-        the polygon (computed once, kept). Raises :class:`hdt.NotSupported`
-        at once for a thin polygon whose walk would pass 20000 tiles."""
+        in the last place apart, found by a certified walk over the tiles
+        near the polygon (computed once, kept). Raises
+        :class:`hdt.NotSupported` at once for a walk estimated past 20000
+        tiles."""
         lo, hi = ctypes.c_double(), ctypes.c_double()
         with self._lock:
             check(lib.hdt_surface_systole(self._live("systole"), ctypes.byref(lo), ctypes.byref(hi)))
