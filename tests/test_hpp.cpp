@@ -182,10 +182,11 @@ START_TEST(polygon_surfaces) {
   std::size_t count, length;
   // The wrapper gives the C call's certified interval (the walk's values
   // are tested in test_surfaces and against a brute force in test_tiling).
-  const hdt::PolygonSurface thin = hdt::PolygonSurface::random_symmetric(8, 3);
-  ck_assert_int_eq(hdt_surface_systole(thin.handle(), &lo, &hi), HDT_OK);
+  // Seed 2's walk is the shortest of the random octagons (59 tiles).
+  const hdt::PolygonSurface octagon = hdt::PolygonSurface::random_symmetric(8, 2);
+  ck_assert_int_eq(hdt_surface_systole(octagon.handle(), &lo, &hi), HDT_OK);
   ck_assert(lo <= hi && hi - lo < 1e-12);
-  ck_assert(thin.systole()[0] == lo && thin.systole()[1] == hi);
+  ck_assert(octagon.systole()[0] == lo && octagon.systole()[1] == hi);
   ck_assert_int_eq(hdt_surface_neighbour_count(s.handle(), &count), HDT_OK);
   ck_assert(s.neighbour_count() == count);
   int32_t word[64];
