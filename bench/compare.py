@@ -93,6 +93,9 @@ RECORDED_FIGURES = [
     ("a long reduced word that still fits in double at genus 1024 (a chain of half relators): up to about "
      "10 µs a letter of it, 1.5 s in all", "1 December 2026 (commit f99c118, the figure hdt.h carried until now; no program of `bench/` makes such a word)",
      "hdt.h at HDT_WORD_MAX_LENGTH"),
+    ("the layer split (issue 34) against the tree before it (3db7357), release builds, callgrind: instructions in `hdt_insert_many` a point at 10^5 points 6,401.2 before / 6,393.8 after at genus 2, 7,841.5 / 7,833.7 at genus 32; in the process's two `hdt_create` calls (the first builds the dummies) 3,860,638,441 / 3,853,310,817 at genus 128, 10,181,759,636 / 10,149,458,518 at genus 256 (CPU time of the first, median of three alternating runs: 606 / 585 ms at 128, 1,480 / 1,372 ms at 256)",
+     '`valgrind --tool=callgrind --toggle-collect=hdt_insert_many triangulation_bench --n 100000 --genus G` and `--toggle-collect=hdt_create ... --n 10 --genus G` in a worktree of each commit, 7 December 2026',
+     "issue 34's must-hold (not cited by hdt.h)"),
 ]
 
 
