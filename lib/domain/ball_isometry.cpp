@@ -8,6 +8,14 @@ ComplexBall BallIsometry::apply(const ComplexBall &z) const { return (a * z + b)
 // either root of it gives the same map. A ball across the negative axis
 // (Arb's branch cut) would make the root's ball wide, so there the root is
 // taken as i sqrt(-det).
+std::array<RealBall, 9> BallIsometry::lorentz() const {
+  const ComplexBall c = a * conj(b), d = a * b, p = a * a, q = b * b;
+  const RealBall two(2.0);
+  return {norm2(a) + norm2(b), two * real(c),          RealBall(0.0) - two * imag(c),
+          two * real(d),       real(p) + real(q),      imag(q) - imag(p),
+          two * imag(d),       imag(p) + imag(q),      real(p) - real(q)};
+}
+
 BallIsometry ball_isometry(const Moebius &m) {
   const ComplexBall A = ball_of(m.a), B = ball_of(m.b), C = ball_of(m.c), D = ball_of(m.d);
   const ComplexBall det = A * D - B * C;

@@ -6,6 +6,8 @@
 // denominators of exact products.
 #pragma once
 
+#include <array>
+
 #include "domain/ball.hpp"
 #include "domain/pairing.hpp"
 
@@ -17,6 +19,12 @@ struct BallIsometry {
   ComplexBall apply(const ComplexBall &z) const;  // (a z + b) / (conj b z + conj a)
   // cosh(l/2) = |tr| / 2 = |Re a|, l the translation length (0 for the identity).
   RealBall cosh_half_translation() const { return abs(real(a)); }
+  // The same map on hyperboloid vectors (x0, x1, x2) (hyperboloid_ball.hpp),
+  // row-major: X' = L X. With w = x1 + i x2, x0' = (|a|^2 + |b|^2) x0 +
+  // 2 Re(a conj(b) w) and w' = 2ab x0 + a^2 w + b^2 conj(w): the point z is
+  // the Hermitian matrix v v* / (1 - |z|^2), v = (z, 1), with x0 its trace
+  // and w twice its corner, and the isometry sends it to h (v v*) h*.
+  std::array<RealBall, 9> lorentz() const;
 };
 
 BallIsometry ball_isometry(const Moebius &m);

@@ -1,6 +1,7 @@
 #include "domain/systole.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <map>
@@ -9,6 +10,7 @@
 
 #include "domain/ball_isometry.hpp"
 #include "domain/base_point.hpp"
+#include "domain/bounded_double.hpp"
 #include "domain/hyperboloid_ball.hpp"
 #include "domain/polygon_cover.hpp"
 #include "exact/unsupported.hpp"
@@ -41,6 +43,8 @@ class Walk {
       normals_.push_back(line_normal(v, ball_of(P.vertex(k + 1)), C_));
       radius_ = std::max(radius_, acosh(RealBall(0.0) - minkowski(C_, hyperboloid(v))).upper());
     }
+    for (const HyperboloidBall &n : normals_) side_forms_.push_back(vector_of({RealBall(0.0) - n.x0, n.x1, n.x2}));
+    for (const CoverBall &b : cover_) centres_.push_back(std::isfinite(b.radius) ? vector_of(hyperboloid(b.centre)) : Vector{});
     set_gap();
   }
 
@@ -84,6 +88,10 @@ class Walk {
   std::vector<HyperboloidBall> normals_;
   double best_upper_ = INFINITY, L_ = INFINITY;  // >= the least cosh(l/2) met; >= its l
   std::vector<RealBall> reach_;                  // sinh(r_j + L) per cover ball
+  std::vector<BoundedDouble> reach_double_;      // the same, for the double tests
+  using Vector = std::array<BoundedDouble, 3>;
+  std::vector<Vector> centres_;                  // the hyperboloid vector of each cover ball's centre
+  std::vector<Vector> side_forms_;               // (-n0, n1, n2): <X, n> = side_forms_ . X
   double radius_ = 0;                            // >= d(c, v) for every vertex v: P is in B(c, radius_)
   RealBall reach_whole_;                         // sinh(radius_ + L)
   RealBall same_;                                // between cosh of 0 and of the least gap
@@ -119,6 +127,8 @@ class Walk {
     reach_.clear();
     for (const CoverBall &b : cover_)
       reach_.push_back(std::isfinite(b.radius) ? sinh(RealBall(b.radius) + RealBall(L_)) : RealBall(0.0));
+    reach_double_.clear();
+    for (const RealBall &r : reach_) reach_double_.push_back(bounded(r));
   }
 
   // The walk accepts about the area of the (L + 2r)-neighbourhood of P
@@ -146,14 +156,47 @@ class Walk {
   // the test runs down the cover's quadtree: a node whose ball's image is
   // beyond r + L of some half-plane holds no such point (its square is in
   // that ball), and its subtree is dropped.
-  bool may_meet(const BallIsometry &h, int node = 0) const {
+  bool may_meet(const BallIsometry &h) const { return may_meet(h, pulled_back_forms(h), 0); }
+
+  bool may_meet(const BallIsometry &h, const std::vector<Vector> &forms, int node) const {
     const CoverBall &b = cover_[std::size_t(node)];
     if (std::isfinite(b.radius)) {
-      if (beyond(hyperboloid(h.apply(b.centre)), reach_[std::size_t(node)])) return false;
+      if (node_beyond(h, forms, node)) return false;
       if (b.children.empty()) return true;
     }
-    return std::any_of(b.children.begin(), b.children.end(), [&](int c) { return may_meet(h, c); });
+    return std::any_of(b.children.begin(), b.children.end(), [&](int c) { return may_meet(h, forms, c); });
   }
+
+  // <h(X), n_k> = (L^T n~_k) . X for h's Lorentz matrix L, n~_k = (-n0, n1, n2):
+  // the side forms pulled back by h once a tile, so that each ball's test
+  // is one dot product with its fixed centre.
+  std::vector<Vector> pulled_back_forms(const BallIsometry &h) const {
+    const std::array<RealBall, 9> L = h.lorentz();
+    Vector column[3];
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) column[j][std::size_t(i)] = bounded(L[std::size_t(3 * i + j)]);
+    std::vector<Vector> forms;
+    for (const Vector &n : side_forms_) forms.push_back({dot3(column[0].data(), n.data()), dot3(column[1].data(), n.data()),
+                                                         dot3(column[2].data(), n.data())});
+    return forms;
+  }
+
+  // The ball's image is beyond its reach of some side's half-plane. Decided
+  // in double where the bounds tell (every side certainly within reach, or
+  // one certainly beyond); else on Arb's balls, as without the doubles.
+  bool node_beyond(const BallIsometry &h, const std::vector<Vector> &forms, int node) const {
+    const Vector &X = centres_[std::size_t(node)];
+    const BoundedDouble &reach = reach_double_[std::size_t(node)];
+    bool undecided = false;
+    for (const Vector &m : forms) {
+      const BoundedDouble side = dot3(m.data(), X.data());
+      if (certainly_greater(side, reach)) return true;
+      undecided = undecided || !certainly_greater(reach, side);
+    }
+    return undecided && beyond(hyperboloid(h.apply(cover_[std::size_t(node)].centre)), reach_[std::size_t(node)]);
+  }
+
+  static Vector vector_of(const HyperboloidBall &X) { return {bounded(X.x0), bounded(X.x1), bounded(X.x2)}; }
 
   // X is beyond `reach` (a sinh) of some side's half-plane.
   bool beyond(const HyperboloidBall &X, const RealBall &reach) const {

@@ -14,7 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "domain/ball_isometry.hpp"
+#include "domain/bounded_double.hpp"
 #include "domain/element.hpp"
+#include "domain/hyperboloid_ball.hpp"
 #include "domain/fundamental_polygon.hpp"
 #include "domain/neighbours.hpp"
 #include "domain/polygon_text.hpp"
@@ -194,6 +197,72 @@ Complex point_on_side(const FundamentalPolygon &P, int k, const Number &lam) {
   return inverse(T).apply(lam * T.apply(P.vertex(k + 1)));
 }
 
+// The walk's Lorentz matrices (ball_isometry.hpp) against the Moebius action
+// they stand for: L hyperboloid(z) = hyperboloid(h(z)) for products of up to
+// four pairings and random z, on balls at 128 bits.
+void check_lorentz(const FundamentalPolygon &P, const char *name) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-0.65, 0.65);
+  std::vector<BallIsometry> g;
+  for (int k = 0; k < P.side_count(); ++k) g.push_back(ball_isometry(P.pairing(k)));
+  for (int trial = 0; trial < 200; ++trial) {
+    BallIsometry h = ball_identity();
+    for (int n = int(rng() % 5); n > 0; --n) h = h * g[rng() % g.size()];
+    const ComplexBall z = complex_ball(u(rng), u(rng));
+    const HyperboloidBall moved = hyperboloid(h.apply(z)), X = hyperboloid(z);
+    const std::array<RealBall, 9> L = h.lorentz();
+    const RealBall *want[3] = {&moved.x0, &moved.x1, &moved.x2};
+    for (int i = 0; i < 3; ++i) {
+      const RealBall got = L[3 * i] * X.x0 + L[3 * i + 1] * X.x1 + L[3 * i + 2] * X.x2;
+      const RealBall gap = abs(got - *want[i]);
+      ck_assert_msg(gap.upper() < 1e-25 * (1 + abs(*want[i]).upper()), "%s: trial %d row %d: %g vs %g", name, trial, i,
+                    got.mid(), want[i]->mid());
+    }
+  }
+}
+
+// dot3's bound holds the exact value of every sum of products within its
+// inputs' bounds (the corners of the boxes, computed exactly on 2000-bit
+// balls), cancelling sums included; certainly_greater never claims an order
+// that the exact numbers do not have.
+void check_bounded_dots() {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int trial = 0; trial < 2000; ++trial) {
+    BoundedDouble a[3], b[3];
+    const double scale = std::ldexp(1.0, int(rng() % 80) - 40);
+    for (int i = 0; i < 3; ++i) {
+      a[i] = {u(rng) * scale, trial % 3 ? std::fabs(u(rng)) * scale * 0x1p-45 : 0};
+      b[i] = {u(rng), trial % 2 ? std::fabs(u(rng)) * 0x1p-50 : 0};
+    }
+    if (trial % 4 == 0) a[2].v = -(a[0].v * b[0].v + a[1].v * b[1].v) / b[2].v;  // cancelling
+    const BoundedDouble d = dot3(a, b);
+    for (int corner = 0; corner < 64; ++corner) {
+      arb_t exact, term, x, y;
+      arb_init(exact), arb_init(term), arb_init(x), arb_init(y);
+      for (int i = 0; i < 3; ++i) {
+        arb_set_d(x, a[i].v), arb_set_d(term, (corner >> i) & 1 ? a[i].e : -a[i].e), arb_add(x, x, term, 2000);
+        arb_set_d(y, b[i].v), arb_set_d(term, (corner >> (3 + i)) & 1 ? b[i].e : -b[i].e), arb_add(y, y, term, 2000);
+        arb_mul(term, x, y, 2000);
+        arb_add(exact, exact, term, 2000);
+      }
+      arb_set_d(term, d.v);
+      arb_sub(exact, exact, term, 2000);
+      arb_abs(exact, exact);
+      ck_assert_msg(arb_is_exact(exact), "trial %d: the corner's value is not exact", trial);
+      const double off = arf_get_d(arb_midref(exact), ARF_RND_UP);
+      ck_assert_msg(off <= d.e, "trial %d corner %d: off %g, bound %g", trial, corner, off, d.e);
+      arb_clear(exact), arb_clear(term), arb_clear(x), arb_clear(y);
+    }
+    // Beyond the bound it tells; within it (overlapping intervals) never.
+    const BoundedDouble above{d.v + 2.5 * d.e + std::fabs(d.v) * 0x1p-48 + 1e-300, 0};
+    ck_assert(certainly_greater(above, d));
+    ck_assert(!certainly_greater(d, d));
+    ck_assert(!certainly_greater({d.v + d.e / 2, d.e}, d));
+    ck_assert(!certainly_greater(d, {d.v - d.e / 2, d.e}));
+  }
+}
+
 }  // namespace
 
 START_TEST(equal_maps_have_equal_elements) {
@@ -277,6 +346,16 @@ START_TEST(decagon_has_31_neighbours) {
 END_TEST
 
 // cosh(l/2) = 1 + sqrt2 = a^2 (a^4 - 2a^2 - 1 = 0), so cosh^2(l/2) = a^4 = 2a^2 + 1.
+START_TEST(lorentz_matrices_move_points_as_the_pairings_do) {
+  check_lorentz(bolza(), "Bolza");
+  check_lorentz(random_octagon(2), "octagon 2");
+  check_lorentz(genus_3_12_gon(), "genus 3");
+}
+END_TEST
+
+START_TEST(bounded_dot_products_hold_the_exact_value) { check_bounded_dots(); }
+END_TEST
+
 START_TEST(bolza_systole) {
   const FundamentalPolygon P = bolza();
   const Systole s = systole(P);
@@ -399,6 +478,8 @@ END_TEST
 int main() {
   return run_suite("tiling", 300, [](TCase *tc) {
     tcase_add_test(tc, equal_maps_have_equal_elements);
+    tcase_add_test(tc, lorentz_matrices_move_points_as_the_pairings_do);
+    tcase_add_test(tc, bounded_dot_products_hold_the_exact_value);
     tcase_add_test(tc, translation_and_displacement_of_a_bolza_pairing);
     tcase_add_test(tc, bolza_has_49_neighbours);
     tcase_add_test(tc, genus_3_12_gon_has_121_neighbours);
