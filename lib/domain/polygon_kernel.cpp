@@ -21,26 +21,50 @@ int sign_of(const Number &x) { return x.sgn(); }
 // The formulas, once for balls and once for K: T is RealBall or Number, a
 // row any array of four T (only the columns named are read).
 template <class T, class Row>
-T det3(const Row &a, const Row &b, const Row &c, const std::array<int, 3> &col = {0, 1, 2}) {
-  const int i = col[0], j = col[1], k = col[2];
-  return a[i] * (b[j] * c[k] - b[k] * c[j]) - a[j] * (b[i] * c[k] - b[k] * c[i]) + a[k] * (b[i] * c[j] - b[j] * c[i]);
+T det3(const Row &a, const Row &b, const Row &c) {
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
 }
 
-// Laplace expansion along rows 0 and 1 (as predicates/stage_exact.cpp).
+template <class T>
+using Vec3 = std::array<T, 3>;
+
+template <class T, class A, class B>
+T dot(const A &a, const B &b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+template <class T>
+Vec3<T> cross(const Vec3<T> &a, const Vec3<T> &b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// R_o3 R - R_3 R_o = (R_3 R_o3) (N - N_o, 0): the row of N relative to N_o,
+// a positive multiple. The determinants below subtract such multiples of
+// the first row from the others, which leaves them unchanged, and scale rows
+// by positive numbers: the same signs, and far sharper balls for close
+// points (the differences are computed before the products that would bury
+// them).
 template <class T, class Row>
-T det4(const std::array<Row, 4> &r) {
-  auto minor = [&](int row, int j, int k) { return r[row][j] * r[row + 1][k] - r[row][k] * r[row + 1][j]; };
-  static constexpr int pairs[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
-  T sum = minor(0, 0, 1) * minor(2, 2, 3);  // the first pair, odd: added
-  for (int q = 1; q < 6; ++q) {
-    const auto &c = pairs[q];
-    const T term = minor(0, c[0], c[1]) * minor(2, c[2], c[3]);
-    sum = (c[0] + c[1]) % 2 == 1 ? sum + term : sum - term;
-  }
-  return sum;
+Vec3<T> relative(const Row &r, const Row &o) {
+  return {r[0] * o[3] - o[0] * r[3], r[1] * o[3] - o[1] * r[3], r[2] * o[3] - o[2] * r[3]};
 }
 
-// [u, v] = u0 v0 - u1 v1 - u2 v2: cosh d = [R_u, R_v] / (R_u3 R_v3).
+// det[N_p; N_q; N_r], up to a positive factor: det[R_p; R_q; R_r] =
+// det[R_p; D_q; D_r] / R_p3^2.
+template <class T, class Row>
+T orientation_value(const Row &p, const Row &q, const Row &r) {
+  return dot<T>(p, cross<T>(relative<T>(q, p), relative<T>(r, p)));
+}
+
+// det[N_i 1], up to a positive factor: with rows 1..3 replaced by D_i and
+// column 3 of them then 0, det[R_i] = -det[D_q; D_r; D_s] / R_p3^2, and
+// -(D_q x D_r) = D_r x D_q.
+template <class T, class Row>
+T in_circle_value(const Row &p, const Row &q, const Row &r, const Row &s) {
+  return dot<T>(cross<T>(relative<T>(r, p), relative<T>(q, p)), relative<T>(s, p));
+}
+
+// [p, a] = p0 a0 - p1 a1 - p2 a2: cosh d = [R_p, R_a] / (R_p3 R_a3).
 template <class T, class Row>
 T lorentz(const Row &u, const Row &v) {
   return u[0] * v[0] - (u[1] * v[1] + u[2] * v[2]);
@@ -51,14 +75,14 @@ T distance_difference(const Row &p, const Row &a, const Row &b) {
   return lorentz<T>(p, a) * b[3] - lorentz<T>(p, b) * a[3];
 }
 
-// c3^2 - k [m, m] for the plane c through the three rows: c_j is (-1)^j the
-// minor without column j.
+// c3^2 - k [m, m] for the plane c through [R_p; D_q; D_r] (R_p3^2 times that
+// through the rows, so the sign is unchanged): with X = D_q x D_r and D's
+// column 3 zero, (c0, c1, c2) = R_p3 (X0, X1, X2) and c3 = -R_p . X.
 template <class T, class Row>
 T circumdisk_excess(const Row &p, const Row &q, const Row &r, const T &k) {
-  const T c0 = det3<T>(p, q, r, {1, 2, 3}), c1 = det3<T>(p, q, r, {0, 2, 3});
-  const T c2 = det3<T>(p, q, r, {0, 1, 3}), c3 = det3<T>(p, q, r, {0, 1, 2});
-  // The signs of c1 and c3 do not matter: each enters squared.
-  return c3 * c3 - k * (c0 * c0 - (c1 * c1 + c2 * c2));
+  const Vec3<T> X = cross<T>(relative<T>(q, p), relative<T>(r, p));
+  const T c3 = dot<T>(p, X), m = X[0] * X[0] - (X[1] * X[1] + X[2] * X[2]);
+  return c3 * c3 - k * (p[3] * p[3]) * m;
 }
 
 template <class T, class Normal, class Row>
@@ -113,18 +137,16 @@ int PolygonKernel::staged(PolygonPredicate predicate, BallSign ball, ExactSign e
 
 int PolygonKernel::orientation(const PolygonPoint &p, const PolygonPoint &q, const PolygonPoint &r) {
   return staged(
-      PolygonPredicate::orientation, [&] { return sign_of(det3<RealBall>(ball_row(p), ball_row(q), ball_row(r))); },
-      [&] { return sign_of(det3<Number>(exact_row(p), exact_row(q), exact_row(r))); });
+      PolygonPredicate::orientation, [&] { return sign_of(orientation_value<RealBall>(ball_row(p), ball_row(q), ball_row(r))); },
+      [&] { return sign_of(orientation_value<Number>(exact_row(p), exact_row(q), exact_row(r))); });
 }
 
 int PolygonKernel::in_circle(const PolygonPoint &p, const PolygonPoint &q, const PolygonPoint &r,
                              const PolygonPoint &s) {
   return staged(
       PolygonPredicate::in_circle,
-      [&] { return sign_of(det4<RealBall>(std::array<BallRow, 4>{ball_row(p), ball_row(q), ball_row(r), ball_row(s)})); },
-      [&] {
-        return sign_of(det4<Number>(std::array<ExactRow, 4>{exact_row(p), exact_row(q), exact_row(r), exact_row(s)}));
-      });
+      [&] { return sign_of(in_circle_value<RealBall>(ball_row(p), ball_row(q), ball_row(r), ball_row(s))); },
+      [&] { return sign_of(in_circle_value<Number>(exact_row(p), exact_row(q), exact_row(r), exact_row(s))); });
 }
 
 int PolygonKernel::in_circle_perturbed(const std::array<PolygonPoint, 4> &pt,
@@ -132,11 +154,11 @@ int PolygonKernel::in_circle_perturbed(const std::array<PolygonPoint, 4> &pt,
   constexpr PolygonPredicate predicate = PolygonPredicate::in_circle_perturbed;
   if (!exact_only_) {
     const std::array<BallRow, 4> balls{ball_row(pt[0]), ball_row(pt[1]), ball_row(pt[2]), ball_row(pt[3])};
-    if (const int s = sign_of(det4<RealBall>(balls)); s != kUndecided) return count(predicate, PolygonStage::ball, s);
+    if (const int s = sign_of(in_circle_value<RealBall>(balls[0], balls[1], balls[2], balls[3])); s != kUndecided) return count(predicate, PolygonStage::ball, s);
   }
   // The exact rows, kept for a tie's perturbation coefficients.
   const std::array<ExactRow, 4> rows{exact_row(pt[0]), exact_row(pt[1]), exact_row(pt[2]), exact_row(pt[3])};
-  if (const int s = count(predicate, PolygonStage::exact, sign_of(det4<Number>(rows))); s != 0) return s;
+  if (const int s = count(predicate, PolygonStage::exact, sign_of(in_circle_value<Number>(rows[0], rows[1], rows[2], rows[3]))); s != 0) return s;
   return perturbed_tie(pt, vertex, rows);
 }
 
