@@ -10,6 +10,11 @@ namespace {
 
 constexpr int kUndecided = 2;
 
+int sign_of(const ErrorDouble &x) {
+  const int s = certain_sign(x);
+  return s ? s : kUndecided;
+}
+
 // A ball's sign only when it excludes 0 (a NaN or infinite ball never does).
 int sign_of(const RealBall &x) {
   if (arb_is_positive(x.get())) return 1;
@@ -18,8 +23,8 @@ int sign_of(const RealBall &x) {
 }
 int sign_of(const Number &x) { return x.sgn(); }
 
-// The formulas, once for balls and once for K: T is RealBall or Number, a
-// row any array of four T (only the columns named are read).
+// The formulas, once for every stage: T is ErrorDouble, RealBall or Number,
+// a row any array of four T (only the first three columns, or all four, read).
 template <class T, class Row>
 T det3(const Row &a, const Row &b, const Row &c) {
   return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
@@ -90,6 +95,13 @@ T side_value(const Normal &n, const Row &r) {
   return n[0] * r[0] + n[1] * r[1] + n[2] * r[2];
 }
 
+// The nearest double to the ball's centre, with the ball's distance from it
+// rounded up (infinite for a ball that is not finite).
+ErrorDouble error_double(const RealBall &x) {
+  const double v = x.mid();
+  return {v, abs(x - RealBall(v)).upper()};
+}
+
 }  // namespace
 
 PolygonKernel::PolygonKernel(const FundamentalPolygon &polygon, ElementTable &table)
@@ -99,7 +111,29 @@ PolygonKernel::PolygonKernel(const FundamentalPolygon &polygon, ElementTable &ta
     const std::array<Number, 3> n{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
     side_normal_.push_back(n);
     side_normal_ball_.push_back({ball_of(n[0]), ball_of(n[1]), ball_of(n[2])});
+    const auto &nb = side_normal_ball_.back();
+    side_normal_double_.push_back({error_double(nb[0]), error_double(nb[1]), error_double(nb[2])});
   }
+}
+
+// From the table's ball matrix, once per element.
+const PolygonKernel::DoubleIsometry &PolygonKernel::double_isometry(ElementId t) {
+  while (doubles_.size() <= t) {
+    const BallIsometry &U = table_.ball(ElementId(doubles_.size()));
+    doubles_.push_back({error_double(real(U.a)), error_double(imag(U.a)), error_double(real(U.b)),
+                        error_double(imag(U.b))});
+  }
+  return doubles_[t];
+}
+
+// As ball_row, written out in real and imaginary parts; z is exact.
+PolygonKernel::DoubleRow PolygonKernel::double_row(const PolygonPoint &p) {
+  const DoubleIsometry &U = double_isometry(p.t);
+  const ErrorDouble x(p.x), y(p.y);
+  const ErrorDouble nr = U.ar * x - U.ai * y + U.br, ni = U.ar * y + U.ai * x + U.bi;
+  const ErrorDouble dr = U.br * x + U.bi * y + U.ar, di = U.br * y - U.bi * x - U.ai;
+  const ErrorDouble re = nr * dr + ni * di, im = ni * dr - nr * di;
+  return {nr * nr + ni * ni + (dr * dr + di * di), re + re, im + im, ErrorDouble(1.0) - (x * x + y * y)};
 }
 
 // n = a z + b, d = conj(b) z + conj(a) for t's SU(1,1) matrix (either sign:
@@ -128,16 +162,20 @@ PolygonKernel::ExactRow PolygonKernel::exact_row(const Complex &w) const {
   return {one + ww, w.re + w.re, w.im + w.im, one - ww};
 }
 
-template <class BallSign, class ExactSign>
-int PolygonKernel::staged(PolygonPredicate predicate, BallSign ball, ExactSign exact) {
-  if (!exact_only_)
+template <class DoubleSign, class BallSign, class ExactSign>
+int PolygonKernel::staged(PolygonPredicate predicate, DoubleSign dbl, BallSign ball, ExactSign exact) {
+  if (first_ <= PolygonStage::double_filter)
+    if (const int s = dbl(); s != kUndecided) return count(predicate, PolygonStage::double_filter, s);
+  if (first_ <= PolygonStage::ball)
     if (const int s = ball(); s != kUndecided) return count(predicate, PolygonStage::ball, s);
   return count(predicate, PolygonStage::exact, exact());
 }
 
 int PolygonKernel::orientation(const PolygonPoint &p, const PolygonPoint &q, const PolygonPoint &r) {
   return staged(
-      PolygonPredicate::orientation, [&] { return sign_of(orientation_value<RealBall>(ball_row(p), ball_row(q), ball_row(r))); },
+      PolygonPredicate::orientation,
+      [&] { return sign_of(orientation_value<ErrorDouble>(double_row(p), double_row(q), double_row(r))); },
+      [&] { return sign_of(orientation_value<RealBall>(ball_row(p), ball_row(q), ball_row(r))); },
       [&] { return sign_of(orientation_value<Number>(exact_row(p), exact_row(q), exact_row(r))); });
 }
 
@@ -145,23 +183,32 @@ int PolygonKernel::in_circle(const PolygonPoint &p, const PolygonPoint &q, const
                              const PolygonPoint &s) {
   return staged(
       PolygonPredicate::in_circle,
+      [&] { return sign_of(in_circle_value<ErrorDouble>(double_row(p), double_row(q), double_row(r), double_row(s))); },
       [&] { return sign_of(in_circle_value<RealBall>(ball_row(p), ball_row(q), ball_row(r), ball_row(s))); },
       [&] { return sign_of(in_circle_value<Number>(exact_row(p), exact_row(q), exact_row(r), exact_row(s))); });
 }
 
+// The floating stages decide only non-zero signs; a zero is the exact
+// stage's, whose rows the perturbation then reuses.
 int PolygonKernel::in_circle_perturbed(const std::array<PolygonPoint, 4> &pt,
                                        const std::array<std::uint32_t, 4> &vertex) {
   constexpr PolygonPredicate predicate = PolygonPredicate::in_circle_perturbed;
-  if (!exact_only_) {
-    const std::array<BallRow, 4> balls{ball_row(pt[0]), ball_row(pt[1]), ball_row(pt[2]), ball_row(pt[3])};
-    if (const int s = sign_of(in_circle_value<RealBall>(balls[0], balls[1], balls[2], balls[3])); s != kUndecided) return count(predicate, PolygonStage::ball, s);
-  }
-  // The exact rows, kept for a tie's perturbation coefficients.
+  if (first_ <= PolygonStage::double_filter)
+    if (const int s = sign_of(in_circle_value<ErrorDouble>(double_row(pt[0]), double_row(pt[1]), double_row(pt[2]),
+                                                           double_row(pt[3])));
+        s != kUndecided)
+      return count(predicate, PolygonStage::double_filter, s);
+  if (first_ <= PolygonStage::ball)
+    if (const int s = sign_of(in_circle_value<RealBall>(ball_row(pt[0]), ball_row(pt[1]), ball_row(pt[2]),
+                                                        ball_row(pt[3])));
+        s != kUndecided)
+      return count(predicate, PolygonStage::ball, s);
   const std::array<ExactRow, 4> rows{exact_row(pt[0]), exact_row(pt[1]), exact_row(pt[2]), exact_row(pt[3])};
-  if (const int s = count(predicate, PolygonStage::exact, sign_of(in_circle_value<Number>(rows[0], rows[1], rows[2], rows[3]))); s != 0) return s;
+  if (const int s = count(predicate, PolygonStage::exact, sign_of(in_circle_value<Number>(rows[0], rows[1], rows[2], rows[3])));
+      s != 0)
+    return s;
   return perturbed_tie(pt, vertex, rows);
 }
-
 // The coefficients of eps_v, largest v first (see the header).
 int PolygonKernel::perturbed_tie(const std::array<PolygonPoint, 4> &pt, const std::array<std::uint32_t, 4> &vertex,
                                  const std::array<ExactRow, 4> &rows) {
@@ -200,16 +247,30 @@ int PolygonKernel::perturbed_tie(const std::array<PolygonPoint, 4> &pt, const st
 int PolygonKernel::compare_distance(const PolygonPoint &p, const PolygonPoint &a, const PolygonPoint &b) {
   return staged(
       PolygonPredicate::compare_distance,
+      [&] { return sign_of(distance_difference<ErrorDouble>(double_row(p), double_row(a), double_row(b))); },
       [&] { return sign_of(distance_difference<RealBall>(ball_row(p), ball_row(a), ball_row(b))); },
       [&] { return sign_of(distance_difference<Number>(exact_row(p), exact_row(a), exact_row(b))); });
 }
 
-// One element: t is injective, so the doubles decide. Else the ball images
-// may be certainly apart; equality needs K(i): n_p d_q = n_q d_p.
+// One element: t is injective, so the doubles decide. Else the floating
+// stages may find the images certainly apart (n_p d_q != n_q d_p, or balls
+// that do not overlap); equality needs K(i): n_p d_q = n_q d_p.
 bool PolygonKernel::same_point(const PolygonPoint &p, const PolygonPoint &q) {
   constexpr PolygonPredicate predicate = PolygonPredicate::same_point;
   if (p.t == q.t) return count(predicate, PolygonStage::structural, p.x == q.x && p.y == q.y);
-  if (!exact_only_) {
+  if (first_ <= PolygonStage::double_filter) {
+    const DoubleIsometry &f = double_isometry(p.t), &g = double_isometry(q.t);
+    auto image = [](const DoubleIsometry &U, const PolygonPoint &z) {  // n and d, as in double_row
+      const ErrorDouble x(z.x), y(z.y);
+      return std::array<ErrorDouble, 4>{U.ar * x - U.ai * y + U.br, U.ar * y + U.ai * x + U.bi,
+                                        U.br * x + U.bi * y + U.ar, U.br * y - U.bi * x - U.ai};
+    };
+    const auto P = image(f, p), Q = image(g, q);
+    const ErrorDouble re = (P[0] * Q[2] - P[1] * Q[3]) - (Q[0] * P[2] - Q[1] * P[3]);
+    const ErrorDouble im = (P[0] * Q[3] + P[1] * Q[2]) - (Q[0] * P[3] + Q[1] * P[2]);
+    if (certain_sign(re) || certain_sign(im)) return count(predicate, PolygonStage::double_filter, false);
+  }
+  if (first_ <= PolygonStage::ball) {
     const ComplexBall wp = table_.ball(p.t).apply(complex_ball(p.x, p.y));
     const ComplexBall wq = table_.ball(q.t).apply(complex_ball(q.x, q.y));
     if (!acb_overlaps(wp.get(), wq.get())) return count(predicate, PolygonStage::ball, false);
@@ -224,30 +285,34 @@ int PolygonKernel::beyond_side(const PolygonPoint &p, int side) {
   const int k = ((side % polygon_.side_count()) + polygon_.side_count()) % polygon_.side_count();
   return -staged(
       PolygonPredicate::beyond_side,
+      [&] { return sign_of(side_value<ErrorDouble>(side_normal_double_[k], double_row(p))); },
       [&] { return sign_of(side_value<RealBall>(side_normal_ball_[k], ball_row(p))); },
       [&] { return sign_of(side_value<Number>(side_normal_[k], exact_row(p))); });
 }
 
 int PolygonKernel::large_circumdisk(const PolygonPoint &p, const PolygonPoint &q, const PolygonPoint &r,
                                     const Number &cosh2_half_diameter) {
-  const RealBall &kb = threshold_ball(cosh2_half_diameter);
+  set_threshold(cosh2_half_diameter);
   const int s = staged(
       PolygonPredicate::large_circumdisk,
-      [&] { return sign_of(circumdisk_excess<RealBall>(ball_row(p), ball_row(q), ball_row(r), kb)); },
+      [&] {
+        return sign_of(circumdisk_excess<ErrorDouble>(double_row(p), double_row(q), double_row(r), threshold_double_));
+      },
+      [&] { return sign_of(circumdisk_excess<RealBall>(ball_row(p), ball_row(q), ball_row(r), threshold_ball_)); },
       [&] { return sign_of(circumdisk_excess<Number>(exact_row(p), exact_row(q), exact_row(r), *threshold_)); });
   return s >= 0 ? 1 : -1;
 }
 
 // The threshold in the polygon's field (a rational one is moved there, so
-// that every product has one parent) and its ball, kept for the next call.
-const RealBall &PolygonKernel::threshold_ball(const Number &k) {
-  if (!threshold_given_ || *threshold_given_ != k) {
-    const auto &parent = polygon_.vertex(0).re.parent();
-    threshold_given_ = k;
-    threshold_ = k.is_rational() ? Number(parent, static_cast<mpq_class>(k)) : k;
-    threshold_ball_ = ball_of(*threshold_);
-  }
-  return threshold_ball_;
+// that every product has one parent), its ball and double, kept for the
+// next call.
+void PolygonKernel::set_threshold(const Number &k) {
+  if (threshold_given_ && *threshold_given_ == k) return;
+  const auto &parent = polygon_.vertex(0).re.parent();
+  threshold_given_ = k;
+  threshold_ = k.is_rational() ? Number(parent, static_cast<mpq_class>(k)) : k;
+  threshold_ball_ = ball_of(*threshold_);
+  threshold_double_ = error_double(threshold_ball_);
 }
 
 }  // namespace hdt::domain

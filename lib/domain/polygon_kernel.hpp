@@ -36,11 +36,14 @@
 //     the answer is +1 iff c3^2 - k [m, m] >= 0 (for [m, m] <= 0 it is
 //     >= 0 anyway, k > 0). The M_g kernel's test is k = cosh^2(sys / 4).
 //
-// Stages. (1) Arb balls at kBallBits: t's SU(1,1) ball matrix, computed once
-// per element, applied to the exact ball of z; for an SU(1,1) matrix
-// |d|^2 - |n|^2 = 1 - |z|^2 exactly. A ball answers only when it excludes 0,
-// and it holds the exact value, so its sign is exact. (2) Otherwise e-antic
-// in K(i): the rows exactly, the sign exactly. No epsilon anywhere.
+// Stages, each deciding only when its certified enclosure of the value
+// excludes 0, so that its sign is the exact one. (1) Doubles with a running
+// error bound (error_double.hpp): t's SU(1,1) matrix as doubles with the
+// error of its ball, z exact. (2) Arb balls at kBallBits: t's SU(1,1) ball
+// matrix, computed once per element, applied to the exact ball of z. For an
+// SU(1,1) matrix |d|^2 - |n|^2 = 1 - |z|^2 exactly, so R_3 is that in both.
+// (3) Otherwise e-antic in K(i): the rows exactly, the sign exactly. No
+// epsilon anywhere.
 //
 // in_circle_perturbed breaks ties like the M_g kernel: vertex v's rows get
 // the last coordinate 1 + eps_v (lambda (1 + eps_v) here), eps of a larger id
@@ -60,6 +63,7 @@
 
 #include "domain/ball.hpp"
 #include "domain/element_table.hpp"
+#include "domain/error_double.hpp"
 #include "domain/fundamental_polygon.hpp"
 
 namespace hdt::domain {
@@ -69,10 +73,10 @@ struct PolygonPoint {
   ElementId t;  // the point is t(z)
 };
 
-// Which stage decided: structural (the description alone: same_point of
-// one element), ball, exact.
-enum class PolygonStage : std::uint8_t { structural, ball, exact };
-constexpr std::size_t kPolygonStageCount = 3;
+// Which stage decided, in the order they run: structural (the description
+// alone: same_point of one element), double, ball, exact.
+enum class PolygonStage : std::uint8_t { structural, double_filter, ball, exact };
+constexpr std::size_t kPolygonStageCount = 4;
 
 enum class PolygonPredicate : std::uint8_t {
   orientation,
@@ -120,22 +124,29 @@ class PolygonKernel {
 
   const PolygonStatistics &statistics() const { return statistics_; }
   void reset_statistics() { statistics_ = {}; }
-  // Tests: skip the ball stage, so that every sign is the exact stage's.
-  void set_exact_only(bool exact_only) { exact_only_ = exact_only; }
+  // Tests: skip the floating stages before `first` (double_filter: run all),
+  // so that each stage's signs can be checked.
+  void set_first_stage(PolygonStage first) { first_ = first; }
 
  private:
+  using DoubleRow = std::array<ErrorDouble, 4>;
   using BallRow = std::array<RealBall, 4>;
   using ExactRow = std::array<Number, 4>;
+  struct DoubleIsometry {
+    ErrorDouble ar, ai, br, bi;  // a and b of the SU(1,1) matrix
+  };
 
+  const DoubleIsometry &double_isometry(ElementId t);
+  DoubleRow double_row(const PolygonPoint &p);
   BallRow ball_row(const PolygonPoint &p) const;
   ExactRow exact_row(const PolygonPoint &p) const;
   ExactRow exact_row(const Complex &w) const;  // an exact point of the disk
-  const RealBall &threshold_ball(const Number &k);
+  void set_threshold(const Number &k);
   int perturbed_tie(const std::array<PolygonPoint, 4> &points, const std::array<std::uint32_t, 4> &vertex,
                     const std::array<ExactRow, 4> &rows);
-  // The ball stage's sign (kUndecided when its ball holds 0), else the exact one's.
-  template <class BallSign, class ExactSign>
-  int staged(PolygonPredicate predicate, BallSign ball, ExactSign exact);
+  // The first stage's sign that is not kUndecided: double, ball, exact.
+  template <class DoubleSign, class BallSign, class ExactSign>
+  int staged(PolygonPredicate predicate, DoubleSign dbl, BallSign ball, ExactSign exact);
   int count(PolygonPredicate p, PolygonStage s, int sign) {
     ++statistics_.decided[std::size_t(p)][std::size_t(s)];
     return sign;
@@ -145,11 +156,14 @@ class PolygonKernel {
   ElementTable &table_;
   std::vector<std::array<Number, 3>> side_normal_;  // R_{v_k} x R_{v_{k+1}}, first three columns
   std::vector<std::array<RealBall, 3>> side_normal_ball_;
+  std::vector<std::array<ErrorDouble, 3>> side_normal_double_;
+  std::vector<DoubleIsometry> doubles_;  // by element id, as far as computed
   // The last large_circumdisk threshold, in the polygon's field, and its ball.
   std::optional<Number> threshold_given_, threshold_;
   RealBall threshold_ball_;
+  ErrorDouble threshold_double_;
   PolygonStatistics statistics_;
-  bool exact_only_ = false;
+  PolygonStage first_ = PolygonStage::double_filter;
 };
 
 }  // namespace hdt::domain

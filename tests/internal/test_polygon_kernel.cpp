@@ -182,10 +182,10 @@ PolygonPoint near_point(Setup &S, const PolygonPoint &q, double delta, uint64_t 
 
 // Four points: independent (mode 0), or near each other at a random scale
 // through the same element (1) or through other elements (2).
-std::array<PolygonPoint, 4> random_points(Setup &S, uint64_t *s) {
+std::array<PolygonPoint, 4> random_points(Setup &S, uint64_t *s, int mode = -1) {
   std::array<PolygonPoint, 4> p;
   p[0] = random_point(S, s);
-  const int mode = int(splitmix(s) % 3);
+  if (mode < 0) mode = int(splitmix(s) % 3);
   const double delta = std::pow(10.0, -4 * uniform01(s));
   for (int i = 1; i < 4; ++i) {
     if (mode == 0) p[i] = random_point(S, s);
@@ -253,19 +253,27 @@ void print_statistics(const char *name, const PolygonKernel &K) {
                                 "same_point",       "beyond_side", "large_circumdisk"};
   for (std::size_t p = 0; p < kPolygonPredicateCount; ++p) {
     const auto &d = K.statistics().decided[p];
-    std::printf("%s %-20s structural %lu ball %lu exact %lu\n", name, names[p], d[0], d[1], d[2]);
+    std::printf("%s %-20s structural %lu double %lu ball %lu exact %lu\n", name, names[p], d[0], d[1], d[2], d[3]);
   }
 }
 
-// Random points, both ways: the staged kernel, then the exact stage alone.
+// Random points, three ways: all stages, from the ball stage on, the exact
+// stage alone; each stage's signs are checked.
 void random_suite(FundamentalPolygon P, const char *name, int rounds) {
   Setup S(std::move(P));
+  PolygonKernel &K = S.kernel;
   check_random(S, rounds, 7, name);
-  print_statistics(name, S.kernel);
-  S.kernel.reset_statistics();
-  S.kernel.set_exact_only(true);
-  check_random(S, rounds / 4, 8, name);
-  ck_assert(exact_count(S.kernel, PolygonPredicate::in_circle) == unsigned(rounds / 4));
+  print_statistics(name, K);
+  ck_assert_uint_gt(K.statistics().decided_by(PolygonPredicate::in_circle, PolygonStage::double_filter), rounds / 3);
+  K.reset_statistics();
+  K.set_first_stage(PolygonStage::ball);
+  check_random(S, rounds / 2, 8, name);
+  ck_assert_uint_eq(K.statistics().decided_by(PolygonPredicate::in_circle, PolygonStage::double_filter), 0);
+  ck_assert_uint_gt(K.statistics().decided_by(PolygonPredicate::in_circle, PolygonStage::ball), rounds / 4);
+  K.reset_statistics();
+  K.set_first_stage(PolygonStage::exact);
+  check_random(S, rounds / 4, 9, name);
+  ck_assert(exact_count(K, PolygonPredicate::in_circle) == unsigned(rounds / 4));
 }
 
 }  // namespace
@@ -446,26 +454,30 @@ START_TEST(same_point_of_words_and_near_images) {
   ck_assert(K.same_point({0.25, -0.5, around}, {0.25, -0.5, kIdentityId}));
   ck_assert(!K.same_point({0.25, -0.5, S.gens[1]}, {0.25, 0.5, S.gens[1]}));
   uint64_t s = 11;
-  for (const bool exact : {false, true}) {
-    K.set_exact_only(exact);
+  for (const PolygonStage first : {PolygonStage::double_filter, PolygonStage::ball, PolygonStage::exact}) {
+    K.set_first_stage(first);
     for (int i = 0; i < 50; ++i) {
       const PolygonPoint p = random_point(S, &s), n = near_point(S, p, 0, &s);
       ck_assert_int_eq(K.same_point(p, n), p.t == n.t && p.x == n.x && p.y == n.y);
       ck_assert(K.same_point(p, p));
+      const PolygonPoint far = random_point(S, &s);
+      ck_assert_int_eq(K.same_point(p, far), p.t == far.t && p.x == far.x && p.y == far.y);
     }
   }
   ck_assert_uint_gt(exact_count(K, PolygonPredicate::same_point), 0);
   ck_assert_uint_gt(K.statistics().decided_by(PolygonPredicate::same_point, PolygonStage::ball), 0);
+  ck_assert_uint_gt(K.statistics().decided_by(PolygonPredicate::same_point, PolygonStage::double_filter), 0);
 }
 END_TEST
 
 // Not a check: microseconds per call on random points of the Bolza octagon,
-// staged, printed for the record.
+// all stages, from the ball stage on, exact alone, printed for the record.
 START_TEST(costs) {
   Setup S(bolza());
   uint64_t s = 5;
-  std::vector<std::array<PolygonPoint, 4>> inputs;
-  for (int i = 0; i < 400; ++i) inputs.push_back(random_points(S, &s));
+  std::vector<std::array<PolygonPoint, 4>> mixed, independent;
+  for (int i = 0; i < 400; ++i) mixed.push_back(random_points(S, &s));
+  for (int i = 0; i < 400; ++i) independent.push_back(random_points(S, &s, 0));
   const Number k = q(4, 1);
   const std::pair<const char *, std::function<void(const std::array<PolygonPoint, 4> &)>> predicates[] = {
       {"orientation", [&](const auto &p) { S.kernel.orientation(p[0], p[1], p[2]); }},
@@ -475,15 +487,21 @@ START_TEST(costs) {
       {"large_circumdisk", [&](const auto &p) { S.kernel.large_circumdisk(p[0], p[1], p[2], k); }},
       {"same_point", [&](const auto &p) { S.kernel.same_point(p[0], p[1]); }},
   };
-  for (const bool exact : {false, true}) {
-    S.kernel.set_exact_only(exact);
-    for (const auto &[name, f] : predicates) {
-      const auto start = std::chrono::steady_clock::now();
-      for (const auto &p : inputs) f(p);
-      const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
-      std::printf("cost %-6s %-18s %8.2f us\n", exact ? "exact" : "staged", name, us / double(inputs.size()));
+  const std::pair<const char *, PolygonStage> firsts[] = {
+      {"staged", PolygonStage::double_filter}, {"ball", PolygonStage::ball}, {"exact", PolygonStage::exact}};
+  for (const auto &[stage, first] : firsts)
+    for (const auto *inputs : {&mixed, &independent}) {
+      S.kernel.set_first_stage(first);
+      S.kernel.reset_statistics();
+      for (const auto &[name, f] : predicates) {
+        const auto start = std::chrono::steady_clock::now();
+        for (const auto &p : *inputs) f(p);
+        const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+        std::printf("cost %-6s %-11s %-18s %8.2f us\n", stage, inputs == &mixed ? "mixed" : "independent", name,
+                    us / double(inputs->size()));
+      }
+      if (first == PolygonStage::double_filter) print_statistics(inputs == &mixed ? "mixed" : "independent", S.kernel);
     }
-  }
 }
 END_TEST
 
