@@ -139,6 +139,36 @@ int hi_large_circumdisk(const HiC &a, const HiC &b, const HiC &c, const Number &
   return s == kUnknown ? s : (s >= 0 ? 1 : -1);
 }
 
+// The perturbed in-circle sign of four cocircular points from the
+// definition: the coefficient of eps_v in det[N_i, 1 + eps_{v_i}], largest v
+// first, with the hyperboloid vectors N in 2000 bits; 0 when every
+// coefficient is 0 to 2000 bits.
+int hi_perturbed_tie(const std::array<HiC, 4> &w, const std::array<uint32_t, 4> &vertex) {
+  std::array<std::array<Hi, 3>, 4> N;
+  for (int i = 0; i < 4; ++i) {
+    const Hi r2 = norm(w[i]), s = Hi(1.0) / (Hi(1.0) - r2);
+    N[i] = {(Hi(1.0) + r2) * s, Hi(2.0) * w[i].re * s, Hi(2.0) * w[i].im * s};
+  }
+  auto det3 = [](const std::array<Hi, 3> &a, const std::array<Hi, 3> &b, const std::array<Hi, 3> &c) {
+    return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+  };
+  std::array<uint32_t, 4> order = vertex;
+  std::sort(order.begin(), order.end(), std::greater<uint32_t>());
+  for (const uint32_t v : order) {
+    Hi coefficient(0.0);
+    for (int r = 0; r < 4; ++r) {
+      if (vertex[r] != v) continue;
+      std::vector<const std::array<Hi, 3> *> o;
+      for (int i = 0; i < 4; ++i)
+        if (i != r) o.push_back(&N[std::size_t(i)]);
+      const Hi term = det3(*o[0], *o[1], *o[2]);
+      coefficient = r % 2 == 1 ? coefficient + term : coefficient - term;
+    }
+    if (const int s = sign(coefficient); s != kUnknown) return s;
+  }
+  return 0;
+}
+
 // A polygon, its table with the pairings and random words in them, and the kernel.
 struct Setup {
   FundamentalPolygon P;
@@ -288,6 +318,11 @@ START_TEST(element_table_interns_and_caches) {
   }
   // The opposite pairings of the Bolza octagon are inverse to each other.
   ck_assert(T.inverse(S.gens[0]) == S.gens[4]);
+  // A multiple of a pairing's matrix is the same element.
+  Moebius m = S.P.pairing(3);
+  const Complex two = Complex(Number(m.a.re.parent(), 2), Number(m.a.re.parent(), 1));
+  m = {two * m.a, two * m.b, two * m.c, two * m.d};
+  ck_assert(T.intern(Element(m)) == S.gens[3]);
   const ElementId ab = T.compose(S.gens[1], S.gens[2]);
   ck_assert(T.compose(S.gens[1], S.gens[2]) == ab);
   ck_assert(T.element(ab) == T.element(S.gens[1]) * T.element(S.gens[2]));
@@ -377,6 +412,23 @@ START_TEST(bolza_images_of_the_centre_are_cocircular) {
           ck_assert_int_eq(s, (r % 2 == 1 ? 1 : -1) * hi_orientation(others[0], others[1], others[2]));
           // The newest point (largest id) on the circle of a ccw triangle is inside it.
           ck_assert_int_eq(K.in_circle_perturbed({A, B, C, D}, {0, 1, 2, 9}), 1);
+          // Repeated vertices (copies of one vertex): the definition's sign, or no decision.
+          const std::array<HiC, 4> w{S.hi(A), S.hi(B), S.hi(C), S.hi(D)};
+          for (const std::array<uint32_t, 4> &u : {std::array<uint32_t, 4>{7, 7, 1, 2}, {3, 1, 3, 3}, {2, 6, 6, 2},
+                                                   {4, 4, 4, 4}}) {
+            const int expected = hi_perturbed_tie(w, u);
+            if (expected == 0) {
+              bool refused = false;
+              try {
+                K.in_circle_perturbed({A, B, C, D}, u);
+              } catch (const std::logic_error &) {
+                refused = true;
+              }
+              ck_assert(refused);
+            } else {
+              ck_assert_int_eq(K.in_circle_perturbed({A, B, C, D}, u), expected);
+            }
+          }
           ++quadruples;
         }
   ck_assert_int_eq(quadruples, 70);
@@ -398,6 +450,32 @@ START_TEST(bolza_images_of_the_centre_are_cocircular) {
     ck_assert_msg(exact_count(K, p) > 0, "predicate %d never reached the exact stage", int(p));
   ck_assert_uint_eq(K.statistics().decided_by(PolygonPredicate::in_circle, PolygonStage::ball), 0);
   ck_assert_uint_ge(exact_count(K, PolygonPredicate::orientation), 8);
+}
+END_TEST
+
+// Four points on the real axis, a geodesic (the Bolza octagon's g_3 and g_7
+// send 0 onto it): orientation is exactly 0, and no perturbation decides.
+START_TEST(four_points_on_one_geodesic) {
+  Setup S(bolza());
+  PolygonKernel &K = S.kernel;
+  std::vector<PolygonPoint> axis{{0, 0, kIdentityId}, {0.3, 0, kIdentityId}};
+  for (const ElementId g : S.gens) {
+    const HiC w = S.hi({0, 0, g});
+    if (sign(w.im) == kUnknown) axis.push_back({0, 0, g});
+  }
+  ck_assert_uint_eq(axis.size(), 4);
+  ck_assert_int_eq(K.orientation(axis[0], axis[2], axis[3]), 0);
+  ck_assert_int_eq(K.orientation(axis[1], axis[2], axis[0]), 0);
+  ck_assert_int_eq(K.orientation(axis[0], axis[2], {0.1, 1e-300, kIdentityId}), -K.orientation(axis[0], axis[3], {0.1, 1e-300, kIdentityId}));
+  ck_assert_int_eq(K.in_circle(axis[0], axis[1], axis[2], axis[3]), 0);
+  bool refused = false;
+  try {
+    K.in_circle_perturbed({axis[0], axis[1], axis[2], axis[3]}, {0, 1, 2, 3});
+  } catch (const std::logic_error &) {
+    refused = true;
+  }
+  ck_assert(refused);
+  ck_assert_uint_ge(exact_count(K, PolygonPredicate::orientation), 2);
 }
 END_TEST
 
@@ -513,6 +591,7 @@ int main() {
     tcase_add_test(tc, random_points_on_a_rational_octagon);
     tcase_add_test(tc, random_points_on_a_regular_12_gon);
     tcase_add_test(tc, bolza_images_of_the_centre_are_cocircular);
+    tcase_add_test(tc, four_points_on_one_geodesic);
     tcase_add_test(tc, a_vertex_at_the_origin_is_on_two_side_lines);
     tcase_add_test(tc, same_point_of_words_and_near_images);
     tcase_add_test(tc, costs);
