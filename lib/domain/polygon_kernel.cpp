@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <initializer_list>
 #include <stdexcept>
 
 namespace hdt::domain {
@@ -90,10 +91,19 @@ T circumdisk_excess(const Row &p, const Row &q, const Row &r, const T &k) {
   return c3 * c3 - k * (p[3] * p[3]) * m;
 }
 
-template <class T, class Normal, class Row>
-T side_value(const Normal &n, const Row &r) {
-  return n[0] * r[0] + n[1] * r[1] + n[2] * r[2];
+// One frame: every predicate but beyond_side is invariant under an isometry
+// applied to all its points (det L = 1 on the hyperboloid, distances and
+// circles kept), so points of one element t are read as z untranslated:
+// every stage then runs on rationals and small numbers.
+bool one_frame(std::initializer_list<const PolygonPoint *> points) {
+  const ElementId t = (*points.begin())->t;
+  if (t == kIdentityId) return false;
+  for (const PolygonPoint *p : points)
+    if (p->t != t) return false;
+  return true;
 }
+
+PolygonPoint untranslated(const PolygonPoint &p) { return {p.x, p.y, kIdentityId}; }
 
 // The nearest double to the ball's centre, with the ball's distance from it
 // rounded up (infinite for a ball that is not finite).
@@ -172,6 +182,7 @@ int PolygonKernel::staged(PolygonPredicate predicate, DoubleSign dbl, BallSign b
 }
 
 int PolygonKernel::orientation(const PolygonPoint &p, const PolygonPoint &q, const PolygonPoint &r) {
+  if (one_frame({&p, &q, &r})) return orientation(untranslated(p), untranslated(q), untranslated(r));
   return staged(
       PolygonPredicate::orientation,
       [&] { return sign_of(orientation_value<ErrorDouble>(double_row(p), double_row(q), double_row(r))); },
@@ -181,6 +192,7 @@ int PolygonKernel::orientation(const PolygonPoint &p, const PolygonPoint &q, con
 
 int PolygonKernel::in_circle(const PolygonPoint &p, const PolygonPoint &q, const PolygonPoint &r,
                              const PolygonPoint &s) {
+  if (one_frame({&p, &q, &r, &s})) return in_circle(untranslated(p), untranslated(q), untranslated(r), untranslated(s));
   return staged(
       PolygonPredicate::in_circle,
       [&] { return sign_of(in_circle_value<ErrorDouble>(double_row(p), double_row(q), double_row(r), double_row(s))); },
@@ -192,6 +204,9 @@ int PolygonKernel::in_circle(const PolygonPoint &p, const PolygonPoint &q, const
 // stage's, whose rows the perturbation then reuses.
 int PolygonKernel::in_circle_perturbed(const std::array<PolygonPoint, 4> &pt,
                                        const std::array<std::uint32_t, 4> &vertex) {
+  if (one_frame({&pt[0], &pt[1], &pt[2], &pt[3]}))
+    return in_circle_perturbed({untranslated(pt[0]), untranslated(pt[1]), untranslated(pt[2]), untranslated(pt[3])},
+                               vertex);
   constexpr PolygonPredicate predicate = PolygonPredicate::in_circle_perturbed;
   if (first_ <= PolygonStage::double_filter)
     if (const int s = sign_of(in_circle_value<ErrorDouble>(double_row(pt[0]), double_row(pt[1]), double_row(pt[2]),
@@ -245,6 +260,7 @@ int PolygonKernel::perturbed_tie(const std::array<PolygonPoint, 4> &pt, const st
 }
 
 int PolygonKernel::compare_distance(const PolygonPoint &p, const PolygonPoint &a, const PolygonPoint &b) {
+  if (one_frame({&p, &a, &b})) return compare_distance(untranslated(p), untranslated(a), untranslated(b));
   return staged(
       PolygonPredicate::compare_distance,
       [&] { return sign_of(distance_difference<ErrorDouble>(double_row(p), double_row(a), double_row(b))); },
@@ -285,13 +301,15 @@ int PolygonKernel::beyond_side(const PolygonPoint &p, int side) {
   const int k = ((side % polygon_.side_count()) + polygon_.side_count()) % polygon_.side_count();
   return -staged(
       PolygonPredicate::beyond_side,
-      [&] { return sign_of(side_value<ErrorDouble>(side_normal_double_[k], double_row(p))); },
-      [&] { return sign_of(side_value<RealBall>(side_normal_ball_[k], ball_row(p))); },
-      [&] { return sign_of(side_value<Number>(side_normal_[k], exact_row(p))); });
+      [&] { return sign_of(dot<ErrorDouble>(side_normal_double_[k], double_row(p))); },
+      [&] { return sign_of(dot<RealBall>(side_normal_ball_[k], ball_row(p))); },
+      [&] { return sign_of(dot<Number>(side_normal_[k], exact_row(p))); });
 }
 
 int PolygonKernel::large_circumdisk(const PolygonPoint &p, const PolygonPoint &q, const PolygonPoint &r,
                                     const Number &cosh2_half_diameter) {
+  if (one_frame({&p, &q, &r}))
+    return large_circumdisk(untranslated(p), untranslated(q), untranslated(r), cosh2_half_diameter);
   set_threshold(cosh2_half_diameter);
   const int s = staged(
       PolygonPredicate::large_circumdisk,
