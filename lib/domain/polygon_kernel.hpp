@@ -6,8 +6,9 @@
 // Rows. A disk point w has the hyperboloid vector
 // N = (1 + |w|^2, 2 Re w, 2 Im w) / (1 - |w|^2); every formula uses a row
 // R = lambda (N, 1) with lambda > 0, which leaves every sign below unchanged
-// (each determinant is linear in each row, each comparison is cleared of the
-// lambdas by positive factors). For w = n / d, n = z + b, d = c z + d' (t's
+// (each value is homogeneous in each row, of degree 1, or 2 in
+// large_circumdisk; compare_distance is cleared of the lambdas by positive
+// factors). For w = n / d, n = z + b, d = c z + d' (t's
 // canonical matrix [[1, b], [c, d']]), lambda = |d|^2 (1 - |w|^2) gives
 //   R = (|n|^2 + |d|^2, 2 Re(n conj d), 2 Im(n conj d), |d|^2 - |n|^2):
 // no division, so in K when z is (doubles are rationals).
@@ -24,7 +25,8 @@
 //     det[1 + |w|^2, 2x, 2y, 1 - |w|^2] = 8 det[x, y, x^2 + y^2, 1]: the same
 //     sign as the Euclidean in-circle determinant of the disk points. The
 //     Euclidean circle through three disk points, cut by the disk, is their
-//     hyperbolic circle, horocycle or hypercycle, so both tests agree.
+//     hyperbolic circle, horocycle or hypercycle, so both tests agree (for
+//     a horocycle or hypercycle the sign names a side of it, as in M_g's).
 //   compare_distance(p, a, b) = sign(cosh d(p, a) - cosh d(p, b)), with
 //     cosh d(p, a) = [p, a] / (R_p3 R_a3), [u, v] = u0 v0 - u1 v1 - u2 v2.
 //   beyond_side(p, k) = -orientation(v_k, v_{k+1}, p): the polygon is on the
@@ -43,7 +45,11 @@
 // matrix, computed once per element, applied to the exact ball of z. For an
 // SU(1,1) matrix |d|^2 - |n|^2 = 1 - |z|^2 exactly, so R_3 is that in both.
 // (3) Otherwise e-antic in K(i): the rows exactly, the sign exactly. No
-// epsilon anywhere.
+// epsilon anywhere. The determinants are taken on R_p and the rows of the
+// other points relative to it (R_p3 R - R_3 R_p, a positive multiple of
+// (N - N_p, 0)), which keeps (1) and (2) sharp for close points; points that
+// all carry one element t are read untranslated (every predicate but
+// beyond_side is invariant under a common isometry).
 //
 // in_circle_perturbed breaks ties like the M_g kernel: vertex v's rows get
 // the last coordinate 1 + eps_v (lambda (1 + eps_v) here), eps of a larger id
