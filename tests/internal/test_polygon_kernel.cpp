@@ -211,11 +211,12 @@ PolygonPoint near_point(Setup &S, const PolygonPoint &q, double delta, uint64_t 
 }
 
 // Four points: independent (mode 0), or near each other at a random scale
-// through the same element (1) or through other elements (2).
+// through the same element (1) or through other elements (2, and 3 a
+// thousand times nearer).
 std::array<PolygonPoint, 4> random_points(Setup &S, uint64_t *s, int mode = -1) {
   std::array<PolygonPoint, 4> p;
   p[0] = random_point(S, s);
-  if (mode < 0) mode = int(splitmix(s) % 3);
+  if (mode < 0) mode = int(splitmix(s) % 4);
   const double delta = std::pow(10.0, -4 * uniform01(s));
   for (int i = 1; i < 4; ++i) {
     if (mode == 0) p[i] = random_point(S, s);
@@ -224,7 +225,8 @@ std::array<PolygonPoint, 4> random_points(Setup &S, uint64_t *s, int mode = -1) 
       p[i] = {p[0].x + room * delta * (2 * uniform01(s) - 1) / 2, p[0].y + room * delta * (2 * uniform01(s) - 1) / 2,
               p[0].t};
     }
-    if (mode == 2) p[i] = near_point(S, p[0], delta * 1e-3, s);
+    if (mode == 2) p[i] = near_point(S, p[0], delta, s);
+    if (mode == 3) p[i] = near_point(S, p[0], delta * 1e-3, s);
   }
   return p;
 }
