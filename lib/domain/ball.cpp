@@ -142,4 +142,9 @@ RealBall acosh(const RealBall &a) {
   return real_op([&](arb_ptr r) { arb_acosh(r, a.get(), kBallBits); });
 }
 
+ErrorDouble error_double(const RealBall &x) {
+  const double v = x.mid();
+  return {v, abs(x - RealBall(v)).upper()};
+}
+
 }  // namespace hdt::domain

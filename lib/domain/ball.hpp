@@ -10,6 +10,7 @@
 #include <arb.h>
 
 #include "domain/complex.hpp"
+#include "domain/error_double.hpp"
 
 namespace hdt::domain {
 
@@ -76,6 +77,11 @@ RealBall sinh(const RealBall &a);
 RealBall cosh(const RealBall &a);
 RealBall asinh(const RealBall &a);
 RealBall acosh(const RealBall &a);
+
+// The nearest double to the ball's centre, with the ball's distance from it
+// rounded up (infinite for a ball that is not finite): the double stages
+// (error_double.hpp) start from these.
+ErrorDouble error_double(const RealBall &x);
 
 // Decided by Arb: true only when every number of a is below every number of b.
 inline bool certainly_less(const RealBall &a, const RealBall &b) { return arb_lt(a.get(), b.get()); }

@@ -1,7 +1,8 @@
 // A double with a certified bound on its error: the pair (v, e) stands for a
 // real number x with |x - v| <= e. The polygon kernel's first stage
-// (polygon_kernel.hpp) runs its formulas on these; a sign is taken only when
-// |v| > e, so it is the sign of x.
+// (polygon_kernel.hpp) and the systole's tests of its cover (systole.cpp)
+// run their formulas on these; a sign is taken only when |v| > e, so it is
+// the sign of x.
 //
 // Why each bound holds, u = 2^-53 the unit roundoff of round-to-nearest:
 //   x + y: |x + y - fl(a + b)| <= e_a + e_b + |a + b - fl(a + b)|, and the

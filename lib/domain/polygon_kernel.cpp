@@ -105,13 +105,6 @@ bool one_frame(std::initializer_list<const PolygonPoint *> points) {
 
 PolygonPoint untranslated(const PolygonPoint &p) { return {p.x, p.y, kIdentityId}; }
 
-// The nearest double to the ball's centre, with the ball's distance from it
-// rounded up (infinite for a ball that is not finite).
-ErrorDouble error_double(const RealBall &x) {
-  const double v = x.mid();
-  return {v, abs(x - RealBall(v)).upper()};
-}
-
 }  // namespace
 
 PolygonKernel::PolygonKernel(const FundamentalPolygon &polygon, ElementTable &table)

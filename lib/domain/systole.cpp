@@ -10,7 +10,6 @@
 
 #include "domain/ball_isometry.hpp"
 #include "domain/base_point.hpp"
-#include "domain/bounded_double.hpp"
 #include "domain/hyperboloid_ball.hpp"
 #include "domain/polygon_cover.hpp"
 #include "exact/unsupported.hpp"
@@ -88,8 +87,8 @@ class Walk {
   std::vector<HyperboloidBall> normals_;
   double best_upper_ = INFINITY, L_ = INFINITY;  // >= the least cosh(l/2) met; >= its l
   std::vector<RealBall> reach_;                  // sinh(r_j + L) per cover ball
-  std::vector<BoundedDouble> reach_double_;      // the same, for the double tests
-  using Vector = std::array<BoundedDouble, 3>;
+  std::vector<ErrorDouble> reach_double_;        // the same, for the double tests
+  using Vector = std::array<ErrorDouble, 3>;
   std::vector<Vector> centres_;                  // the hyperboloid vector of each cover ball's centre
   std::vector<Vector> side_forms_;               // (-n0, n1, n2): <X, n> = side_forms_ . X
   double radius_ = 0;                            // >= d(c, v) for every vertex v: P is in B(c, radius_)
@@ -128,7 +127,7 @@ class Walk {
     for (const CoverBall &b : cover_)
       reach_.push_back(std::isfinite(b.radius) ? sinh(RealBall(b.radius) + RealBall(L_)) : RealBall(0.0));
     reach_double_.clear();
-    for (const RealBall &r : reach_) reach_double_.push_back(bounded(r));
+    for (const RealBall &r : reach_) reach_double_.push_back(error_double(r));
   }
 
   // The walk accepts about the area of the (L + 2r)-neighbourhood of P
@@ -174,10 +173,9 @@ class Walk {
     const std::array<RealBall, 9> L = h.lorentz();
     Vector column[3];
     for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i) column[j][std::size_t(i)] = bounded(L[std::size_t(3 * i + j)]);
+      for (int i = 0; i < 3; ++i) column[j][std::size_t(i)] = error_double(L[std::size_t(3 * i + j)]);
     std::vector<Vector> forms;
-    for (const Vector &n : side_forms_) forms.push_back({dot3(column[0].data(), n.data()), dot3(column[1].data(), n.data()),
-                                                         dot3(column[2].data(), n.data())});
+    for (const Vector &n : side_forms_) forms.push_back({dot(column[0], n), dot(column[1], n), dot(column[2], n)});
     return forms;
   }
 
@@ -186,17 +184,18 @@ class Walk {
   // one certainly beyond); else on Arb's balls, as without the doubles.
   bool node_beyond(const BallIsometry &h, const std::vector<Vector> &forms, int node) const {
     const Vector &X = centres_[std::size_t(node)];
-    const BoundedDouble &reach = reach_double_[std::size_t(node)];
+    const ErrorDouble &reach = reach_double_[std::size_t(node)];
     bool undecided = false;
     for (const Vector &m : forms) {
-      const BoundedDouble side = dot3(m.data(), X.data());
-      if (certainly_greater(side, reach)) return true;
-      undecided = undecided || !certainly_greater(reach, side);
+      const int beyond_reach = certain_sign(dot(m, X) - reach);
+      if (beyond_reach > 0) return true;
+      undecided = undecided || beyond_reach == 0;
     }
     return undecided && beyond(hyperboloid(h.apply(cover_[std::size_t(node)].centre)), reach_[std::size_t(node)]);
   }
 
-  static Vector vector_of(const HyperboloidBall &X) { return {bounded(X.x0), bounded(X.x1), bounded(X.x2)}; }
+  static Vector vector_of(const HyperboloidBall &X) { return {error_double(X.x0), error_double(X.x1), error_double(X.x2)}; }
+  static ErrorDouble dot(const Vector &a, const Vector &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
   // X is beyond `reach` (a sinh) of some side's half-plane.
   bool beyond(const HyperboloidBall &X, const RealBall &reach) const {
