@@ -5,6 +5,8 @@
 #include <initializer_list>
 #include <stdexcept>
 
+#include "exact/perturbation.hpp"
+
 namespace hdt::domain {
 
 namespace {
@@ -217,39 +219,24 @@ int PolygonKernel::in_circle_perturbed(const std::array<PolygonPoint, 4> &pt,
     return s;
   return perturbed_tie(pt, vertex, rows);
 }
-// The coefficients of eps_v, largest v first (see the header).
+// The coefficients of eps_v, largest v first (exact/perturbation.hpp).
 int PolygonKernel::perturbed_tie(const std::array<PolygonPoint, 4> &pt, const std::array<std::uint32_t, 4> &vertex,
                                  const std::array<ExactRow, 4> &rows) {
-  std::array<std::uint32_t, 4> order = vertex;
-  std::sort(order.begin(), order.end(), std::greater<std::uint32_t>());
-  for (int k = 0; k < 4; ++k) {
-    if (k > 0 && order[k] == order[k - 1]) continue;
-    int rows_of_vertex = 0, row = -1;
-    for (int r = 0; r < 4; ++r)
-      if (vertex[r] == order[k]) ++rows_of_vertex, row = r;
-    int s;
-    if (rows_of_vertex == 1) {
-      std::array<PolygonPoint, 3> others;
-      for (int i = 0, j = 0; i < 4; ++i)
-        if (i != row) others[j++] = pt[i];
-      s = (row % 2 == 1 ? 1 : -1) * orientation(others[0], others[1], others[2]);
-    } else {
-      Number coefficient(rows[0][0].parent(), 0);
-      for (int r = 0; r < 4; ++r) {
-        if (vertex[r] != order[k]) continue;
-        std::array<const ExactRow *, 3> o;
-        for (int i = 0, j = 0; i < 4; ++i)
-          if (i != r) o[j++] = &rows[i];
-        const Number term = rows[r][3] * det3<Number>(*o[0], *o[1], *o[2]);
-        coefficient = r % 2 == 1 ? coefficient + term : coefficient - term;
-      }
-      s = sign_of(coefficient);
-    }
-    if (s) return s;
-  }
-  throw std::logic_error(
-      "PolygonKernel::in_circle_perturbed: every perturbation coefficient vanishes (points on one geodesic, or "
-      "each vertex repeated)");
+  return exact::perturbed_sign(
+      vertex, [&](int i, int j, int k) { return orientation(pt[i], pt[j], pt[k]); },
+      [&](std::uint32_t v) {
+        Number coefficient(rows[0][0].parent(), 0);
+        for (int r = 0; r < 4; ++r) {
+          if (vertex[r] != v) continue;
+          std::array<const ExactRow *, 3> o;
+          for (int i = 0, j = 0; i < 4; ++i)
+            if (i != r) o[j++] = &rows[i];
+          const Number term = rows[r][3] * det3<Number>(*o[0], *o[1], *o[2]);
+          coefficient = r % 2 == 1 ? coefficient + term : coefficient - term;
+        }
+        return sign_of(coefficient);
+      },
+      "PolygonKernel::in_circle_perturbed");
 }
 
 int PolygonKernel::compare_distance(const PolygonPoint &p, const PolygonPoint &a, const PolygonPoint &b) {

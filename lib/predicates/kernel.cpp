@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "exact/perturbation.hpp"
 #include "predicates/stage_disk_exact.hpp"
 
 namespace hdt::predicates {
@@ -161,37 +162,19 @@ int Kernel::in_circle_perturbed_exact(const std::array<TranslatedPoint, 4> &pt,
 
 int Kernel::perturbed_tie(const std::array<TranslatedPoint, 4> &pt, const std::array<uint32_t, 4> &vertex,
                           const std::array<ExactStage::Row, 4> *rows) {
-  // Cocircular: the coefficient of eps_v is the sum over v's rows r of
-  // (-1)^(r+1) v_r3 cofactor(r, 3) of the exact matrix. For a vertex in one
-  // row that is (-1)^(r+1) times a positive multiple of the orientation of
-  // the other three points (the rows are positive multiples of (N, 1)): the
-  // whole pipeline, not the field.
-  std::array<uint32_t, 4> order = vertex;
-  std::sort(order.begin(), order.end(), std::greater<uint32_t>());
+  // Cocircular: the coefficients of exact/perturbation.hpp, a vertex in one
+  // row through the whole pipeline, not the field.
   std::array<ExactStage::Row, 4> computed;
-  for (int k = 0; k < 4; ++k) {
-    if (k > 0 && order[k] == order[k - 1]) continue;
-    int rows_of_vertex = 0, row = -1;
-    for (int r = 0; r < 4; ++r)
-      if (vertex[r] == order[k]) ++rows_of_vertex, row = r;
-    int s;
-    if (rows_of_vertex == 1) {
-      std::array<TranslatedPoint, 3> others;
-      for (int i = 0, j = 0; i < 4; ++i)
-        if (i != row) others[j++] = pt[i];
-      s = (row % 2 == 1 ? 1 : -1) * orientation(others[0], others[1], others[2]);
-    } else {
-      if (!rows) {
-        computed = exact_.rows(pt[0], pt[1], pt[2], pt[3]);
-        rows = &computed;
-      }
-      s = to_int(exact_.perturbation_coefficient(*rows, vertex, order[k]));
-    }
-    if (s) return s;
-  }
-  throw std::logic_error(
-      "in_circle_perturbed: every perturbation coefficient vanishes (points on one geodesic, or each vertex "
-      "repeated)");
+  return exact::perturbed_sign(
+      vertex, [&](int i, int j, int k) { return orientation(pt[i], pt[j], pt[k]); },
+      [&](uint32_t v) {
+        if (!rows) {
+          computed = exact_.rows(pt[0], pt[1], pt[2], pt[3]);
+          rows = &computed;
+        }
+        return to_int(exact_.perturbation_coefficient(*rows, vertex, v));
+      },
+      "in_circle_perturbed");
 }
 
 int Kernel::in_circle_perturbed(const std::array<TranslatedPoint, 4> &pt, const std::array<uint32_t, 4> &vertex,
