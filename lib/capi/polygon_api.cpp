@@ -174,7 +174,7 @@ HDT_API hdt_status hdt_surface_representative(const hdt_surface *s, double x, do
     if (!length) throw ApiError(HDT_EINVAL, "length must not be NULL");
     hdt::capi::check_disk_point(x, y);
     if (!s->reduction) s->reduction = std::make_unique<hdt::domain::Reduction>(p);
-    const hdt::domain::Representative r = (*s->reduction)(p.exact_point(x, y));
+    const hdt::domain::Representative r = (*s->reduction)(x, y);
     const hdt::group::Word letters(r.word.letters.begin(), r.word.letters.end());
     const hdt_status status = hdt::capi::copy_word(letters, word, capacity, length);
     if (rx) *rx = static_cast<double>(r.point.re);

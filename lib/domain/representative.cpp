@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "domain/ball.hpp"
 #include "domain/base_point.hpp"
 #include "domain/klein.hpp"
 
@@ -16,7 +17,28 @@ struct Reduction::Walk {
 };
 
 Reduction::Reduction(const FundamentalPolygon &P)
-    : P_(P), klein_(P), base_(base_point(P)), g_(pairing_elements(P)) {}
+    : P_(P), klein_(P), base_(base_point(P)), g_(pairing_elements(P)) {
+  // side_value(k, X) = Im(conj(d) (X - u)), d = u' - u for the side's Klein
+  // ends u, u': -d_im X_re + d_re X_im + (d_im u_re - d_re u_im), and
+  // X = 2z / (1 + |z|^2).
+  for (int k = 0; k < klein_.side_count(); ++k) {
+    const Complex &u = klein_.vertex(k), d = klein_.vertex(k + 1) - u;
+    const Number c0 = d.im * u.re - d.re * u.im;
+    side_forms_.push_back({error_double(ball_of(c0)), error_double(ball_of(-d.im)), error_double(ball_of(d.re))});
+  }
+}
+
+bool Reduction::certainly_interior(double x, double y) const {
+  const ErrorDouble X(x), Y(y), two(2.0), scale = ErrorDouble(1.0) + (X * X + Y * Y);
+  return std::all_of(side_forms_.begin(), side_forms_.end(), [&](const std::array<ErrorDouble, 3> &c) {
+    return certain_sign(c[0] * scale + two * (c[1] * X + c[2] * Y)) > 0;
+  });
+}
+
+Representative Reduction::operator()(double x, double y) const {
+  if (certainly_interior(x, y)) return {{{}, identity_element(base_.re)}, P_.exact_point(x, y), 0};
+  return (*this)(P_.exact_point(x, y));
+}
 
 // The least exit root among the sides whose f decreases from A to B; on a
 // tie the smaller index (see representative.hpp: either is right).

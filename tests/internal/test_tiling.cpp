@@ -259,6 +259,34 @@ void check_error_bounded_dots() {
   }
 }
 
+// The double overload of the reduction (its interior test in double) gives
+// what the exact one gives: random points, and points on the sides computed
+// in double (from the Klein chord, so within a few ulps of the line, on
+// either side of it), where the double test must not claim the interior.
+void check_double_reduction(const FundamentalPolygon &P, unsigned seed, const char *name) {
+  const Reduction reduce(P);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-0.95, 0.95);
+  std::vector<std::complex<double>> points;
+  for (int i = 0; i < 200; ++i) points.push_back({u(rng), u(rng)});
+  for (int k = 0; k < P.side_count(); ++k)
+    for (const double s : {0.5, 0.25, 1e-3}) {
+      const auto to_klein = [](std::complex<double> v) { return 2.0 * v / (1 + std::norm(v)); };
+      const std::complex<double> a = to_klein(P.vertex_double(k)), b = to_klein(P.vertex_double(k + 1));
+      const std::complex<double> x = a + s * (b - a);
+      points.push_back(x / (1 + std::sqrt(1 - std::norm(x))));
+    }
+  int inside = 0;
+  for (const std::complex<double> &z : points) {
+    if (std::norm(z) >= 1) continue;
+    const Representative fast = reduce(z.real(), z.imag()), exact = reduce(P.exact_point(z.real(), z.imag()));
+    ck_assert_msg(fast.word.letters == exact.word.letters, "%s: (%.17g, %.17g)", name, z.real(), z.imag());
+    ck_assert_msg(fast.point == exact.point && fast.word.element == exact.word.element, "%s", name);
+    inside += exact.word.letters.empty();
+  }
+  ck_assert_msg(inside > 10, "%s: only %d points inside", name, inside);
+}
+
 }  // namespace
 
 START_TEST(equal_maps_have_equal_elements) {
@@ -413,6 +441,13 @@ START_TEST(random_points_reduce_into_the_fundamental_set) {
 }
 END_TEST
 
+START_TEST(the_double_reduction_agrees_with_the_exact_one) {
+  check_double_reduction(bolza(), 5, "Bolza");
+  check_double_reduction(random_octagon(3), 6, "octagon 3");
+  check_double_reduction(genus_3_12_gon(), 7, "genus 3");
+}
+END_TEST
+
 // A vertex goes to its cycle's smallest vertex; a point inside side k to
 // itself when k < paired(k), else onto the paired side.
 void check_boundary(const FundamentalPolygon &P, const char *what) {
@@ -482,6 +517,7 @@ int main() {
     tcase_add_test(tc, random_octagon_neighbours_share_a_vertex);
     tcase_add_test(tc, decagon_has_31_neighbours);
     tcase_add_test(tc, random_points_reduce_into_the_fundamental_set);
+    tcase_add_test(tc, the_double_reduction_agrees_with_the_exact_one);
     tcase_add_test(tc, boundary_points_go_to_the_included_copy);
     tcase_add_test(tc, images_reduce_back);
     tcase_add_test(tc, bolza_systole);
