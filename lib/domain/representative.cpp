@@ -1,9 +1,9 @@
 #include "domain/representative.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
-#include "domain/ball.hpp"
 #include "domain/base_point.hpp"
 #include "domain/klein.hpp"
 
@@ -17,27 +17,17 @@ struct Reduction::Walk {
 };
 
 Reduction::Reduction(const FundamentalPolygon &P)
-    : P_(P), klein_(P), base_(base_point(P)), g_(pairing_elements(P)) {
-  // side_value(k, X) = Im(conj(d) (X - u)), d = u' - u for the side's Klein
-  // ends u, u': -d_im X_re + d_re X_im + (d_im u_re - d_re u_im), and
-  // X = 2z / (1 + |z|^2).
-  for (int k = 0; k < klein_.side_count(); ++k) {
-    const Complex &u = klein_.vertex(k), d = klein_.vertex(k + 1) - u;
-    const Number c0 = d.im * u.re - d.re * u.im;
-    side_forms_.push_back({error_double(ball_of(c0)), error_double(ball_of(-d.im)), error_double(ball_of(d.re))});
-  }
-}
-
-bool Reduction::certainly_interior(double x, double y) const {
-  const ErrorDouble X(x), Y(y), two(2.0), scale = ErrorDouble(1.0) + (X * X + Y * Y);
-  return std::all_of(side_forms_.begin(), side_forms_.end(), [&](const std::array<ErrorDouble, 3> &c) {
-    return certain_sign(c[0] * scale + two * (c[1] * X + c[2] * Y)) > 0;
-  });
-}
+    : P_(P), klein_(P), base_(base_point(P)), g_(pairing_elements(P)), floating_(P, base_) {}
 
 Representative Reduction::operator()(double x, double y) const {
-  if (certainly_interior(x, y)) return {{{}, identity_element(base_.re)}, P_.exact_point(x, y), 0};
-  return (*this)(P_.exact_point(x, y));
+  const std::optional<std::vector<int>> applied = floating_.pairings_applied(x, y);
+  if (!applied) return (*this)(P_.exact_point(x, y));
+  // The exact walk's pull-backs, without its exact decisions.
+  Complex to = P_.exact_point(x, y);
+  Element t = identity_element(base_.re);
+  for (const int k : *applied) to = g_[std::size_t(k)].apply(to), t = g_[std::size_t(k)] * t;
+  std::vector<int> letters(applied->rbegin(), applied->rend());
+  return {{std::move(letters), std::move(t)}, std::move(to), applied->size()};
 }
 
 // The least exit root among the sides whose f decreases from A to B; on a

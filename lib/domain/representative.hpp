@@ -36,11 +36,10 @@
 // v_{paired(v)+1}, until the cycle's smallest vertex.
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <vector>
 
-#include "domain/error_double.hpp"
+#include "domain/floating_walk.hpp"
 #include "domain/fundamental_polygon.hpp"
 #include "domain/klein_polygon.hpp"
 #include "domain/word.hpp"
@@ -58,9 +57,10 @@ class Reduction {
   explicit Reduction(const FundamentalPolygon &P);
   // z in the open unit disk (std::domain_error otherwise).
   Representative operator()(const Complex &z) const;
-  // The same for the point x + iy; a point certainly inside P (decided in
-  // double with a certified error bound, error_double.hpp) is its own
-  // representative at once, with no exact arithmetic but its conversion.
+  // The same for the point x + iy: the walk's decisions taken in double
+  // where their certified bounds allow (floating_walk.hpp), else exactly;
+  // the same result either way. A point certainly inside P is its own
+  // representative, with no exact arithmetic but its conversion.
   Representative operator()(double x, double y) const;
 
  private:
@@ -69,11 +69,7 @@ class Reduction {
   KleinPolygon klein_;
   Complex base_;
   std::vector<Element> g_;
-  // Per side, (c0, c1, c2) with (1 + |z|^2) side_value(k, klein(z)) =
-  // c0 (1 + |z|^2) + 2 (c1 x + c2 y): positive exactly left of the side.
-  std::vector<std::array<ErrorDouble, 3>> side_forms_;
-
-  bool certainly_interior(double x, double y) const;
+  FloatingWalk floating_;
 
   int exit_side(const Complex &from, const Complex &to) const;  // -1: `to` is in P
   void pull_back(Walk &w, int k) const;                         // by g_k

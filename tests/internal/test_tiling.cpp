@@ -16,7 +16,9 @@
 
 #include "domain/ball_isometry.hpp"
 #include "domain/error_double.hpp"
+#include "domain/base_point.hpp"
 #include "domain/element.hpp"
+#include "domain/floating_walk.hpp"
 #include "domain/hyperboloid_ball.hpp"
 #include "domain/fundamental_polygon.hpp"
 #include "domain/neighbours.hpp"
@@ -259,32 +261,40 @@ void check_error_bounded_dots() {
   }
 }
 
-// The double overload of the reduction (its interior test in double) gives
-// what the exact one gives: random points, and points on the sides computed
-// in double (from the Klein chord, so within a few ulps of the line, on
-// either side of it), where the double test must not claim the interior.
+// The double overload of the reduction (floating_walk.hpp) gives what the
+// exact one gives: random points out to 1 - |z| = 1e-4, points on the sides
+// computed in double (from the Klein chord, so within a few ulps of the
+// line, on either side of it), and points on the rays from the base point 0
+// through P's vertices (segments through a vertex: the tie of two exit
+// sides). The walk in double must decide most of them, or it is not tested.
 void check_double_reduction(const FundamentalPolygon &P, unsigned seed, const char *name) {
   const Reduction reduce(P);
+  const FloatingWalk floating(P, base_point(P));
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-0.95, 0.95);
+  std::uniform_real_distribution<double> u(0, 1);
   std::vector<std::complex<double>> points;
-  for (int i = 0; i < 200; ++i) points.push_back({u(rng), u(rng)});
-  for (int k = 0; k < P.side_count(); ++k)
+  for (int i = 0; i < 300; ++i) points.push_back(std::polar(1 - std::pow(10.0, -4 * u(rng)), 2 * M_PI * u(rng)));
+  const auto to_klein = [](std::complex<double> v) { return 2.0 * v / (1 + std::norm(v)); };
+  for (int k = 0; k < P.side_count(); ++k) {
     for (const double s : {0.5, 0.25, 1e-3}) {
-      const auto to_klein = [](std::complex<double> v) { return 2.0 * v / (1 + std::norm(v)); };
       const std::complex<double> a = to_klein(P.vertex_double(k)), b = to_klein(P.vertex_double(k + 1));
       const std::complex<double> x = a + s * (b - a);
       points.push_back(x / (1 + std::sqrt(1 - std::norm(x))));
     }
-  int inside = 0;
+    for (const double r : {1.0, 1.3, 1.6}) points.push_back(r * P.vertex_double(k));
+  }
+  int decided = 0, walked = 0;
   for (const std::complex<double> &z : points) {
     if (std::norm(z) >= 1) continue;
     const Representative fast = reduce(z.real(), z.imag()), exact = reduce(P.exact_point(z.real(), z.imag()));
     ck_assert_msg(fast.word.letters == exact.word.letters, "%s: (%.17g, %.17g)", name, z.real(), z.imag());
     ck_assert_msg(fast.point == exact.point && fast.word.element == exact.word.element, "%s", name);
-    inside += exact.word.letters.empty();
+    const auto applied = floating.pairings_applied(z.real(), z.imag());
+    decided += bool(applied);
+    walked += applied && !applied->empty();
   }
-  ck_assert_msg(inside > 10, "%s: only %d points inside", name, inside);
+  ck_assert_msg(decided > 250 && walked > 200, "%s: the walk in double decided %d points, %d outside P", name, decided,
+                walked);
 }
 
 }  // namespace
