@@ -74,6 +74,7 @@ CITED_RUNS = [
     ("refine_bench", ["--genus", "2"], "hdt.h at hdt_refine and hdt_epsilon_net; docs/refinement.md"),
     ("words_bench", ["--genus", "1024"],
      "hdt.h at HDT_GENUS_MAX and HDT_WORD_MAX_LENGTH (the linear pass, the first call of a genus)"),
+    ("surface_bench", [], "docs/polygons.md (the systole's cost)"),
 ]
 # Figures measured once, by a command this script does not rerun (too long
 # here, or a driver that is not a program of bench/): (figure, where it was
@@ -582,6 +583,8 @@ def method(w, args, cgal, sizes):
     w("| `bench/near_circle_bench.c` | points 1e-15 from the unit circle (`bench/near_circle_points.h`) against "
       "points uniform in F_g: insertion, validation, save and load |")
     w("| `bench/predicates_bench.cpp` | the predicates alone: filtered and forced through the exact field |")
+    w("| `bench/surface_bench.c` | polygon surfaces: the exact checks of `hdt_surface_random_symmetric`'s octagons "
+      "and decagons, and their certified systole |")
     w("")
     sizes_text = ", ".join(f"10^{len(str(n)) - 1}" if str(n).strip("0") == "1" else str(n) for n in sizes)
     w(f"- **Points.** All programs draw from one generator, `bench/uniform_points.h` (splitmix64, seed "
