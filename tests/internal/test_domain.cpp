@@ -154,6 +154,15 @@ START_TEST(regular_12_gon_of_genus_3) {
 }
 END_TEST
 
+START_TEST(regular_12_gon_with_the_commutator_pairing) {
+  const FundamentalPolygon P(genus_3_commutator_12_gon());
+  ck_assert_int_eq(P.genus(), 3);
+  ck_assert_uint_eq(P.cycles().size(), 1);
+  ck_assert_uint_eq(P.cycles()[0].size(), 12);
+  check_gauss_bonnet(P, "genus 3, commutators");
+}
+END_TEST
+
 // The 4 pi 12-gon's pairings (built here as FundamentalPolygon builds them)
 // compose to the identity around its cycle: only the turn count refuses it.
 START_TEST(a_4_pi_cycle_composes_to_the_identity) {
@@ -266,6 +275,7 @@ int main() {
     tcase_add_test(tc, bolza_octagon_in_a_number_field);
     tcase_add_test(tc, bolza_octagon_with_the_commutator_pairing);
     tcase_add_test(tc, regular_12_gon_of_genus_3);
+    tcase_add_test(tc, regular_12_gon_with_the_commutator_pairing);
     tcase_add_test(tc, a_4_pi_cycle_composes_to_the_identity);
     tcase_add_test(tc, refusals_name_the_reason);
     tcase_add_test(tc, turn_counting_tells_4_pi_from_2_pi);

@@ -45,6 +45,15 @@ inline PolygonText genus_3_12_gon() {
   return regular_12_gon("b^4-3", "b", "1.316+/-0.01", "1/4*b^3+1/4*b", "1/4*b^3-1/4*b", "1/2*b");
 }
 
+// The same 12-gon with the pairing a1 b1 a1^-1 b1^-1 a2 b2 a2^-1 b2^-1 a3 b3
+// a3^-1 b3^-1 (side 4j <-> 4j + 2, 4j + 1 <-> 4j + 3): still one cycle of
+// twelve vertices, whose angles pi/6 sum to 2 pi, so genus 3 again.
+inline PolygonText genus_3_commutator_12_gon() {
+  PolygonText t = genus_3_12_gon();
+  t.paired = {2, 3, 0, 1, 6, 7, 4, 5, 10, 11, 8, 9};
+  return t;
+}
+
 // p/d as a Number in lowest terms (e-antic needs them).
 inline Number q(long p, long d) {
   mpq_class r(p, d);

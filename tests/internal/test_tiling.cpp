@@ -411,6 +411,15 @@ START_TEST(genus_3_systole) {
 }
 END_TEST
 
+START_TEST(commutator_12_gon_systole_and_neighbours) {
+  const FundamentalPolygon P(test::genus_3_commutator_12_gon());
+  check_against_brute_force(P, "genus 3, commutator pairing");
+  ck_assert_uint_eq(neighbours(P).size(), expected_neighbour_count(P));
+  check_neighbour_set(P, "genus 3, commutators");
+  check_random_points(P, 50, 9, "genus 3, commutators");
+}
+END_TEST
+
 START_TEST(commutator_bolza_systole) {
   const FundamentalPolygon P = bolza("2 3 0 1 6 7 4 5");
   check_against_brute_force(P, "Bolza, commutator pairing");
@@ -533,6 +542,7 @@ int main() {
     tcase_add_test(tc, bolza_systole);
     tcase_add_test(tc, genus_3_systole);
     tcase_add_test(tc, commutator_bolza_systole);
+    tcase_add_test(tc, commutator_12_gon_systole_and_neighbours);
     tcase_add_test(tc, random_octagon_systoles);
     tcase_add_test(tc, decagon_systoles);
   });
