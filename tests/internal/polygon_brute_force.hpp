@@ -130,8 +130,11 @@ R in_circle_det(const C &a, const C &b, const C &c, const C &d) {
 
 class PolygonBruteForce {
  public:
-  PolygonBruteForce(const FundamentalPolygon &P, const std::vector<std::complex<double>> &z, double r)
-      : P_(P), z_(z), r_(r), lock_(P.field() != nullptr) {
+  // exact_only: every orientation and in-circle sign in K(i), for tests of
+  // the exact stage (the radius test stays Arb's).
+  PolygonBruteForce(const FundamentalPolygon &P, const std::vector<std::complex<double>> &z, double r,
+                    bool exact_only = false)
+      : P_(P), z_(z), r_(r), exact_only_(exact_only), lock_(P.field() != nullptr) {
     out_.table = std::make_unique<ElementTable>(P.vertex(0).re);
   }
 
@@ -157,6 +160,7 @@ class PolygonBruteForce {
   const FundamentalPolygon &P_;
   std::vector<std::complex<double>> z_;
   double r_;
+  bool exact_only_;
   FieldLock lock_;
   OracleResult out_;
   std::vector<Complex> exact_z_;
@@ -242,13 +246,15 @@ class PolygonBruteForce {
   }
 
   int orientation(const Image &a, const Image &b, const Image &c) {
-    const int s = oracle_detail::ball_sign(oracle_detail::cross<RealBall>(ball(a), ball(b), ball(c)));
+    const int s = exact_only_ ? 2 : oracle_detail::ball_sign(oracle_detail::cross<RealBall>(ball(a), ball(b), ball(c)));
     if (s != 2) return s;
     ++out_.exact_signs;
     return oracle_detail::exact_sign(oracle_detail::cross<Number>(exact(a), exact(b), exact(c)));
   }
   int in_circle(const Image &a, const Image &b, const Image &c, const Image &d) {
-    const int s = oracle_detail::ball_sign(oracle_detail::in_circle_det<RealBall>(ball(a), ball(b), ball(c), ball(d)));
+    const int s = exact_only_ ? 2
+                              : oracle_detail::ball_sign(
+                                    oracle_detail::in_circle_det<RealBall>(ball(a), ball(b), ball(c), ball(d)));
     if (s != 2) return s;
     ++out_.exact_signs;
     return oracle_detail::exact_sign(oracle_detail::in_circle_det<Number>(exact(a), exact(b), exact(c), exact(d)));
@@ -355,8 +361,8 @@ class PolygonBruteForce {
 
 // The oracle: the points z (each in P's fundamental set), the radius bound r.
 inline OracleResult polygon_delaunay(const FundamentalPolygon &P, const std::vector<std::complex<double>> &z,
-                                     double r) {
-  return PolygonBruteForce(P, z, r).run();
+                                     double r, bool exact_only = false) {
+  return PolygonBruteForce(P, z, r, exact_only).run();
 }
 
 }  // namespace hdt::domain::test

@@ -173,13 +173,22 @@ void check_polygon(const FundamentalPolygon &P, const char *name, int n, double 
 // The built-in F_2 has v_k at angle (2k+1) pi/8, radius sqrt(cos(pi/4)) =
 // 2^{-1/4}: the vertices of test_polygons.hpp's Bolza octagon, no
 // rotation; its side s_k (v_{k-1} to v_k) is the polygon's side k - 1, and
-// both pair opposite sides.
+// its generator g_k (s_{k+4} onto s_k) the polygon's pairing(k - 1): the
+// same group, compared as canonical matrices [[1, b], [c, d]].
 START_TEST(bolza_vertices_are_the_built_in_ones) {
   const FundamentalPolygon P = bolza();
   hdt::mesh::Triangulation t = hdt::dummies::new_triangulation(2);
+  FieldLock lock(true);
+  auto d = [](const Complex &e) { return Point(static_cast<double>(e.re), static_cast<double>(e.im)); };
   for (int k = 0; k < 8; ++k) {
     const auto v = hdt::surface::vertex(t.surface().presentation(), k);
     ck_assert(std::abs(P.vertex_double(k) - Point(v.re, v.im)) < 1e-15);
+    const auto &g = t.table().moebius(t.table().intern(hdt::group::Word{k}));
+    const Point a(g.a.re, g.a.im), b(g.b.re, g.b.im);
+    const Element e(P.pairing((k + 7) % 8));
+    const Moebius &m = e.matrix();
+    ck_assert(std::abs(d(m.b) - b / a) < 1e-12 && std::abs(d(m.c) - std::conj(b) / a) < 1e-12 &&
+              std::abs(d(m.d) - std::conj(a) / a) < 1e-12);
   }
 }
 END_TEST
@@ -221,6 +230,38 @@ END_TEST
 START_TEST(regular_12_gon_of_genus_3) { check_polygon(FundamentalPolygon(genus_3_12_gon()), "12-gon", 60, 0.94, 1.2, 6); }
 END_TEST
 
+// Four points on one circle about 0 and none inside it: the circle of
+// three of them is empty but for the fourth on it, which only the exact
+// stage can tell (the balls of exact doubles hold 0 exactly).
+START_TEST(cocircular_points_are_degenerate) {
+  const FundamentalPolygon P = bolza();
+  std::vector<Point> z{{0.25, 0}, {0, 0.25}, {-0.25, 0}, {0, -0.25}};
+  for (const Point &p : random_points(P, 120, 0.85, 9))
+    if (std::abs(p) > 0.35 && z.size() < 50) z.push_back(p);
+  const OracleResult R = polygon_delaunay(P, z, 1.0);
+  print("cocircular", R, int(z.size()));
+  ck_assert(R.status == OracleStatus::degenerate);
+  ck_assert_uint_eq(R.faces.size(), 0);
+  ck_assert_uint_gt(R.exact_signs, 0);
+}
+END_TEST
+
+// Every sign exact: the same faces as the staged run, on a rational
+// octagon (the seed random_rational_octagon finds) and on the Bolza
+// octagon's field.
+START_TEST(exact_signs_give_the_same_faces) {
+  for (const FundamentalPolygon &P : {random_octagon(153), bolza()}) {
+    const std::vector<Point> z = random_points(P, 40, 0.87, 10);
+    const OracleResult staged = polygon_delaunay(P, z, 1.0), exact = polygon_delaunay(P, z, 1.0, true);
+    print("staged", staged, 40);
+    print("exact", exact, 40);
+    ck_assert(staged.status == OracleStatus::complete && exact.status == OracleStatus::complete);
+    ck_assert_uint_gt(exact.exact_signs, exact.candidates);
+    compare_keys(oracle_keys(staged), oracle_keys(exact));
+  }
+}
+END_TEST
+
 // Three points on M_2 have no Delaunay faces of circumradius <= 1; 60 points
 // have faces larger than 0.2: both are failures, with no faces.
 START_TEST(too_sparse_or_too_small_fails) {
@@ -244,5 +285,7 @@ int main() {
     tcase_add_test(tc, random_rational_octagon);
     tcase_add_test(tc, regular_12_gon_of_genus_3);
     tcase_add_test(tc, too_sparse_or_too_small_fails);
+    tcase_add_test(tc, cocircular_points_are_degenerate);
+    tcase_add_test(tc, exact_signs_give_the_same_faces);
   });
 }
