@@ -22,15 +22,17 @@
 // d(z_i, h c) > 2r + R_P). A face at z_i of circumradius rho <= r has its
 // corners, and every point strictly inside its circle, within 2 rho <= 2r
 // of z_i: in h(P) for an h of (1), so in S_i.
-// (3) Candidates (z_i, a, b), a, b in S_i, counterclockwise; a face when its
+// (3) Candidates (z_i, a, b), a, b in S_i (so within 2r of z_i, and of each
+// other once the radius is proved <= r), counterclockwise; a face when its
 // circle is proved a circle of radius <= r (tanh rho = 2R / (1 - |U|^2 + R^2)
 // for the Euclidean centre U and radius R) and no point of S_i lies
 // strictly inside. Every sign is Arb's (kBallBits) where it decides, else
 // exact in K(i); doubles only order the search and sum the areas. A point
 // exactly on the circle of an otherwise empty candidate is a degeneracy,
-// reported as such. A candidate of radius > r is dropped, face or not: what
-// is kept is a true face, and the completeness check below says whether
-// all were found.
+// reported as such. What is kept is a true face: its circle is empty of
+// S_i, so by (2) of the whole orbit. A candidate of radius > r is dropped,
+// face or not (its circle may hold images not searched); the completeness
+// check below says whether all faces were found.
 // (4) Each surface face is found three times, once with each corner at the
 // identity. Kept: the rotation whose vertex indices (v0, v1, v2) are
 // lexicographically least; with all three indices equal, the one whose
@@ -43,7 +45,7 @@
 // second check. Either failing means r was too small or the points too few
 // for a triangulation: the result is a failure, never partial success.
 //
-// Ball-versus-Euclid orientation: three points on a circle inside the disk
+// Orientation: three points on a circle inside the disk
 // are in the same cyclic order hyperbolically and Euclidean-ly, so the
 // Euclidean orientation of the disk points is the hyperbolic one for every
 // face kept (a candidate whose circle is not a circle is dropped anyway).
@@ -142,6 +144,7 @@ class PolygonBruteForce {
     for (const auto &p : z_) exact_z_.push_back(P_.exact_point(p.real(), p.imag()));
     for (const Complex &e : exact_z_) ball_z_.push_back(ball_of(e));
     find_tiles();
+    make_images();
     std::vector<OracleFace> lifts;
     for (int i = 0; i < int(z_.size()) && !degenerate_; ++i) faces_at(i, near_images(i), &lifts);
     if (degenerate_) return finish(OracleStatus::degenerate, why_);
@@ -153,7 +156,7 @@ class PolygonBruteForce {
 
  private:
   struct Image {
-    int tile, j;  // tiles_[tile](z_j)
+    int tile, j;  // out_.tiles[tile](z_j)
     double dist;  // search order only
   };
 
@@ -206,6 +209,10 @@ class PolygonBruteForce {
         if (seen.insert(n).second) queue.push(n);
       }
     }
+  }
+
+  // Every tile's images of the points: balls, and their centres as doubles.
+  void make_images() {
     for (const ElementId h : out_.tiles) {
       image_ball_.emplace_back();
       image_double_.emplace_back();
