@@ -64,6 +64,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <vector>
 
@@ -163,7 +164,9 @@ class PolygonKernel {
   std::vector<std::array<Number, 3>> side_normal_;  // R_{v_k} x R_{v_{k+1}}, first three columns
   std::vector<std::array<RealBall, 3>> side_normal_ball_;
   std::vector<std::array<ErrorDouble, 3>> side_normal_double_;
-  std::vector<DoubleIsometry> doubles_;  // by element id, as far as computed
+  // By element id, as far as computed; a deque, so that a reference handed
+  // out stays valid while a later id grows it (same_point holds two).
+  std::deque<DoubleIsometry> doubles_;
   // The last large_circumdisk threshold, in the polygon's field, and its ball.
   std::optional<Number> threshold_given_, threshold_;
   RealBall threshold_ball_;
