@@ -4,10 +4,6 @@ namespace hdt::domain {
 
 ComplexBall BallIsometry::apply(const ComplexBall &z) const { return (a * z + b) / (conj(b) * z + conj(a)); }
 
-// [[A, B], [C, D]] = lambda [[a, b], [conj b, conj a]] with lambda^2 = AD - BC;
-// either root of it gives the same map. A ball across the negative axis
-// (Arb's branch cut) would make the root's ball wide, so there the root is
-// taken as i sqrt(-det).
 std::array<RealBall, 9> BallIsometry::lorentz() const {
   const ComplexBall c = a * conj(b), d = a * b, p = a * a, q = b * b;
   const RealBall two(2.0);
@@ -16,6 +12,10 @@ std::array<RealBall, 9> BallIsometry::lorentz() const {
           two * imag(d),       imag(p) + imag(q),      real(p) - real(q)};
 }
 
+// [[A, B], [C, D]] = lambda [[a, b], [conj b, conj a]] with lambda^2 = AD - BC;
+// either root of it gives the same map. A ball across the negative axis
+// (Arb's branch cut) would make the root's ball wide, so there the root is
+// taken as i sqrt(-det).
 BallIsometry ball_isometry(const Moebius &m) {
   const ComplexBall A = ball_of(m.a), B = ball_of(m.b), C = ball_of(m.c), D = ball_of(m.d);
   const ComplexBall det = A * D - B * C;

@@ -34,12 +34,12 @@ ErrorDouble FloatingWalk::scale(const Point &w) {
   return (w.n.re * w.n.re + w.n.im * w.n.im) + (w.d.re * w.d.re + w.d.im * w.d.im);
 }
 
-ErrorDouble FloatingWalk::side(int k, const Point &w) const {
+ErrorDouble FloatingWalk::side(int k, const Point &w, const ErrorDouble &s_w) const {
   const std::array<ErrorDouble, 3> &c = side_forms_[std::size_t(k)];
   // n conj(d) = (n_re d_re + n_im d_im) + i (n_im d_re - n_re d_im)
   const ErrorDouble re = w.n.re * w.d.re + w.n.im * w.d.im, im = w.n.im * w.d.re - w.n.re * w.d.im;
   const ErrorDouble two(2.0);
-  return c[0] * scale(w) + two * (c[1] * re + c[2] * im);
+  return c[0] * s_w + two * (c[1] * re + c[2] * im);
 }
 
 FloatingWalk::Point FloatingWalk::moved(int k, const Point &w) const {
@@ -55,8 +55,9 @@ FloatingWalk::Point FloatingWalk::moved(int k, const Point &w) const {
 
 bool FloatingWalk::certainly_interior(double x, double y) const {
   const Point z{{ErrorDouble(x), ErrorDouble(y)}, {ErrorDouble(1.0), ErrorDouble(0.0)}};
+  const ErrorDouble s_z = scale(z);
   for (int k = 0; k < int(side_forms_.size()); ++k)
-    if (certain_sign(side(k, z)) <= 0) return false;
+    if (certain_sign(side(k, z, s_z)) <= 0) return false;
   return true;
 }
 
@@ -66,11 +67,11 @@ std::optional<int> FloatingWalk::exit_side(const Point &A, const Point &B) const
   int best = -1;
   ErrorDouble best_a, best_b;
   for (int k = 0; k < int(side_forms_.size()); ++k) {
-    const ErrorDouble fb = side(k, B);
+    const ErrorDouble fb = side(k, B, sB);
     const int sign_b = certain_sign(fb);
     if (sign_b == 0) return std::nullopt;  // B near side k's line: the exact walk decides
     inside = inside && sign_b > 0;
-    const ErrorDouble a = side(k, A) * sB, b = fb * sA;
+    const ErrorDouble a = side(k, A, sA) * sB, b = fb * sA;
     const int decreasing = certain_sign(a - b);
     if (decreasing == 0) return std::nullopt;
     if (decreasing < 0) continue;

@@ -56,7 +56,8 @@ class FloatingWalk {
   std::vector<Isometry> g_;                             // the pairings, SU(1,1)
   Point base_;
 
-  ErrorDouble side(int k, const Point &w) const;  // s_w f_k(klein(w))
+  // s_w f_k(klein(w)), given s_w = scale(w) (computed once a point).
+  ErrorDouble side(int k, const Point &w, const ErrorDouble &s_w) const;
   static ErrorDouble scale(const Point &w);       // s_w
   Point moved(int k, const Point &w) const;       // g_k(w)
   // The exit side of the segment from A to B (-1: B certainly inside P),
