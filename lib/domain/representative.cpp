@@ -30,6 +30,12 @@ Representative Reduction::operator()(double x, double y) const {
   return {{std::move(letters), std::move(t)}, std::move(to), applied->size()};
 }
 
+std::vector<int> Reduction::pairings_applied(double x, double y) const {
+  if (std::optional<std::vector<int>> applied = floating_.pairings_applied(x, y)) return std::move(*applied);
+  const std::vector<int> letters = (*this)(P_.exact_point(x, y)).word.letters;
+  return {letters.rbegin(), letters.rend()};
+}
+
 // The least exit root among the sides whose f decreases from A to B; on a
 // tie the smaller index (see representative.hpp: either is right).
 int Reduction::exit_side(const Complex &from, const Complex &to) const {

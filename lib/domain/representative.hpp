@@ -62,6 +62,11 @@ class Reduction {
   // the same result either way. A point certainly inside P is its own
   // representative, with no exact arithmetic but its conversion.
   Representative operator()(double x, double y) const;
+  // Only the walk's pairings for x + iy, first first (the word's letters
+  // reversed): in double where the floating walk decides, with no exact
+  // arithmetic at all then, else from the exact walk. x + iy must lie in
+  // the open disk.
+  std::vector<int> pairings_applied(double x, double y) const;
 
  private:
   struct Walk;

@@ -1,0 +1,85 @@
+#include "domain/polygon_surface.hpp"
+
+#include <gmpxx.h>
+#include <mpfr.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include "domain/ball.hpp"
+#include "domain/real_bounds.hpp"
+#include "domain/word.hpp"
+
+namespace hdt::domain {
+
+namespace {
+
+// Whether x + iy lies in the open unit disk, exactly: x^2 + y^2 in double
+// is within 3 ulps of the exact sum, so only a point within that of the
+// circle pays the rational test.
+bool in_open_disk(double x, double y) {
+  if (!std::isfinite(x) || !std::isfinite(y)) return false;
+  const double r2 = x * x + y * y;
+  if (r2 < 1 - 0x1p-50) return true;
+  if (r2 > 1 + 0x1p-50) return false;
+  const mpq_class qx(x), qy(y);
+  return qx * qx + qy * qy < 1;
+}
+
+// sqrt(q) rounded down to a double, as an exact rational.
+mpq_class sqrt_below(const mpq_class &q) {
+  mpfr_t m;
+  mpfr_init2(m, 53);
+  mpfr_set_q(m, q.get_mpq_t(), MPFR_RNDD);
+  mpfr_sqrt(m, m, MPFR_RNDD);
+  mpq_class r(mpfr_get_d(m, MPFR_RNDD));
+  mpfr_clear(m);
+  r.canonicalize();
+  return r;
+}
+
+}  // namespace
+
+PolygonSurface::PolygonSurface(FundamentalPolygon polygon)
+    : polygon_(std::move(polygon)),
+      table_(polygon_.vertex(0).re),
+      kernel_(polygon_, table_),
+      reduction_(polygon_) {
+  for (const Element &g : pairing_elements(polygon_)) pairings_.push_back(table_.intern(g));
+}
+
+ElementId PolygonSurface::home(double x, double y) {
+  if (!in_open_disk(x, y)) throw std::domain_error("domain::PolygonSurface: a point outside the open unit disk");
+  ElementId h = kIdentityId;
+  for (const int k : reduction_.pairings_applied(x, y)) h = table_.compose(pairing(k), h);
+  return h;
+}
+
+std::complex<double> PolygonSurface::image(ElementId h, double x, double y) const {
+  const BallIsometry &U = table_.ball(h);
+  const std::complex<double> a(real(U.a).mid(), imag(U.a).mid()), b(real(U.b).mid(), imag(U.b).mid());
+  const std::complex<double> z(x, y);
+  return (a * z + b) / (std::conj(b) * z + std::conj(a));
+}
+
+const Systole &PolygonSurface::systole() {
+  if (!systole_) systole_ = domain::systole(polygon_);
+  return *systole_;
+}
+
+// cosh^2(sys / 4) = (1 + cosh(sys / 2)) / 2 and cosh(sys / 2) = sqrt(C) for
+// the systole's exact C = cosh^2(sys / 2): with s <= sqrt(C) (s >= 0 and
+// s^2 <= C, checked exactly), k = (1 + s) / 2 is the bound.
+const Number &PolygonSurface::quarter_systole_cosh2_below() {
+  if (threshold_) return *threshold_;
+  const Number &C = systole().cosh2_half;
+  mpq_class s = sqrt_below(rational_below(C));
+  if (s < 0 || Number(C.parent(), mpq_class(s * s)) > C)
+    throw std::logic_error("domain::PolygonSurface: a square root bound that does not hold");
+  if (s < 1) s = 1;  // cosh >= 1: keeps k >= 1, still a lower bound
+  threshold_ = Number(C.parent(), mpq_class((1 + s) / 2));
+  return *threshold_;
+}
+
+}  // namespace hdt::domain

@@ -1,0 +1,72 @@
+// A surface given by a fundamental polygon, as a triangulation of it sees
+// the surface: the polygon, its group elements interned as ids, the exact
+// predicates on points (x, y, id), the reduction of a point into the polygon
+// as an id, and the systole's threshold for the faces. One object, so that
+// the mesh and the dummy construction share one table of ids (an id means
+// the same element to both) and one kernel (its caches are warm for both).
+//
+// The role of surface::Surface for M_g: ids play the part of TranslationIds
+// (0 is the identity, compose and inverse are cached), a point's home is
+// the id h with h(x + iy) in P's fundamental set (representative.hpp).
+//
+// One thread at a time; the caller holds the field lock (field_lock.hpp) on
+// a surface over a number field.
+#pragma once
+
+#include <complex>
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "domain/element_table.hpp"
+#include "domain/fundamental_polygon.hpp"
+#include "domain/polygon_kernel.hpp"
+#include "domain/representative.hpp"
+#include "domain/systole.hpp"
+
+namespace hdt::domain {
+
+class PolygonSurface {
+ public:
+  explicit PolygonSurface(FundamentalPolygon polygon);
+  PolygonSurface(const PolygonSurface &) = delete;
+  PolygonSurface &operator=(const PolygonSurface &) = delete;
+
+  const FundamentalPolygon &polygon() const { return polygon_; }
+  int genus() const { return polygon_.genus(); }
+  ElementTable &table() { return table_; }
+  PolygonKernel &kernel() { return kernel_; }
+
+  // The id of the pairing g_k of side k.
+  ElementId pairing(int k) const { return pairings_.at(std::size_t(k)); }
+
+  // The home of the point x + iy of the open disk: the id of the element h
+  // that Reduction finds, h(x + iy) in the fundamental set. The walk's
+  // pairings composed as ids (cached products), so a point the floating
+  // walk decides costs no exact multiplication. Throws std::domain_error
+  // outside the open disk.
+  ElementId home(double x, double y);
+
+  // h(x + iy) in double, from h's SU(1,1) ball (about 1e-15 relative: for
+  // the walk's starting points and pictures, never for a decision).
+  std::complex<double> image(ElementId h, double x, double y) const;
+
+  // The systole, certified (systole.hpp), computed on first use.
+  const Systole &systole();
+  // A rational k with 1 <= k <= cosh^2(sys / 4), for large_circumdisk: a
+  // face of which it answers -1 has circumdiameter below sys / 2, the
+  // paper's condition on the dummy points (a lower bound of the threshold
+  // only ever calls a small face large, never the converse).
+  const Number &quarter_systole_cosh2_below();
+
+ private:
+  FundamentalPolygon polygon_;
+  ElementTable table_;
+  PolygonKernel kernel_;
+  Reduction reduction_;
+  std::vector<ElementId> pairings_;
+  std::optional<Systole> systole_;
+  std::optional<Number> threshold_;
+};
+
+}  // namespace hdt::domain
