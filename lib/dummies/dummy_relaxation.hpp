@@ -14,7 +14,10 @@
 #include <vector>
 
 namespace hdt::mesh {
-class Triangulation;
+template <class Geometry>
+class BasicTriangulation;
+class MgGeometry;
+using Triangulation = BasicTriangulation<MgGeometry>;
 }
 
 namespace hdt::dummies {

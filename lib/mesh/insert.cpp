@@ -8,8 +8,8 @@
 #include <string>
 
 #include "exact/unsupported.hpp"
+#include "mesh/polygon_triangulation.hpp"
 #include "mesh/triangulation.hpp"
-#include "predicates/representative.hpp"
 
 namespace hdt::mesh {
 
@@ -36,7 +36,8 @@ void grow_for(Vector &v, std::size_t k) {
 
 }  // namespace
 
-bool Triangulation::met_vertex(uint32_t v) {
+template <class Geometry>
+bool BasicTriangulation<Geometry>::met_vertex(uint32_t v) {
   last_vertex_ = v;
   if (!dummy_[v]) return false;
   dummy_[v] = false;  // the user's point is this dummy: it stays, as theirs
@@ -45,7 +46,8 @@ bool Triangulation::met_vertex(uint32_t v) {
   return true;
 }
 
-uint32_t Triangulation::vertex_at(const Walk &at) const {
+template <class Geometry>
+uint32_t BasicTriangulation<Geometry>::vertex_at(const Walk &at) const {
   // On the lines of two edges means at their common corner, exactly.
   if (at.zero_edges == 0 || (at.zero_edges & (at.zero_edges - 1)) == 0) return kNone;
   for (int i = 0; i < 3; ++i)
@@ -53,17 +55,19 @@ uint32_t Triangulation::vertex_at(const Walk &at) const {
   throw std::logic_error("a point on all three edge lines of a face");
 }
 
-Triangulation::Inserted Triangulation::insert(double x, double y) {
-  const predicates::Representative r = predicates::representative(*kernel_, x, y);
-  HomeImageScope image(*this, x, y, r.translation);
+template <class Geometry>
+typename BasicTriangulation<Geometry>::Inserted BasicTriangulation<Geometry>::insert(double x, double y) {
+  const TranslationId home = geometry_->home(x, y);
+  HomeImageScope image(*geometry_, x, y, home);
   const std::size_t before = vertices_.size();
-  jump_near(x, y, r.translation);
-  const Inserted result = insert_walked(x, y, r.translation, walk_from_hint({x, y, r.translation, -1}));
+  jump_near(x, y, home);
+  const Inserted result = insert_walked(x, y, home, walk_from_hint({x, y, home, -1}));
   if (vertices_.size() > before) image.keep();
   return result;
 }
 
-Triangulation::Inserted Triangulation::insert_in_circle(double x, double y, uint32_t face,
+template <class Geometry>
+typename BasicTriangulation<Geometry>::Inserted BasicTriangulation<Geometry>::insert_in_circle(double x, double y, uint32_t face,
                                                         std::vector<uint32_t> *created) {
   if (face >= faces_.size()) throw std::invalid_argument("insert_in_circle: face " + std::to_string(face) + " is unknown");
   const Face &F = faces_[face];
@@ -74,15 +78,16 @@ Triangulation::Inserted Triangulation::insert_in_circle(double x, double y, uint
   // else (a rounded circumcentre on the circle or beyond it) is refused
   // before anything changes: refinement leaves that face.
   if (kernel_->in_circle(corner(F, 0), corner(F, 1), corner(F, 2), q) <= 0) return {kNone, false};
-  const predicates::Representative r = predicates::representative(*kernel_, x, y);
-  HomeImageScope image(*this, x, y, r.translation);
-  const uint32_t v = insert_located(x, y, r.translation, false, {face, 0, 0});
+  const TranslationId home = geometry_->home(x, y);
+  HomeImageScope image(*geometry_, x, y, home);
+  const uint32_t v = insert_located(x, y, home, false, {face, 0, 0});
   image.keep();
   created->assign(scratch_.new_ids.begin(), scratch_.new_ids.end());
   return {v, false};
 }
 
-Triangulation::Inserted Triangulation::insert_walked(double x, double y, TranslationId home, const Walk &at) {
+template <class Geometry>
+typename BasicTriangulation<Geometry>::Inserted BasicTriangulation<Geometry>::insert_walked(double x, double y, TranslationId home, const Walk &at) {
   const uint32_t existing = vertex_at(at);
   if (existing != kNone) {
     return {existing, !met_vertex(existing)};
@@ -90,8 +95,9 @@ Triangulation::Inserted Triangulation::insert_walked(double x, double y, Transla
   return {insert_located(x, y, home, false, at), false};
 }
 
-uint32_t Triangulation::insert_located(double x, double y, TranslationId home, bool dummy, const Walk &at) {
-  group::TranslationTable &T = table();
+template <class Geometry>
+uint32_t BasicTriangulation<Geometry>::insert_located(double x, double y, TranslationId home, bool dummy, const Walk &at) {
+  auto &T = table();
   const auto id = uint32_t(vertices_.size());
   if (id == kNone) throw exact::Unsupported("too many vertices");
   scratch_.old_faces.clear();
@@ -236,7 +242,8 @@ void order_by_round(std::vector<Item> &items, uint32_t rounds) {
 
 }  // namespace
 
-void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out, const Progress *progress) {
+template <class Geometry>
+void BasicTriangulation<Geometry>::insert_many(const double *xy, std::size_t n, uint32_t *out, const Progress *progress) {
   // Check every point first: a bad one rejects the call before any change.
   // The points are copied in Hilbert order of their representatives (reading
   // the caller's array in that order would miss the cache at every point),
@@ -257,7 +264,7 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out, 
     const double x = xy[2 * i], y = xy[2 * i + 1];
     TranslationId home;
     try {
-      home = predicates::representative(*kernel_, x, y).translation;
+      home = geometry_->home(x, y);
     } catch (const std::domain_error &) {
       char text[128];  // %.17g: the coordinates read back as the same doubles
       std::snprintf(text, sizeof text, "point %zu (%.17g, %.17g) is not a finite point of the open unit disk", i, x, y);
@@ -265,7 +272,7 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out, 
     }
     double rx = x, ry = y;
     if (home != 0) {
-      const auto z = table().moebius(home).apply({x, y});
+      const auto z = geometry_->quick_image(x, y, home);
       rx = z.re, ry = z.im;
     }
     order[i] = {hilbert_index(grid(rx), grid(ry)), uint32_t(i), x, y, home, brio_round(i, last)};
@@ -291,7 +298,7 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out, 
   for (const Item &item : order) {
     const double x = item.x, y = item.y;
     const TranslationId home = item.home;
-    HomeImageScope image(*this, x, y, home);
+    HomeImageScope image(*geometry_, x, y, home);
     if (jump_each || item.round != round) round = item.round, jump_near(x, y, home, jump_each);
     const Walk at = walk_from_hint({x, y, home, -1});
     uint32_t v = vertex_at(at);
@@ -306,5 +313,23 @@ void Triangulation::insert_many(const double *xy, std::size_t n, uint32_t *out, 
   }
   ticker.finish(n);
 }
+
+
+template bool Triangulation::met_vertex(uint32_t);
+template uint32_t Triangulation::vertex_at(const Walk &) const;
+template Triangulation::Inserted Triangulation::insert(double, double);
+template Triangulation::Inserted Triangulation::insert_in_circle(double, double, uint32_t, std::vector<uint32_t> *);
+template Triangulation::Inserted Triangulation::insert_walked(double, double, TranslationId, const Walk &);
+template uint32_t Triangulation::insert_located(double, double, TranslationId, bool, const Walk &);
+template void Triangulation::insert_many(const double *, std::size_t, uint32_t *, const Progress *);
+
+template bool PolygonTriangulation::met_vertex(uint32_t);
+template uint32_t PolygonTriangulation::vertex_at(const Walk &) const;
+template PolygonTriangulation::Inserted PolygonTriangulation::insert(double, double);
+template PolygonTriangulation::Inserted PolygonTriangulation::insert_in_circle(double, double, uint32_t,
+                                                                               std::vector<uint32_t> *);
+template PolygonTriangulation::Inserted PolygonTriangulation::insert_walked(double, double, TranslationId, const Walk &);
+template uint32_t PolygonTriangulation::insert_located(double, double, TranslationId, bool, const Walk &);
+template void PolygonTriangulation::insert_many(const double *, std::size_t, uint32_t *, const Progress *);
 
 }  // namespace hdt::mesh

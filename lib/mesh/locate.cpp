@@ -6,17 +6,17 @@
 #include <new>
 #include <stdexcept>
 
-#include "group/word_matrix.hpp"
-#include "predicates/representative.hpp"
+#include "mesh/polygon_triangulation.hpp"
 #include "mesh/triangulation.hpp"
 
 namespace hdt::mesh {
 
-Triangulation::Hint Triangulation::hint() const {
+template <class Geometry>
+typename BasicTriangulation<Geometry>::Hint BasicTriangulation<Geometry>::hint() const {
   if (last_vertex_ < vertices_.size() && vertices_[last_vertex_].alive()) {
     const Vertex &u = vertices_[last_vertex_];
     const Face &F = faces_[u.face];
-    group::TranslationTable &T = table();
+    auto &T = table();
     const TranslationId t = F.t[corner_of(F, last_vertex_)];
     return {u.face, u.home == 0 ? t : T.compose(t, T.inverse(u.home))};
   }
@@ -38,13 +38,13 @@ std::size_t grid_cell(const group::Complex<double> &q, uint32_t side, double hal
 
 }  // namespace
 
-group::Complex<double> Triangulation::at_home(double x, double y, TranslationId home) const {
-  if (home == 0) return {x, y};
-  if (const surface::HomeImage *image = surface_->home_image(x, y)) return image->rounded;
-  return table().moebius(home).apply({x, y});
+template <class Geometry>
+group::Complex<double> BasicTriangulation<Geometry>::at_home(double x, double y, TranslationId home) const {
+  return geometry_->image(x, y, home);
 }
 
-void Triangulation::build_grid() const {
+template <class Geometry>
+void BasicTriangulation<Geometry>::build_grid() const {
   // Built aside and then swapped in: the grid is a cache, and a query must
   // not fail for it. Without memory for it, the jumps sample at random
   // until the vertices double again.
@@ -71,12 +71,14 @@ void Triangulation::build_grid() const {
   grid_.swap(grid), grid_side_ = side, grid_half_ = half;
 }
 
-uint32_t Triangulation::grid_vertex(const group::Complex<double> &q) const {
+template <class Geometry>
+uint32_t BasicTriangulation<Geometry>::grid_vertex(const group::Complex<double> &q) const {
   if (vertices_.size() >= 2 * grid_built_) build_grid();
   return grid_side_ == 0 ? kNone : grid_[grid_cell(q, grid_side_, grid_half_)];
 }
 
-void Triangulation::jump_near(double x, double y, TranslationId home, bool grid) const {
+template <class Geometry>
+void BasicTriangulation<Geometry>::jump_near(double x, double y, TranslationId home, bool grid) const {
   // Jump and walk (Devroye, Mucke, Zhu): of the last vertex and about n^(1/3)
   // random ones, the walk starts at the one nearest to the query, so that
   // queries in no particular order walk about n^(1/4) faces instead of
@@ -113,8 +115,9 @@ void Triangulation::jump_near(double x, double y, TranslationId home, bool grid)
   if (best != kNone) last_vertex_ = best;
 }
 
-Triangulation::Walk Triangulation::walk(const TranslatedPoint &q, uint32_t start, TranslationId start_frame_inverse) const {
-  group::TranslationTable &T = table();
+template <class Geometry>
+typename BasicTriangulation<Geometry>::Walk BasicTriangulation<Geometry>::walk(const TranslatedPoint &q, uint32_t start, TranslationId start_frame_inverse) const {
+  auto &T = table();
   uint32_t f = start;
   TranslationId qt = T.compose(start_frame_inverse, q.translation);  // q in the canonical frame of f
   int entry = -1;  // the edge we came in by: q is on its inner side
@@ -145,22 +148,25 @@ Triangulation::Walk Triangulation::walk(const TranslatedPoint &q, uint32_t start
   throw std::logic_error("point location does not end: the triangulation is broken");
 }
 
-Triangulation::Located Triangulation::locate(double x, double y) const {
-  const predicates::Representative r = predicates::representative(*kernel_, x, y);
-  const HomeImageScope image(*this, x, y, r.translation);
-  jump_near(x, y, r.translation);
-  const Walk w = walk_from_hint({x, y, r.translation, -1});
+template <class Geometry>
+typename BasicTriangulation<Geometry>::Located BasicTriangulation<Geometry>::locate(double x, double y) const {
+  const TranslationId home = geometry_->home(x, y);
+  const HomeImageScope image(*geometry_, x, y, home);
+  jump_near(x, y, home);
+  const Walk w = walk_from_hint({x, y, home, -1});
   return {w.face, table().inverse(w.query)};
 }
 
-void Triangulation::check_live(uint32_t v) const {
+template <class Geometry>
+void BasicTriangulation<Geometry>::check_live(uint32_t v) const {
   if (!is_live(v)) throw std::invalid_argument("vertex " + std::to_string(v) + " is not a live vertex");
 }
 
-void Triangulation::star(uint32_t v, std::vector<StarFace> *out) const {
+template <class Geometry>
+void BasicTriangulation<Geometry>::star(uint32_t v, std::vector<StarFace> *out) const {
   check_live(v);
   const Vertex &u = vertices_[v];
-  group::TranslationTable &T = table();
+  auto &T = table();
   out->clear();
   uint32_t f = u.face;
   TranslationId frame = 0;
@@ -178,7 +184,8 @@ void Triangulation::star(uint32_t v, std::vector<StarFace> *out) const {
   if (frame != 0) throw std::logic_error("the star of vertex " + std::to_string(v) + " winds onto another copy");
 }
 
-void Triangulation::vertex_point(uint32_t v, double *x, double *y) const {
+template <class Geometry>
+void BasicTriangulation<Geometry>::vertex_point(uint32_t v, double *x, double *y) const {
   check_live(v);
   const Vertex &u = vertices_[v];
   if (u.home == 0) {
@@ -189,11 +196,12 @@ void Triangulation::vertex_point(uint32_t v, double *x, double *y) const {
     representatives_.resize(vertices_.size(), {std::numeric_limits<double>::quiet_NaN(), 0.0});
   group::Complex<double> &z = representatives_[v];
   // In multiprecision: near the unit circle a double Moebius map loses digits.
-  if (std::isnan(z.re)) z = group::accurate_image(surface_->presentation(), table().word(u.home), {u.x, u.y});
+  if (std::isnan(z.re)) z = geometry_->accurate_image(u.x, u.y, u.home);
   *x = z.re, *y = z.im;
 }
 
-void Triangulation::write_vertices(uint32_t *ids, double *xy, uint8_t *dummy) const {
+template <class Geometry>
+void BasicTriangulation<Geometry>::write_vertices(uint32_t *ids, double *xy, uint8_t *dummy) const {
   double x, y;
   if (xy)  // fills the cache of every representative away from F_g
     for (uint32_t v = 0; v < vertices_.size(); ++v)
@@ -213,8 +221,9 @@ void Triangulation::write_vertices(uint32_t *ids, double *xy, uint8_t *dummy) co
   }
 }
 
-void Triangulation::corner_translations(std::vector<std::pair<std::size_t, TranslationId>> *moved) const {
-  group::TranslationTable &T = table();
+template <class Geometry>
+void BasicTriangulation<Geometry>::corner_translations(std::vector<std::pair<std::size_t, TranslationId>> *moved) const {
+  auto &T = table();
   moved->clear();
   // Points given in F_g have the identity for home: then no corner moves,
   // which one pass over the vertices in order tells (where asking each
@@ -229,12 +238,13 @@ void Triangulation::corner_translations(std::vector<std::pair<std::size_t, Trans
     }
 }
 
-uint32_t Triangulation::nearest_vertex(double x, double y) const {
-  group::TranslationTable &T = table();
-  const predicates::Representative r = predicates::representative(*kernel_, x, y);
-  const HomeImageScope image(*this, x, y, r.translation);
-  jump_near(x, y, r.translation);
-  const Walk w = walk_from_hint({x, y, r.translation, -1});
+template <class Geometry>
+uint32_t BasicTriangulation<Geometry>::nearest_vertex(double x, double y) const {
+  auto &T = table();
+  const TranslationId home = geometry_->home(x, y);
+  const HomeImageScope image(*geometry_, x, y, home);
+  jump_near(x, y, home);
+  const Walk w = walk_from_hint({x, y, home, -1});
   const TranslatedPoint q{x, y, w.query, -1};  // the frame: w.face's canonical copy
   // Start at the nearest corner, then move to a nearer Delaunay neighbour
   // while there is one: a vertex none of whose neighbours is nearer has q
@@ -276,5 +286,34 @@ uint32_t Triangulation::nearest_vertex(double x, double y) const {
   }
   throw std::logic_error("nearest_vertex: the descent does not end");
 }
+
+
+template Triangulation::Hint Triangulation::hint() const;
+template group::Complex<double> Triangulation::at_home(double, double, TranslationId) const;
+template void Triangulation::build_grid() const;
+template uint32_t Triangulation::grid_vertex(const group::Complex<double> &) const;
+template void Triangulation::jump_near(double, double, TranslationId, bool) const;
+template Triangulation::Walk Triangulation::walk(const TranslatedPoint &, uint32_t, TranslationId) const;
+template Triangulation::Located Triangulation::locate(double, double) const;
+template void Triangulation::check_live(uint32_t) const;
+template void Triangulation::star(uint32_t, std::vector<StarFace> *) const;
+template void Triangulation::vertex_point(uint32_t, double *, double *) const;
+template void Triangulation::write_vertices(uint32_t *, double *, uint8_t *) const;
+template void Triangulation::corner_translations(std::vector<std::pair<std::size_t, TranslationId>> *) const;
+template uint32_t Triangulation::nearest_vertex(double, double) const;
+
+template PolygonTriangulation::Hint PolygonTriangulation::hint() const;
+template group::Complex<double> PolygonTriangulation::at_home(double, double, TranslationId) const;
+template void PolygonTriangulation::build_grid() const;
+template uint32_t PolygonTriangulation::grid_vertex(const group::Complex<double> &) const;
+template void PolygonTriangulation::jump_near(double, double, TranslationId, bool) const;
+template PolygonTriangulation::Walk PolygonTriangulation::walk(const TranslatedPoint &, uint32_t, TranslationId) const;
+template PolygonTriangulation::Located PolygonTriangulation::locate(double, double) const;
+template void PolygonTriangulation::check_live(uint32_t) const;
+template void PolygonTriangulation::star(uint32_t, std::vector<StarFace> *) const;
+template void PolygonTriangulation::vertex_point(uint32_t, double *, double *) const;
+template void PolygonTriangulation::write_vertices(uint32_t *, double *, uint8_t *) const;
+template void PolygonTriangulation::corner_translations(std::vector<std::pair<std::size_t, TranslationId>> *) const;
+template uint32_t PolygonTriangulation::nearest_vertex(double, double) const;
 
 }  // namespace hdt::mesh

@@ -32,9 +32,10 @@ bool repeats_a_vertex(const std::vector<HoleVertex> &polygon, std::vector<uint32
 
 }  // namespace
 
-bool Triangulation::remove(uint32_t v) {
+template <class Geometry>
+bool BasicTriangulation<Geometry>::remove(uint32_t v) {
   check_live(v);
-  group::TranslationTable &T = table();
+  auto &T = table();
   star(v, &scratch_.star);
   scratch_.old_faces.clear();
   scratch_.boundary.clear();
@@ -103,7 +104,8 @@ bool Triangulation::remove(uint32_t v) {
   return true;
 }
 
-std::size_t Triangulation::remove_dummies() {
+template <class Geometry>
+std::size_t BasicTriangulation<Geometry>::remove_dummies() {
   // Sweeps in id order until nothing changes. A removal can make room for
   // another only on the link of the removed vertex (whose stars changed), so
   // a dummy refused once is tried again only after that.
@@ -120,5 +122,9 @@ std::size_t Triangulation::remove_dummies() {
   }
   return dummies_;
 }
+
+
+template bool Triangulation::remove(uint32_t);
+template std::size_t Triangulation::remove_dummies();
 
 }  // namespace hdt::mesh

@@ -23,10 +23,11 @@ std::string face_name(std::size_t f) { return "face " + std::to_string(f); }
 
 }  // namespace
 
-Snapshot Triangulation::snapshot() const {
+template <class Geometry>
+Snapshot BasicTriangulation<Geometry>::snapshot() const {
   Snapshot s;
   s.genus = genus_;
-  const group::TranslationTable &T = table();
+  const auto &T = table();
   for (std::size_t id = T.neighbour_count(); id < T.size(); ++id) s.extra_words.push_back(T.word(TranslationId(id)));
   s.vertices = vertices_;
   s.dummy = dummy_;
@@ -40,7 +41,8 @@ Snapshot Triangulation::snapshot() const {
   return s;
 }
 
-Triangulation Triangulation::rebuild(Snapshot &s) {
+template <class Geometry>
+BasicTriangulation<Geometry> BasicTriangulation<Geometry>::rebuild(Snapshot &s) {
   using E = SnapshotError;
   const int g = s.genus;
   if (g < 2) throw E(E::kGenus, 0, "genus " + std::to_string(g) + " is not >= 2");
@@ -97,9 +99,9 @@ Triangulation Triangulation::rebuild(Snapshot &s) {
     throw E(E::kState, 0, "the last vertex " + std::to_string(s.last_vertex) + " is not a vertex id");
 
   // Then the surface: the sites and the words.
-  Triangulation t(g, Empty{});
+  BasicTriangulation t(g, Empty{});
   std::vector<double> sx(2 * g + 1), sy(2 * g + 1);
-  surface::register_q0_sites(*t.surface_, sx.data(), sy.data());
+  surface::register_q0_sites(t.geometry_->surface(), sx.data(), sy.data());
   // Vertices 1 .. 2g+1 are the kernel's exact sites v_0 and m_k: their
   // doubles must be the sites' roundings, at home in F_g.
   for (std::size_t v = 1; v < V && v <= std::size_t(2 * g + 1); ++v) {
@@ -143,8 +145,9 @@ Triangulation Triangulation::rebuild(Snapshot &s) {
   return t;
 }
 
-Triangulation Triangulation::restore(Snapshot &&s) {
-  Triangulation t = rebuild(s);
+template <class Geometry>
+BasicTriangulation<Geometry> BasicTriangulation<Geometry>::restore(Snapshot &&s) {
+  BasicTriangulation t = rebuild(s);
   const std::size_t ids = t.table().size();
   try {
     t.validate();
@@ -161,5 +164,10 @@ Triangulation Triangulation::restore(Snapshot &&s) {
   s.faces = std::move(t.faces_);
   return rebuild(s);
 }
+
+
+template Snapshot Triangulation::snapshot() const;
+template Triangulation Triangulation::rebuild(Snapshot &);
+template Triangulation Triangulation::restore(Snapshot &&);
 
 }  // namespace hdt::mesh

@@ -3,29 +3,33 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "mesh/polygon_triangulation.hpp"
 #include "mesh/triangulation.hpp"
 
 namespace hdt::mesh {
 
-int Triangulation::corner_of(const Face &f, uint32_t v) const {
+template <class Geometry>
+int BasicTriangulation<Geometry>::corner_of(const Face &f, uint32_t v) const {
   for (int i = 0; i < 3; ++i)
     if (f.v[i] == v) return i;
   throw std::logic_error("a face does not hold the vertex it should");
 }
 
-void Triangulation::ambiguous_twin() {
+template <class Geometry>
+void BasicTriangulation<Geometry>::ambiguous_twin() {
   throw std::logic_error("twin: two edges of a face's neighbour join the same vertices (not a simplicial complex)");
 }
 
 // One call of replace(): its steps, in order.
-class Triangulation::Replacement {
+template <class Geometry>
+class BasicTriangulation<Geometry>::Replacement {
   using Built = Scratch::Built;
   using HalfEdge = Scratch::HalfEdge;
   using OuterLink = Scratch::OuterLink;
   static uint64_t key(const Corner &c) { return Scratch::key(c); }
 
  public:
-  Replacement(Triangulation &t, const std::vector<uint32_t> &old, const std::vector<NewFace> &created,
+  Replacement(BasicTriangulation &t, const std::vector<uint32_t> &old, const std::vector<NewFace> &created,
               const std::vector<BoundaryEdge> &boundary)
       : t_(t),
         T_(t.table()),
@@ -221,8 +225,8 @@ class Triangulation::Replacement {
     if (t_.last_face_ >= faces.size()) t_.last_face_ = 0;
   }
 
-  Triangulation &t_;
-  group::TranslationTable &T_;
+  BasicTriangulation &t_;
+  typename Geometry::Table &T_;
   const std::vector<uint32_t> &old_;
   const NewFace *created_;
   const BoundaryEdge *boundary_;
@@ -232,10 +236,22 @@ class Triangulation::Replacement {
   int bits_ = 0;            // the edge table has 2^bits_ slots
 };
 
-void Triangulation::replace(const std::vector<uint32_t> &old, const std::vector<NewFace> &created,
+template <class Geometry>
+void BasicTriangulation<Geometry>::replace(const std::vector<uint32_t> &old, const std::vector<NewFace> &created,
                             const std::vector<BoundaryEdge> &boundary, std::vector<uint32_t> *ids) {
   Replacement(*this, old, created, boundary).run(ids);
   ++revision_;
 }
+
+
+template int Triangulation::corner_of(const Face &, uint32_t) const;
+template void Triangulation::ambiguous_twin();
+template void Triangulation::replace(const std::vector<uint32_t> &, const std::vector<NewFace> &,
+                                     const std::vector<BoundaryEdge> &, std::vector<uint32_t> *);
+
+template int PolygonTriangulation::corner_of(const Face &, uint32_t) const;
+template void PolygonTriangulation::ambiguous_twin();
+template void PolygonTriangulation::replace(const std::vector<uint32_t> &, const std::vector<NewFace> &,
+                                            const std::vector<BoundaryEdge> &, std::vector<uint32_t> *);
 
 }  // namespace hdt::mesh

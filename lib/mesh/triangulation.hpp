@@ -1,4 +1,6 @@
-// The Delaunay triangulation of a finite point set on M_g.
+// The Delaunay triangulation of a finite point set on a surface: M_g
+// (Triangulation, on MgGeometry), or a surface of the geometry G
+// (mg_geometry.hpp describes what G provides).
 //
 // Invariant between public calls: the stored faces form the Delaunay
 // triangulation (ties broken by the kernel's symbolic perturbation) of the
@@ -19,6 +21,7 @@
 
 #include "predicates/kernel.hpp"
 #include "mesh/dummy_template.hpp"
+#include "mesh/mg_geometry.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/progress.hpp"
 #include "mesh/scratch.hpp"
@@ -26,22 +29,30 @@
 
 namespace hdt::mesh {
 
-using predicates::Kernel;
 using predicates::TranslatedPoint;
 
-class Triangulation {
+template <class Geometry>
+class BasicTriangulation {
  public:
-  // The dummy set of the template (dummy_template.hpp) on a surface of its
-  // genus of its own.
-  explicit Triangulation(const DummyTemplate &dummies);
+  using Kernel = typename Geometry::Kernel;
+
+  // M_g: the dummy set of the template (dummy_template.hpp) on a surface of
+  // its genus of its own.
+  explicit BasicTriangulation(const DummyTemplate &dummies);
+  // The triangulation given, on the geometry given (faces as assemble.hpp
+  // makes them, each vertex's face set; dummy: per vertex). Nothing is
+  // checked: the caller runs validate(), the certificate, before use.
+  BasicTriangulation(std::unique_ptr<Geometry> geometry, std::vector<Vertex> vertices, std::vector<bool> dummy,
+                     std::vector<Face> faces);
 
   int genus() const { return genus_; }
   // The surface: presentation, translation table, sides, sites. A query may
   // add the ids of elements it meets to the translation table (a cache
   // that only grows; ids stay valid), hence a mutable surface.
-  surface::Surface &surface() const { return *surface_; }
-  group::TranslationTable &table() const { return surface_->table(); }
-  Kernel &kernel() { return *kernel_; }
+  typename Geometry::Surface &surface() const { return geometry_->surface(); }
+  typename Geometry::Table &table() const { return geometry_->table(); }
+  Kernel &kernel() { return geometry_->kernel(); }
+  Geometry &geometry() const { return *geometry_; }
   const std::vector<Vertex> &vertices() const { return vertices_; }
   const std::vector<Face> &faces() const { return faces_; }
   // The corner translations relative to the vertices' representatives
@@ -100,7 +111,7 @@ class Triangulation {
   // validate()) and throws SnapshotError naming the part at fault. It
   // takes the snapshot's vectors (no copy); s is left unspecified.
   Snapshot snapshot() const;
-  static Triangulation restore(Snapshot &&s);
+  static BasicTriangulation restore(Snapshot &&s);
 
   bool is_dummy(uint32_t v) const { return dummy_[v]; }
   // Whether v is the id of a vertex not removed.
@@ -108,8 +119,8 @@ class Triangulation {
   // Throws std::invalid_argument ("vertex v is not a live vertex") unless
   // is_live(v): the one check of every call that takes a vertex id.
   void check_live(uint32_t v) const;
-  // The surface's site of vertex v, or -1: sites 0 .. 2g are vertices 1 .. 2g+1.
-  int32_t site_of(uint32_t v) const { return v >= 1 && v <= uint32_t(2 * genus_ + 1) ? int32_t(v - 1) : -1; }
+  // The surface's site of vertex v, or -1 (M_g: sites 0 .. 2g are vertices 1 .. 2g+1).
+  int32_t site_of(uint32_t v) const { return geometry_->site_of(v); }
   TranslatedPoint point(uint32_t v, TranslationId t) const {
     const Vertex &u = vertices_[v];
     return {u.x, u.y, t, site_of(v)};
@@ -158,10 +169,10 @@ class Triangulation {
  private:
   friend class Editor;  // the dummy construction's edits (editor.hpp)
   struct Empty {};
-  Triangulation(int genus, Empty);  // no vertices: the dummy construction's start
+  BasicTriangulation(int genus, Empty);  // no vertices: the dummy construction's start
   // restore() without validate(), after the ranges are checked; moves the
   // vertices, flags and faces out of s.
-  static Triangulation rebuild(Snapshot &s);
+  static BasicTriangulation rebuild(Snapshot &s);
 
   // Replaces the faces `old` by `created` (given in one common frame),
   // linking them to each other and to the outer faces of `boundary`. The ids
@@ -191,23 +202,8 @@ class Triangulation {
   // double (from its home image when it has one: far from F_g the double
   // map loses the point's digits).
   group::Complex<double> at_home(double x, double y, TranslationId home) const;
-  // A query's home image (Kernel::add_home_image) for the query's length:
-  // kept when the point became a vertex, else given back.
-  class HomeImageScope {
-   public:
-    HomeImageScope(const Triangulation &t, double x, double y, TranslationId home)
-        : kernel_(*t.kernel_), x_(x), y_(y), added_(surface::far_from_domain(x, y, home) && kernel_.add_home_image(x, y, home)) {}
-    HomeImageScope(const HomeImageScope &) = delete;
-    ~HomeImageScope() {
-      if (added_ && !kept_) kernel_.forget_home_image(x_, y_);
-    }
-    void keep() { kept_ = true; }
-
-   private:
-    Kernel &kernel_;
-    double x_, y_;
-    bool added_, kept_ = false;
-  };
+  // A query's home image for the query's length (mg_geometry.hpp).
+  using HomeImageScope = typename Geometry::HomeImageScope;
   // The grid's vertex for the representative q (kNone if none), the grid
   // built first when the vertices have doubled since it was.
   uint32_t grid_vertex(const group::Complex<double> &q) const;
@@ -235,8 +231,10 @@ class Triangulation {
   }
 
   int genus_;
-  std::unique_ptr<surface::Surface> surface_;
-  std::unique_ptr<Kernel> kernel_;  // on *surface_
+  // The surface, its kernel and its translations, on the heap: the kernel
+  // refers to the surface, and a triangulation moves.
+  std::unique_ptr<Geometry> geometry_;
+  Kernel *kernel_;  // &geometry_->kernel(), the predicates' hot path
   std::vector<Vertex> vertices_;
   // vertex_point's results for vertices with home != 0, by id, filled on
   // first query (NaN: not computed yet). A vertex's point and home never
@@ -268,5 +266,8 @@ class Triangulation {
   mutable Scratch scratch_;
   class Replacement;  // replace()'s steps (topology.cpp)
 };
+
+// The triangulations of M_g.
+using Triangulation = BasicTriangulation<MgGeometry>;
 
 }  // namespace hdt::mesh

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "predicates/representative.hpp"
+#include "mesh/polygon_triangulation.hpp"
 #include "mesh/triangulation.hpp"
 
 namespace hdt::mesh {
@@ -32,8 +33,9 @@ constexpr uint32_t kAhead = 16;
 
 }  // namespace
 
-void Triangulation::validate() const {
-  group::TranslationTable &T = table();
+template <class Geometry>
+void BasicTriangulation<Geometry>::validate() const {
+  auto &T = table();
   const std::size_t F = faces_.size();
   std::size_t live = 0, dummies = 0;
   for (uint32_t v = 0; v < vertices_.size(); ++v)
@@ -102,8 +104,7 @@ void Triangulation::validate() const {
     // definition; they lie on side lines, where the test is exact and slow.)
     // A vertex at home in F_g (most) takes the double point's test, whose
     // first step is a disk inside F_g: insertion's, and a tenth the cost.
-    if (site_of(v) < 0 && (u.home == 0 ? predicates::representative(*kernel_, u.x, u.y).translation != 0
-                                       : predicates::representative(*kernel_, point(v, u.home)).translation != u.home))
+    if (site_of(v) < 0 && !geometry_->is_home(u.x, u.y, u.home))
       broken("vertex " + std::to_string(v) + " is not stored at its representative");
     star(v, &scratch_.star);
     corners += scratch_.star.size();
@@ -142,5 +143,10 @@ void Triangulation::validate() const {
   }
   if (corners != 3 * F) broken("some face corners are not in their vertex's star");
 }
+
+
+template void Triangulation::validate() const;
+
+template void PolygonTriangulation::validate() const;
 
 }  // namespace hdt::mesh

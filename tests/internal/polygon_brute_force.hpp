@@ -72,6 +72,8 @@
 #include "domain/element_table.hpp"
 #include "domain/field_lock.hpp"
 #include "domain/fundamental_polygon.hpp"
+#include "domain/representative.hpp"
+#include "random.hpp"
 
 namespace hdt::domain::test {
 
@@ -370,6 +372,26 @@ class PolygonBruteForce {
 inline OracleResult polygon_delaunay(const FundamentalPolygon &P, const std::vector<std::complex<double>> &z,
                                      double r, bool exact_only = false) {
   return PolygonBruteForce(P, z, r, exact_only).run();
+}
+
+// n random points of P's fundamental set, for the oracle's inputs: uniform
+// in the disk of radius `reach`, kept when the double point is in the set
+// (its representative is itself, reached with no crossing), so that no
+// rounding moves it out of P. (seed: splitmix64's state.)
+inline std::vector<std::complex<double>> fundamental_set_points(const FundamentalPolygon &P, int n, double reach,
+                                                                uint64_t seed) {
+  FieldLock lock(P.field() != nullptr);
+  const Reduction reduce(P);
+  std::vector<std::complex<double>> z;
+  uint64_t s = seed;
+  while (int(z.size()) < n) {
+    const double x = reach * (2 * uniform01(&s) - 1), y = reach * (2 * uniform01(&s) - 1);
+    if (x * x + y * y >= reach * reach) continue;
+    const Complex e = P.exact_point(x, y);
+    const Representative rep = reduce(e);
+    if (rep.crossings == 0 && rep.point == e) z.push_back({x, y});
+  }
+  return z;
 }
 
 }  // namespace hdt::domain::test

@@ -34,24 +34,6 @@ namespace {
 
 using Point = std::complex<double>;
 
-// n random points of P's fundamental set: uniform in the disk of radius
-// `reach`, kept when the double point is in the set (its representative is
-// itself, reached with no crossing), so that no rounding moves it out of P.
-std::vector<Point> random_points(const FundamentalPolygon &P, int n, double reach, uint64_t seed) {
-  FieldLock lock(P.field() != nullptr);
-  const Reduction reduce(P);
-  std::vector<Point> z;
-  uint64_t s = seed;
-  while (int(z.size()) < n) {
-    const double x = reach * (2 * uniform01(&s) - 1), y = reach * (2 * uniform01(&s) - 1);
-    if (x * x + y * y >= reach * reach) continue;
-    const Complex e = P.exact_point(x, y);
-    const Representative rep = reduce(e);
-    if (rep.crossings == 0 && rep.point == e) z.push_back({x, y});
-  }
-  return z;
-}
-
 double distance(Point a, Point b) {
   return std::acosh(1 + 2 * std::norm(a - b) / ((1 - std::norm(a)) * (1 - std::norm(b))));
 }
@@ -175,7 +157,7 @@ void check_with_kernel(const FundamentalPolygon &P, OracleResult &R, const std::
 }
 
 void check_polygon(const FundamentalPolygon &P, const char *name, int n, double reach, double r, uint64_t seed) {
-  const std::vector<Point> z = random_points(P, n, reach, seed);
+  const std::vector<Point> z = fundamental_set_points(P, n, reach, seed);
   OracleResult R = polygon_delaunay(P, z, r);
   print(name, R, n);
   ck_assert_msg(R.status == OracleStatus::complete, "%s: %s", name, R.why.c_str());
@@ -212,7 +194,7 @@ START_TEST(bolza_polygon_equals_the_built_in_m2) {
   const FundamentalPolygon P = bolza();
   std::size_t faces = 0;
   for (const auto &[n, seed] : {std::pair<int, uint64_t>{40, 1}, {60, 2}, {80, 3}}) {
-    const std::vector<Point> z = random_points(P, n, 0.85, seed);
+    const std::vector<Point> z = fundamental_set_points(P, n, 0.85, seed);
     const OracleResult R = polygon_delaunay(P, z, 1.0);
     print("bolza vs M_2", R, n);
     ck_assert_msg(R.status == OracleStatus::complete, "%s", R.why.c_str());
@@ -251,7 +233,7 @@ END_TEST
 START_TEST(cocircular_points_are_degenerate) {
   const FundamentalPolygon P = bolza();
   std::vector<Point> z{{0.25, 0}, {0, 0.25}, {-0.25, 0}, {0, -0.25}};
-  for (const Point &p : random_points(P, 120, 0.85, 9))
+  for (const Point &p : fundamental_set_points(P, 120, 0.85, 9))
     if (std::abs(p) > 0.35 && z.size() < 50) z.push_back(p);
   const OracleResult R = polygon_delaunay(P, z, 1.0);
   print("cocircular", R, int(z.size()));
@@ -266,7 +248,7 @@ END_TEST
 // octagon's field.
 START_TEST(exact_signs_give_the_same_faces) {
   for (const FundamentalPolygon &P : {random_octagon(153), bolza()}) {
-    const std::vector<Point> z = random_points(P, 40, 0.87, 10);
+    const std::vector<Point> z = fundamental_set_points(P, 40, 0.87, 10);
     const OracleResult staged = polygon_delaunay(P, z, 1.0), exact = polygon_delaunay(P, z, 1.0, true);
     print("staged", staged, 40);
     print("exact", exact, 40);
@@ -281,11 +263,11 @@ END_TEST
 // have faces larger than 0.2: both are failures, with no faces.
 START_TEST(too_sparse_or_too_small_fails) {
   const FundamentalPolygon P = bolza();
-  const OracleResult sparse = polygon_delaunay(P, random_points(P, 3, 0.85, 7), 1.0);
+  const OracleResult sparse = polygon_delaunay(P, fundamental_set_points(P, 3, 0.85, 7), 1.0);
   print("sparse", sparse, 3);
   ck_assert(sparse.status == OracleStatus::incomplete);
   ck_assert_uint_eq(sparse.faces.size(), 0);
-  const OracleResult small = polygon_delaunay(P, random_points(P, 60, 0.85, 8), 0.2);
+  const OracleResult small = polygon_delaunay(P, fundamental_set_points(P, 60, 0.85, 8), 0.2);
   print("small r", small, 60);
   ck_assert(small.status == OracleStatus::incomplete);
   ck_assert_uint_eq(small.faces.size(), 0);

@@ -1,0 +1,112 @@
+// A surface given by a fundamental polygon as the mesh sees it: the
+// interface of mg_geometry.hpp over domain::PolygonSurface, so that
+// BasicTriangulation<PolygonGeometry> runs the same walk, Bowyer-Watson
+// insertion, stars and validation as M_g's triangulations.
+//
+// Translation ids are the surface's element ids (ElementTable: 0 is the
+// identity, equal elements have equal ids), so the mesh's comparisons of
+// ids compare elements exactly. No vertex is an exact site (the points are
+// the user's doubles) and no home image is kept: the polygon kernel reads
+// every point through its element's SU(1,1) ball, as accurate far from P as
+// near it.
+//
+// The caller holds the field lock (domain/field_lock.hpp) on a polygon over
+// a number field, as for every use of the surface.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <utility>
+
+#include "domain/polygon_surface.hpp"
+#include "group/moebius.hpp"
+#include "predicates/translated_point.hpp"
+
+namespace hdt::mesh {
+
+using group::TranslationId;
+using predicates::TranslatedPoint;
+
+class PolygonGeometry {
+ public:
+  using Surface = domain::PolygonSurface;
+
+  // The mesh's predicates on translated points, by the polygon kernel; the
+  // circumdiameter test against sys/2 with the surface's certified
+  // threshold (a lower bound: a face it passes is certainly below sys/2).
+  class Kernel {
+   public:
+    explicit Kernel(Surface &s) : s_(s), k_(s.kernel()) {}
+    int orientation(const TranslatedPoint &a, const TranslatedPoint &b, const TranslatedPoint &c) {
+      return k_.orientation(p(a), p(b), p(c));
+    }
+    int in_circle(const TranslatedPoint &a, const TranslatedPoint &b, const TranslatedPoint &c,
+                  const TranslatedPoint &d) {
+      return k_.in_circle(p(a), p(b), p(c), p(d));
+    }
+    int in_circle_perturbed(const std::array<TranslatedPoint, 4> &q, const std::array<uint32_t, 4> &vertex) {
+      return k_.in_circle_perturbed({p(q[0]), p(q[1]), p(q[2]), p(q[3])}, vertex);
+    }
+    int compare_distance(const TranslatedPoint &q, const TranslatedPoint &a, const TranslatedPoint &b) {
+      return k_.compare_distance(p(q), p(a), p(b));
+    }
+    int large_circumdisk(const TranslatedPoint &a, const TranslatedPoint &b, const TranslatedPoint &c) {
+      return k_.large_circumdisk(p(a), p(b), p(c), s_.quarter_systole_cosh2_below());
+    }
+
+   private:
+    static domain::PolygonPoint p(const TranslatedPoint &q) { return {q.x, q.y, domain::ElementId(q.translation)}; }
+    Surface &s_;
+    domain::PolygonKernel &k_;
+  };
+
+  // The element table under the mesh's id type.
+  class Table {
+   public:
+    explicit Table(domain::ElementTable &t) : t_(t) {}
+    TranslationId compose(TranslationId a, TranslationId b) {
+      return TranslationId(t_.compose(domain::ElementId(a), domain::ElementId(b)));
+    }
+    TranslationId inverse(TranslationId a) { return TranslationId(t_.inverse(domain::ElementId(a))); }
+    std::size_t size() const { return t_.size(); }
+
+   private:
+    domain::ElementTable &t_;
+  };
+
+  explicit PolygonGeometry(domain::FundamentalPolygon polygon)
+      : surface_(std::move(polygon)), kernel_(surface_), table_(surface_.table()) {}
+  PolygonGeometry(const PolygonGeometry &) = delete;
+  PolygonGeometry &operator=(const PolygonGeometry &) = delete;
+
+  int genus() const { return surface_.genus(); }
+  Surface &surface() { return surface_; }
+  Kernel &kernel() { return kernel_; }
+  Table &table() { return table_; }
+
+  int32_t site_of(uint32_t) const { return -1; }
+  TranslationId home(double x, double y) { return TranslationId(surface_.home(x, y)); }
+  bool is_home(double x, double y, TranslationId h) { return home(x, y) == h; }
+  group::Complex<double> image(double x, double y, TranslationId h) {
+    if (h == 0) return {x, y};
+    const std::complex<double> w = surface_.image(domain::ElementId(h), x, y);
+    return {w.real(), w.imag()};
+  }
+  group::Complex<double> quick_image(double x, double y, TranslationId h) { return image(x, y, h); }
+  // For now the same double image: its rounded matrix loses a few digits
+  // for elements far from the identity, which only the values reported
+  // (vertex_point) would show, never a decision.
+  group::Complex<double> accurate_image(double x, double y, TranslationId h) { return image(x, y, h); }
+
+  struct HomeImageScope {
+    HomeImageScope(PolygonGeometry &, double, double, TranslationId) {}
+    void keep() {}
+  };
+
+ private:
+  Surface surface_;
+  Kernel kernel_;
+  Table table_;
+};
+
+}  // namespace hdt::mesh

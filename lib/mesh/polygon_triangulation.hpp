@@ -1,0 +1,15 @@
+// Triangulations of a surface given by a fundamental polygon: the mesh's
+// algorithms on PolygonGeometry (polygon_geometry.hpp). What they support so
+// far: building from given faces (assemble.hpp), insertion, location, the
+// nearest vertex, stars, vertices and validate(); removal, saving and the
+// dual's constructions are M_g's only.
+#pragma once
+
+#include "mesh/polygon_geometry.hpp"
+#include "mesh/triangulation.hpp"
+
+namespace hdt::mesh {
+
+using PolygonTriangulation = BasicTriangulation<PolygonGeometry>;
+
+}  // namespace hdt::mesh

@@ -1,0 +1,230 @@
+// The mesh's algorithms on a polygon surface (mesh/polygon_triangulation.hpp):
+// a triangulation assembled from the brute-force oracle's faces
+// (polygon_brute_force.hpp, which shares no predicate with the polygon
+// kernel) must validate; after Bowyer-Watson insertions, one at a time and
+// in a batch, its faces must be the oracle's on all the points, vertex for
+// vertex and element for element. Points given outside the polygon must be
+// reduced and inserted into a valid triangulation too, and located in a
+// face copy that holds them.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "domain/field_lock.hpp"
+#include "domain/random_octagon.hpp"
+#include "domain/systole.hpp"
+#include "mesh/assemble.hpp"
+#include "mesh/polygon_triangulation.hpp"
+
+extern "C" {
+#include <check.h>
+}
+
+#include "polygon_brute_force.hpp"
+#include "run_suite.hpp"
+#include "test_polygons.hpp"
+
+using namespace hdt::domain;
+using namespace hdt::domain::test;
+using hdt::mesh::PolygonGeometry;
+using hdt::mesh::PolygonTriangulation;
+using hdt::mesh::TranslationId;
+
+namespace {
+
+using Point = std::complex<double>;
+// A face: its vertices (point indices) in the rotation whose triple is least,
+// and the elements of its second and third corners relative to the first.
+using Key = std::tuple<std::array<int, 3>, TranslationId, TranslationId>;
+
+int least_rotation(const std::array<int, 3> &v) {
+  int best = 0;
+  for (int r = 1; r < 3; ++r)
+    if (std::array<int, 3>{v[r], v[(r + 1) % 3], v[(r + 2) % 3]} <
+        std::array<int, 3>{v[best], v[(best + 1) % 3], v[(best + 2) % 3]})
+      best = r;
+  return best;
+}
+
+// The oracle's faces with their elements interned in the mesh's table.
+std::vector<Key> oracle_keys(const OracleResult &R, PolygonTriangulation &t) {
+  std::vector<Key> keys;
+  auto id = [&](ElementId e) { return TranslationId(t.surface().table().intern(R.table->element(e))); };
+  for (const OracleFace &f : R.faces) {
+    ck_assert_int_eq(least_rotation(f.v), 0);
+    keys.emplace_back(f.v, id(f.t[1]), id(f.t[2]));
+  }
+  return keys;
+}
+
+// The mesh's faces, vertex ids mapped to point indices by index.
+std::vector<Key> mesh_keys(PolygonTriangulation &t, const std::vector<int> &index) {
+  std::vector<Key> keys;
+  auto &T = t.table();
+  for (const hdt::mesh::Face &f : t.faces()) {
+    std::array<int, 3> v;
+    for (int c = 0; c < 3; ++c) v[c] = index.at(f.v[c]);
+    const int r = least_rotation(v);
+    const TranslationId back = T.inverse(f.t[r]);
+    keys.emplace_back(std::array<int, 3>{v[r], v[(r + 1) % 3], v[(r + 2) % 3]}, T.compose(back, f.t[(r + 1) % 3]),
+                      T.compose(back, f.t[(r + 2) % 3]));
+  }
+  return keys;
+}
+
+void compare(std::vector<Key> a, std::vector<Key> b, const char *name) {
+  ck_assert_msg(a.size() == b.size(), "%s: %zu faces, the oracle %zu", name, a.size(), b.size());
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  for (std::size_t f = 0; f < a.size(); ++f) {
+    const auto &v = std::get<0>(a[f]), &w = std::get<0>(b[f]);
+    ck_assert_msg(a[f] == b[f], "%s: face %zu: (%d %d %d | %d %d), the oracle (%d %d %d | %d %d)", name, f, v[0], v[1],
+                  v[2], std::get<1>(a[f]), std::get<2>(a[f]), w[0], w[1], w[2], std::get<1>(b[f]), std::get<2>(b[f]));
+  }
+}
+
+// The triangulation of z from the oracle's faces, vertex i is z[i]; nothing
+// when the oracle cannot finish at radius r or a face has circumdiameter
+// sys/2 or more (the mesh's invariant, which the dummy points will give).
+std::optional<PolygonTriangulation> from_oracle(const FundamentalPolygon &P, const std::vector<Point> &z, double r) {
+  const OracleResult R = polygon_delaunay(P, z, r);
+  if (R.status != OracleStatus::complete) return std::nullopt;
+  auto geometry = std::make_unique<PolygonGeometry>(P);
+  ElementTable &table = geometry->surface().table();
+  std::vector<hdt::mesh::Vertex> vertices;
+  for (const Point &p : z) vertices.push_back({p.real(), p.imag(), 0, hdt::mesh::kNone});
+  std::vector<hdt::mesh::CornerFace> given;
+  for (const OracleFace &f : R.faces) {
+    hdt::mesh::CornerFace c;
+    for (int k = 0; k < 3; ++k)
+      c.v[k] = uint32_t(f.v[k]), c.t[k] = TranslationId(table.intern(R.table->element(f.t[k])));
+    given.push_back(c);
+  }
+  std::vector<hdt::mesh::Face> faces = hdt::mesh::assemble_faces(&vertices, given, geometry->table());
+  std::vector<bool> dummy(z.size(), false);
+  PolygonTriangulation t(std::move(geometry), std::move(vertices), std::move(dummy), std::move(faces));
+  try {
+    t.validate();
+  } catch (const std::logic_error &e) {
+    if (std::string(e.what()).find("circumdiameter") == std::string::npos) throw;
+    return std::nullopt;
+  }
+  return t;
+}
+
+// A quarter of the systole, rounded up: the largest circumradius the mesh
+// allows, so the oracle's search radius.
+double quarter_systole(const FundamentalPolygon &P) { return systole(P).length.hi / 4 * (1 + 1e-9); }
+
+// n0 points from the oracle (more while they leave a circle of diameter
+// sys/2 or more), then n1 more inserted (half one by one, half in one
+// batch), against the oracle on all of them.
+void check_insertion(const FundamentalPolygon &P, const char *name, int n0, int n1, double reach, uint64_t seed) {
+  const FieldLock lock(P.field() != nullptr);
+  const double r = quarter_systole(P);
+  std::vector<Point> z;
+  std::optional<PolygonTriangulation> start;
+  for (;; n0 += 30) {
+    ck_assert_int_lt(n0, 400);
+    z = fundamental_set_points(P, n0 + n1, reach, seed);
+    if ((start = from_oracle(P, {z.begin(), z.begin() + n0}, r))) break;
+  }
+  PolygonTriangulation &t = *start;
+  std::vector<int> index(static_cast<std::size_t>(n0));
+  for (int i = 0; i < n0; ++i) index[std::size_t(i)] = i;
+  const int single = n1 / 2;
+  for (int i = n0; i < n0 + single; ++i) {
+    const auto inserted = t.insert(z[std::size_t(i)].real(), z[std::size_t(i)].imag());
+    ck_assert(!inserted.existed);
+    ck_assert_uint_eq(inserted.vertex, index.size());
+    index.push_back(i);
+  }
+  std::vector<double> xy;
+  for (int i = n0 + single; i < n0 + n1; ++i) xy.insert(xy.end(), {z[std::size_t(i)].real(), z[std::size_t(i)].imag()});
+  std::vector<uint32_t> ids(std::size_t(n1 - single));
+  t.insert_many(xy.data(), ids.size(), ids.data());
+  index.resize(t.vertices().size(), -1);
+  for (std::size_t k = 0; k < ids.size(); ++k) index.at(ids[k]) = n0 + single + int(k);
+  t.validate();
+  ck_assert_uint_eq(t.vertex_count(), std::size_t(n0 + n1));
+  const OracleResult R = polygon_delaunay(P, z, r);
+  ck_assert_msg(R.status == OracleStatus::complete, "%s: oracle: %s", name, R.why.c_str());
+  compare(mesh_keys(t, index), oracle_keys(R, t), name);
+  std::printf("%s: %d + %d points, %zu faces as the oracle's, %zu elements\n", name, n0, n1, t.faces().size(),
+              t.surface().table().size());
+}
+
+}  // namespace
+
+START_TEST(bolza_octagon) { check_insertion(bolza(), "bolza", 60, 40, 0.85, 3); }
+END_TEST
+
+START_TEST(commutator_bolza) { check_insertion(bolza("2 3 0 1 6 7 4 5"), "commutator bolza", 120, 40, 0.85, 4); }
+END_TEST
+
+START_TEST(random_rational_octagon) {
+  for (uint64_t seed = 1;; ++seed) {
+    ck_assert_uint_lt(seed, 200);
+    const FundamentalPolygon P = random_octagon(seed);
+    double reach = 0;
+    for (int k = 0; k < 8; ++k) reach = std::max(reach, std::abs(P.vertex_double(k)));
+    if (reach > 0.9) continue;
+    check_insertion(P, "random octagon", 190, 40, reach, 5);
+    return;
+  }
+}
+END_TEST
+
+// Points anywhere in the disk, most outside P: reduced to their homes,
+// inserted, each then located in a face copy that holds it (no corner on
+// the wrong side of an edge) and found as a vertex by nearest_vertex.
+START_TEST(points_outside_the_polygon) {
+  const FundamentalPolygon P = bolza();
+  const FieldLock lock(true);
+  std::optional<PolygonTriangulation> start = from_oracle(P, fundamental_set_points(P, 60, 0.85, 3), quarter_systole(P));
+  ck_assert(start);
+  PolygonTriangulation &t = *start;
+  uint64_t s = 11;
+  std::vector<double> xy;
+  for (int i = 0; i < 60; ++i) {
+    const double rho = 0.98 * std::sqrt(uniform01(&s)), a = 2 * M_PI * uniform01(&s);
+    xy.insert(xy.end(), {rho * std::cos(a), rho * std::sin(a)});
+  }
+  std::vector<uint32_t> ids(30);
+  for (int i = 0; i < 30; ++i) ids[std::size_t(i)] = t.insert(xy[std::size_t(2 * i)], xy[std::size_t(2 * i + 1)]).vertex;
+  std::vector<uint32_t> batch(30);
+  t.insert_many(xy.data() + 60, 30, batch.data());
+  ids.insert(ids.end(), batch.begin(), batch.end());
+  t.validate();
+  ck_assert_uint_eq(t.vertex_count(), 120);
+  std::size_t away = 0;
+  for (int i = 0; i < 60; ++i) {
+    const double x = xy[std::size_t(2 * i)], y = xy[std::size_t(2 * i + 1)];
+    away += t.vertices()[ids[std::size_t(i)]].home != 0;
+    ck_assert_uint_eq(t.nearest_vertex(x, y), ids[std::size_t(i)]);
+    const auto at = t.locate(x, y);
+    const hdt::mesh::Face &F = t.faces()[at.face];
+    const hdt::mesh::TranslatedPoint q{x, y, t.table().compose(t.table().inverse(at.translation), 0), -1};
+    for (int e = 0; e < 3; ++e)
+      ck_assert_int_ge(t.kernel().orientation(t.corner(F, (e + 1) % 3), t.corner(F, (e + 2) % 3), q), 0);
+  }
+  ck_assert_uint_gt(away, 20);
+}
+END_TEST
+
+int main() {
+  return run_suite("polygon_mesh", 300, [](TCase *tc) {
+    tcase_add_test(tc, bolza_octagon);
+    tcase_add_test(tc, commutator_bolza);
+    tcase_add_test(tc, random_rational_octagon);
+    tcase_add_test(tc, points_outside_the_polygon);
+  });
+}
