@@ -14,7 +14,11 @@
 // < sys/2, decided with exact predicates, hence sys(M_g) > 2 delta_Q.
 #include "dummies/dummy_points.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <complex>
+#include <memory>
+#include <utility>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -24,7 +28,10 @@
 #include "dummies/mesh_names.hpp"
 #include "exact/unsupported.hpp"
 #include "group/cyclic.hpp"
+#include "domain/base_point.hpp"
+#include "mesh/assemble.hpp"
 #include "mesh/editor.hpp"
+#include "mesh/polygon_triangulation.hpp"
 #include "predicates/representative.hpp"
 #include "surface/polygon.hpp"
 #include "surface/q0_sites.hpp"
@@ -33,20 +40,38 @@ namespace hdt::dummies {
 
 using predicates::TranslatedPoint;
 
+// The construction on a surface of the geometry (M_g, or a polygon surface:
+// the same flips, splits and circumcentres; only the start and the
+// circumcentres' arithmetic differ).
+template <class Geometry>
 class DummyBuilder {
  public:
-  // e: a triangulation with no vertices and a fresh kernel; it receives the set.
-  explicit DummyBuilder(mesh::Editor &e) : e_(e), t_(e.triangulation()), K_(t_.kernel()), T_(t_.table()) {}
+  using Editor = mesh::BasicEditor<Geometry>;
+  using Triangulation = mesh::BasicTriangulation<Geometry>;
 
+  // e: a triangulation with no vertices and a fresh kernel; it receives the set.
+  explicit DummyBuilder(Editor &e) : e_(e), t_(e.triangulation()), K_(t_.kernel()), T_(t_.table()) {}
+
+  // M_g: the set of the genus, thinned and certified, as its template.
   mesh::DummyTemplate build() {
-    initial_triangulation();
-    for (uint32_t f = 0; f < t_.faces().size(); ++f)
-      for (int i = 0; i < 3; ++i) stack_.push_back({f, i});
-    lawson();
-    refine();
+    triangulate(t_.surface().quarter_systole_cosh_rounded(), 64 * std::size_t(t_.genus()) + 256);
     thin_dummy_points(e_);
     t_.validate();  // the certificate
     return e_.dummy_template();
+  }
+
+  // A polygon surface: the refined set, certified (not thinned: that takes
+  // removals, which are M_g's only so far).
+  void build_polygon() {
+    domain::PolygonSurface &S = t_.surface();
+    const double sys = S.systole().length.lo;
+    // The points are pairwise at least sys/4 apart (paper, section 5), so
+    // disks of radius sys/8 about them are disjoint: at most the area
+    // 4 pi (g - 1) over a disk's 2 pi (cosh(sys/8) - 1).
+    const double packing = 2 * (t_.genus() - 1) / (std::cosh(sys / 8) - 1);
+    triangulate(std::cosh(sys / 4), std::size_t(std::min(2 * packing, 1e7)) + 256);
+    e_.compact_ids();
+    t_.validate();  // the certificate
   }
 
  private:
@@ -55,7 +80,20 @@ class DummyBuilder {
     int i;
   };
 
-  void initial_triangulation() {
+  // Lawson flips from the first triangulation, then circumcentres while a
+  // circle is too large: limit, cosh(sys/4) within 1e-7 or so, orders and
+  // decides the clear cases (the exact test the others); more than
+  // max_points vertices means the refinement does not end.
+  void triangulate(double limit, std::size_t max_points) {
+    initial_triangulation(t_.geometry());
+    for (uint32_t f = 0; f < t_.faces().size(); ++f)
+      for (int i = 0; i < 3; ++i) stack_.push_back({f, i});
+    lawson();
+    refine(limit, max_points);
+  }
+
+  // Q0 and its triangulation by right triangles of F_g (above).
+  void initial_triangulation(mesh::MgGeometry &) {
     const group::Presentation &p = t_.surface().presentation();
     const int g = p.genus(), n = p.letter_count();
     std::vector<double> sx(2 * g + 1), sy(2 * g + 1);
@@ -110,6 +148,81 @@ class DummyBuilder {
     e_.assign_dummies(std::move(vertices), std::move(built));
   }
 
+  // A polygon P: the same fan from the base point c (rounded) to the
+  // vertices and side midpoints, 2n triangles (c, v_k, m_k), (c, m_k,
+  // v_{k+1}); with one double point per vertex cycle, a little inside P
+  // from the cycle's smallest vertex, and one per pair of sides, its
+  // rounded midpoint. The cycle's point stands at v_k as h_k(w), h_{k0} the
+  // identity and h_{p(v)+1} = g_{p(v)} h_v (g_{p(v)} sends v_v to
+  // v_{p(v)+1}); the midpoint m of side k < p(k) stands on side j = p(k) as
+  // g_j(m). So the fan closes up across every side as on the surface, and
+  // moving each cycle's point off the vertex moves all its copies alike.
+  // Each triangle is checked counterclockwise, exactly; the offset is
+  // halved until they are.
+  void initial_triangulation(mesh::PolygonGeometry &G) {
+    const domain::FundamentalPolygon &P = G.surface().polygon();
+    const int n = P.side_count();
+    const domain::Complex base = domain::base_point(P);
+    const std::complex<double> c(static_cast<double>(base.re), static_cast<double>(base.im));
+    std::vector<int> cycle_of(std::size_t(n), -1), first(P.cycles().size());
+    std::vector<TranslationId> h(static_cast<std::size_t>(n), 0);
+    for (std::size_t k = 0; k < P.cycles().size(); ++k) {
+      const std::vector<int> &cycle = P.cycles()[k];
+      first[k] = cycle[0];
+      for (std::size_t i = 0; i < cycle.size(); ++i) {
+        const int v = cycle[i], next_v = cycle[(i + 1) % cycle.size()];
+        cycle_of[std::size_t(v)] = int(k);
+        const TranslationId step = T_.compose(TranslationId(G.surface().pairing(P.paired(v))), h[std::size_t(v)]);
+        if (i + 1 < cycle.size()) h[std::size_t(next_v)] = step;
+        else if (step != 0) throw std::logic_error("dummy points: a vertex cycle's transformation is not the identity");
+      }
+    }
+    auto hyperboloid = [](std::complex<double> z) {
+      const double w = 1 - std::norm(z);
+      return std::array<double, 3>{(1 + std::norm(z)) / w, 2 * z.real() / w, 2 * z.imag() / w};
+    };
+    auto disk = [](const std::array<double, 3> &N) { return std::complex<double>(N[1], N[2]) / (1 + N[0]); };
+    for (double offset = 0x1p-5; offset > 0x1p-40; offset /= 2) {
+      std::vector<Vertex> vertices{{c.real(), c.imag(), 0, kNone}};
+      for (std::size_t k = 0; k < first.size(); ++k) {
+        const std::complex<double> v = P.vertex_double(first[k]), w = v + offset * (c - v);
+        vertices.push_back({w.real(), w.imag(), 0, kNone});
+      }
+      std::vector<uint32_t> midpoint(static_cast<std::size_t>(n));
+      for (int k = 0; k < n; ++k) {
+        if (k > P.paired(k)) continue;
+        const std::array<double, 3> a = hyperboloid(P.vertex_double(k)), b = hyperboloid(P.vertex_double(k + 1));
+        const std::complex<double> m = disk({a[0] + b[0], a[1] + b[1], a[2] + b[2]});
+        midpoint[std::size_t(k)] = midpoint[std::size_t(P.paired(k))] = uint32_t(vertices.size());
+        vertices.push_back({m.real(), m.imag(), 0, kNone});
+      }
+      for (Vertex &u : vertices) u.home = G.home(u.x, u.y);
+      auto at_vertex = [&](int k) {
+        const std::size_t v = std::size_t((k % n + n) % n);
+        return std::pair<uint32_t, TranslationId>{uint32_t(1 + cycle_of[v]), h[v]};
+      };
+      std::vector<mesh::CornerFace> fan;
+      for (int k = 0; k < n; ++k) {
+        const uint32_t m = midpoint[std::size_t(k)];
+        const TranslationId on_side = k < P.paired(k) ? 0 : TranslationId(G.surface().pairing(k));
+        const auto a = at_vertex(k), b = at_vertex(k + 1);
+        fan.push_back({{0, a.first, m}, {0, a.second, on_side}});
+        fan.push_back({{0, m, b.first}, {0, on_side, b.second}});
+      }
+      bool counterclockwise = true;
+      for (const mesh::CornerFace &f : fan) {
+        std::array<TranslatedPoint, 3> p;
+        for (int i = 0; i < 3; ++i) p[i] = {vertices[f.v[i]].x, vertices[f.v[i]].y, f.t[i], -1};
+        counterclockwise = counterclockwise && K_.orientation(p[0], p[1], p[2]) > 0;
+      }
+      if (!counterclockwise) continue;
+      std::vector<Face> faces = mesh::assemble_faces(&vertices, fan, T_);
+      e_.assign_dummies(std::move(vertices), std::move(faces));
+      return;
+    }
+    throw std::logic_error("dummy points: no counterclockwise fan of the polygon");
+  }
+
   // The in-circle test of the flips: perturbed when the four vertices are
   // distinct, plain (a tie keeps the edge) otherwise.
   int in_circle(const std::array<TranslatedPoint, 4> &p, const std::array<uint32_t, 4> &v) {
@@ -154,7 +267,7 @@ class DummyBuilder {
     if (!std::isfinite(x) || !std::isfinite(y) || x * x + y * y >= 1)
       throw std::logic_error("dummy points: at genus " + std::to_string(t_.genus()) +
                              " the circumcentre of a refinement face is not a point of the disk");
-    Triangulation::Walk w{};
+    typename Triangulation::Walk w{};
     for (int attempt = 0;; ++attempt) {
       if (attempt > 64) throw std::logic_error("dummy points: cannot place a refinement point");
       w = t_.walk_from({x, y, 0, -1}, from);
@@ -163,8 +276,7 @@ class DummyBuilder {
       x = std::nextafter(x, 0.0) * (1 - 0x1p-30);
       y = std::nextafter(y, 0.0) * (1 - 0x1p-29);
     }
-    const predicates::Representative r = predicates::representative(K_, x, y);
-    e_.split(w, x, y, r.translation, &ids_);
+    e_.split(w, x, y, t_.geometry().home(x, y), &ids_);
     for (uint32_t f : ids_) stack_.push_back({f, 2});
     lawson();
   }
@@ -213,7 +325,19 @@ class DummyBuilder {
   // stay as they were); beyond, far from O at large genus, in the MPFR
   // stage's 133 bits, which keep about 65 bits at n_0 ~ cosh(2R) ~ 1e10
   // (genus 256).
-  Circle circle(const Face &F, bool centroid = false) {
+  Circle circle(const Face &F, bool centroid = false) { return circle_on(t_.geometry(), F, centroid); }
+  // A polygon surface: from the corners' images in double.
+  Circle circle_on(mesh::PolygonGeometry &G, const Face &F, bool centroid) {
+    double P[3][3];
+    for (int i = 0; i < 3; ++i) {
+      const Vertex &u = t_.vertices()[F.v[i]];
+      const group::Complex<double> z = G.image(u.x, u.y, F.t[i]);
+      const double r2 = z.re * z.re + z.im * z.im, w = 1 - r2;
+      P[i][0] = (1 + r2) / w, P[i][1] = 2 * z.re / w, P[i][2] = 2 * z.im / w;
+    }
+    return centroid ? centroid_of(P) : circle_of(P);
+  }
+  Circle circle_on(mesh::MgGeometry &, const Face &F, bool centroid) {
     double P[3][3];
     bool far = false;
     for (int i = 0; i < 3; ++i) {
@@ -252,10 +376,7 @@ class DummyBuilder {
 
   // Largest circles first: the circumcentre of the face whose circle is
   // largest among those of hyperbolic diameter >= sys/2.
-  void refine() {
-    const int g = t_.genus();
-    const double limit = t_.surface().quarter_systole_cosh_rounded();
-    const std::size_t max_points = 64 * std::size_t(g) + 256;
+  void refine(double limit, std::size_t max_points) {
     for (;;) {
       uint32_t best = kNone;
       double best_cosh = 0, cx = 0, cy = 0;
@@ -298,10 +419,10 @@ class DummyBuilder {
     }
   }
 
-  mesh::Editor &e_;
+  Editor &e_;
   Triangulation &t_;
-  predicates::Kernel &K_;
-  group::TranslationTable &T_;
+  typename Triangulation::Kernel &K_;
+  typename Geometry::Table &T_;
   std::vector<Edge> stack_;
   std::vector<uint32_t> ids_;
   std::vector<CachedCircle> circles_;  // by face id
@@ -327,11 +448,17 @@ mesh::Triangulation new_triangulation(int genus) {
                             ": beyond it their double-precision construction loses every bit");
   // Built outside the lock.
   mesh::Editor e(genus);
-  auto built = std::make_shared<const mesh::DummyTemplate>(DummyBuilder(e).build());
+  auto built = std::make_shared<const mesh::DummyTemplate>(DummyBuilder<mesh::MgGeometry>(e).build());
   {
     std::lock_guard<std::mutex> lock(cache_mutex);
     cache.emplace(genus, built);
   }
+  return std::move(e).take();
+}
+
+mesh::PolygonTriangulation new_polygon_triangulation(const domain::FundamentalPolygon &polygon) {
+  mesh::BasicEditor<mesh::PolygonGeometry> e(std::make_unique<mesh::PolygonGeometry>(polygon));
+  DummyBuilder<mesh::PolygonGeometry>(e).build_polygon();
   return std::move(e).take();
 }
 

@@ -3,6 +3,8 @@
 // every new triangulation (mesh::Triangulation(const DummyTemplate &)).
 #pragma once
 
+#include "domain/fundamental_polygon.hpp"
+#include "mesh/polygon_triangulation.hpp"
 #include "mesh/triangulation.hpp"
 
 namespace hdt::dummies {
@@ -21,5 +23,11 @@ constexpr int kDummyGenusMax = 256;
 // the template (thread-safe; two threads may both build one, the first
 // template stays). Throws exact::Unsupported above kDummyGenusMax.
 mesh::Triangulation new_triangulation(int genus);
+
+// A new triangulation of the polygon's surface: the paper's Algorithm 1 on
+// it (dummy_points.cpp: a fan of the polygon, Lawson flips, circumcentres
+// while a circle has diameter sys/2 or more), certified by validate().
+// Built at every call. The caller holds the field lock on a number field.
+mesh::PolygonTriangulation new_polygon_triangulation(const domain::FundamentalPolygon &polygon);
 
 }  // namespace hdt::dummies

@@ -14,7 +14,10 @@
 #pragma once
 
 namespace hdt::mesh {
-class Editor;
+template <class Geometry>
+class BasicEditor;
+class MgGeometry;
+using Editor = BasicEditor<MgGeometry>;
 }
 
 namespace hdt::dummies {

@@ -3,24 +3,34 @@
 #include "mesh/editor.hpp"
 
 #include <stdexcept>
+#include <utility>
+
+#include "mesh/polygon_triangulation.hpp"
 
 namespace hdt::mesh {
 
-Editor::Editor(int genus) : t_(genus, Triangulation::Empty{}) {}
+template <class Geometry>
+BasicEditor<Geometry>::BasicEditor(int genus) : t_(genus, typename Triangulation::Empty{}) {}
 
-DummyTemplate Editor::dummy_template() const {
+template <class Geometry>
+BasicEditor<Geometry>::BasicEditor(std::unique_ptr<Geometry> geometry)
+    : t_(std::move(geometry), typename Triangulation::Empty{}) {}
+
+template <class Geometry>
+DummyTemplate BasicEditor<Geometry>::dummy_template() const {
   DummyTemplate q;
   q.genus = t_.genus();
   q.vertices = t_.vertices();
   q.faces = t_.faces();
-  const group::TranslationTable &T = t_.table();
+  const auto &T = t_.table();
   for (std::size_t id = T.neighbour_count(); id < T.size(); ++id) q.extra_words.push_back(T.word(TranslationId(id)));
   const surface::Surface &S = t_.surface();
   for (std::size_t id = 0; id < S.site_count(); ++id) q.sites.push_back(S.site(int32_t(id)));
   return q;
 }
 
-void Editor::assign_dummies(std::vector<Vertex> vertices, std::vector<Face> faces) {
+template <class Geometry>
+void BasicEditor<Geometry>::assign_dummies(std::vector<Vertex> vertices, std::vector<Face> faces) {
   t_.vertices_ = std::move(vertices);
   t_.faces_ = std::move(faces);
   for (uint32_t f = 0; f < t_.faces_.size(); ++f)
@@ -31,8 +41,9 @@ void Editor::assign_dummies(std::vector<Vertex> vertices, std::vector<Face> face
   ++t_.revision_;
 }
 
-void Editor::flip(uint32_t f, int i, std::vector<uint32_t> *ids) {
-  group::TranslationTable &T = t_.table();
+template <class Geometry>
+void BasicEditor<Geometry>::flip(uint32_t f, int i, std::vector<uint32_t> *ids) {
+  auto &T = t_.table();
   const Face F = t_.faces_[f];
   const uint32_t n = F.n[i];
   const int k = t_.twin(f, i);
@@ -52,7 +63,8 @@ void Editor::flip(uint32_t f, int i, std::vector<uint32_t> *ids) {
   t_.replace({f, n}, created, boundary, ids);
 }
 
-uint32_t Editor::split(const Triangulation::Walk &w, double x, double y, TranslationId home, std::vector<uint32_t> *ids) {
+template <class Geometry>
+uint32_t BasicEditor<Geometry>::split(const typename Triangulation::Walk &w, double x, double y, TranslationId home, std::vector<uint32_t> *ids) {
   const auto id = uint32_t(t_.vertices_.size());
   const Face F = t_.faces_[w.face];
   std::vector<NewFace> created;
@@ -75,15 +87,17 @@ uint32_t Editor::split(const Triangulation::Walk &w, double x, double y, Transla
   return id;
 }
 
-bool Editor::insert_dummy(double x, double y, TranslationId home, uint32_t near) {
+template <class Geometry>
+bool BasicEditor<Geometry>::insert_dummy(double x, double y, TranslationId home, uint32_t near) {
   t_.last_vertex_ = near;
-  const Triangulation::Walk w = t_.walk_from_hint({x, y, home, -1});
+  const typename Triangulation::Walk w = t_.walk_from_hint({x, y, home, -1});
   if (t_.vertex_at(w) != kNone) return false;
   t_.insert_located(x, y, home, true, w);
   return true;
 }
 
-void Editor::save(Checkpoint *c) const {
+template <class Geometry>
+void BasicEditor<Geometry>::save(Checkpoint *c) const {
   c->vertices = t_.vertices_;
   c->faces = t_.faces_;
   c->dummy = t_.dummy_;
@@ -91,7 +105,8 @@ void Editor::save(Checkpoint *c) const {
   c->last_face = t_.last_face_, c->last_vertex = t_.last_vertex_;
 }
 
-void Editor::roll_back(Checkpoint *c) {
+template <class Geometry>
+void BasicEditor<Geometry>::roll_back(Checkpoint *c) {
   t_.vertices_.swap(c->vertices);
   t_.faces_.swap(c->faces);
   t_.dummy_.swap(c->dummy);
@@ -103,7 +118,8 @@ void Editor::roll_back(Checkpoint *c) {
   ++t_.revision_;
 }
 
-void Editor::compact_ids() {
+template <class Geometry>
+void BasicEditor<Geometry>::compact_ids() {
   std::vector<uint32_t> id(t_.vertices_.size(), kNone);
   std::vector<Vertex> vertices;
   for (uint32_t v = 0; v < t_.vertices_.size(); ++v)
@@ -124,5 +140,15 @@ void Editor::compact_ids() {
   t_.rng_ = Triangulation::kWalkSeed;
   ++t_.revision_;
 }
+
+template class BasicEditor<MgGeometry>;
+
+// A polygon surface's dummy construction uses these.
+template BasicEditor<PolygonGeometry>::BasicEditor(std::unique_ptr<PolygonGeometry>);
+template void BasicEditor<PolygonGeometry>::assign_dummies(std::vector<Vertex>, std::vector<Face>);
+template void BasicEditor<PolygonGeometry>::flip(uint32_t, int, std::vector<uint32_t> *);
+template uint32_t BasicEditor<PolygonGeometry>::split(const PolygonTriangulation::Walk &, double, double, TranslationId,
+                                                      std::vector<uint32_t> *);
+template void BasicEditor<PolygonGeometry>::compact_ids();
 
 }  // namespace hdt::mesh

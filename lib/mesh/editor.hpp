@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -15,9 +16,14 @@
 
 namespace hdt::mesh {
 
-class Editor {
+template <class Geometry>
+class BasicEditor {
  public:
-  explicit Editor(int genus);
+  using Triangulation = BasicTriangulation<Geometry>;
+  // M_g: an empty triangulation of the genus.
+  explicit BasicEditor(int genus);
+  // An empty triangulation on the geometry given.
+  explicit BasicEditor(std::unique_ptr<Geometry> geometry);
 
   // The triangulation being built, for its queries, remove() and validate().
   Triangulation &triangulation() { return t_; }
@@ -31,7 +37,7 @@ class Editor {
   // Splits face w.face at a new dummy (x, y) with home `home` (walked to by
   // walk_from, on no edge's line): three faces, their ids to *ids. Returns
   // the new vertex.
-  uint32_t split(const Triangulation::Walk &w, double x, double y, TranslationId home, std::vector<uint32_t> *ids);
+  uint32_t split(const typename Triangulation::Walk &w, double x, double y, TranslationId home, std::vector<uint32_t> *ids);
   // Bowyer-Watson insertion of a new dummy at (x, y) with home `home`, the
   // walk starting around vertex `near`. False, with nothing changed, when a
   // vertex is there already.
@@ -60,5 +66,7 @@ class Editor {
  private:
   Triangulation t_;
 };
+
+using Editor = BasicEditor<MgGeometry>;
 
 }  // namespace hdt::mesh

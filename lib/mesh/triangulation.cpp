@@ -13,6 +13,10 @@ BasicTriangulation<Geometry>::BasicTriangulation(int genus, Empty)
     : genus_(genus), geometry_(std::make_unique<Geometry>(genus)), kernel_(&geometry_->kernel()) {}
 
 template <class Geometry>
+BasicTriangulation<Geometry>::BasicTriangulation(std::unique_ptr<Geometry> geometry, Empty)
+    : genus_(geometry->genus()), geometry_(std::move(geometry)), kernel_(&geometry_->kernel()) {}
+
+template <class Geometry>
 BasicTriangulation<Geometry>::BasicTriangulation(const DummyTemplate &q) : BasicTriangulation(q.genus, Empty{}) {
   // The same sites and translation ids as the template's surface had.
   for (const surface::Site &site : q.sites) geometry_->surface().adopt_site(site);
@@ -42,11 +46,13 @@ BasicTriangulation<Geometry>::BasicTriangulation(std::unique_ptr<Geometry> geome
 
 // M_g's (the only geometry with a dummy template so far).
 template Triangulation::BasicTriangulation(int, Triangulation::Empty);
+template Triangulation::BasicTriangulation(std::unique_ptr<MgGeometry>, Triangulation::Empty);
 template Triangulation::BasicTriangulation(const DummyTemplate &);
 
 // Polygon surfaces': what their triangulations support so far (insertion,
 // location, stars, validation), each file instantiating its part.
 template PolygonTriangulation::BasicTriangulation(std::unique_ptr<PolygonGeometry>, std::vector<Vertex>, std::vector<bool>,
                                                   std::vector<Face>);
+template PolygonTriangulation::BasicTriangulation(std::unique_ptr<PolygonGeometry>, PolygonTriangulation::Empty);
 
 }  // namespace hdt::mesh

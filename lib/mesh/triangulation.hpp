@@ -167,9 +167,12 @@ class BasicTriangulation {
   Walk walk_from(const TranslatedPoint &q, uint32_t start) const { return walk(q, start, 0); }
 
  private:
-  friend class Editor;  // the dummy construction's edits (editor.hpp)
+  template <class>
+  friend class BasicEditor;  // the dummy construction's edits (editor.hpp)
   struct Empty {};
-  BasicTriangulation(int genus, Empty);  // no vertices: the dummy construction's start
+  // No vertices: the dummy construction's start (M_g: of the genus).
+  BasicTriangulation(int genus, Empty);
+  BasicTriangulation(std::unique_ptr<Geometry> geometry, Empty);
   // restore() without validate(), after the ranges are checked; moves the
   // vertices, flags and faces out of s.
   static BasicTriangulation rebuild(Snapshot &s);

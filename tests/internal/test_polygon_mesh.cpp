@@ -8,6 +8,7 @@
 // face copy that holds them.
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -21,6 +22,7 @@
 #include "domain/field_lock.hpp"
 #include "domain/random_octagon.hpp"
 #include "domain/systole.hpp"
+#include "dummies/dummy_points.hpp"
 #include "mesh/assemble.hpp"
 #include "mesh/polygon_triangulation.hpp"
 
@@ -162,7 +164,67 @@ void check_insertion(const FundamentalPolygon &P, const char *name, int n0, int 
               t.surface().table().size());
 }
 
+// A face's hyperbolic area, pi minus its angles, from its corners in double.
+double face_area(PolygonTriangulation &t, const hdt::mesh::Face &F) {
+  std::array<Point, 3> w;
+  for (int i = 0; i < 3; ++i) {
+    const hdt::mesh::Vertex &u = t.vertices()[F.v[i]];
+    const auto z = t.geometry().image(u.x, u.y, F.t[i]);
+    w[std::size_t(i)] = {z.re, z.im};
+  }
+  double angles = 0;
+  for (int i = 0; i < 3; ++i) {
+    // The angle at w_i between the geodesics to the other two: move w_i to
+    // 0 (z -> (z - w) / (1 - conj(w) z)), where geodesics are diameters.
+    const Point a = w[std::size_t(i)], b = w[std::size_t((i + 1) % 3)], c = w[std::size_t((i + 2) % 3)];
+    const Point bb = (b - a) / (1.0 - std::conj(a) * b), cc = (c - a) / (1.0 - std::conj(a) * c);
+    angles += std::abs(std::arg(cc / bb));
+  }
+  return M_PI - angles;
+}
+
+// The paper's Algorithm 1 on a polygon surface (dummies/dummy_points.hpp):
+// certified inside by validate(); here again, with Euler's formula, the
+// faces' areas summing to the surface's 4 pi (g - 1) (each face counted
+// once, none missing: an independent check of the winding), and points
+// inserted on top of the dummies into a valid triangulation.
+void check_dummies(const FundamentalPolygon &P, const char *name) {
+  const FieldLock lock(P.field() != nullptr);
+  const auto t0 = std::chrono::steady_clock::now();
+  PolygonTriangulation t = hdt::dummies::new_polygon_triangulation(P);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  t.validate();
+  const std::size_t V = t.vertex_count();
+  ck_assert_uint_eq(V, t.dummy_count());
+  ck_assert_uint_eq(t.faces().size(), 2 * V + 4 * std::size_t(P.genus() - 1));
+  double area = 0;
+  for (const hdt::mesh::Face &F : t.faces()) area += face_area(t, F);
+  const double expected = 4 * M_PI * (P.genus() - 1);
+  ck_assert_msg(std::abs(area - expected) < 1e-9 * expected, "%s: area %.15g, 4 pi (g - 1) = %.15g", name, area,
+                expected);
+  std::printf("%s: genus %d, systole %.4f, %zu dummy points in %.3f s, %zu faces\n", name, P.genus(),
+              t.surface().systole().length.lo, V, seconds, t.faces().size());
+  uint64_t s = 29;
+  std::vector<double> xy;
+  for (int i = 0; i < 300; ++i) {
+    const double rho = 0.99 * std::sqrt(uniform01(&s)), a = 2 * M_PI * uniform01(&s);
+    xy.insert(xy.end(), {rho * std::cos(a), rho * std::sin(a)});
+  }
+  t.insert_many(xy.data(), 300, nullptr);
+  t.validate();
+  ck_assert_uint_eq(t.vertex_count(), V + 300);
+}
+
 }  // namespace
+
+START_TEST(dummy_points_on_polygons) {
+  check_dummies(bolza(), "bolza");
+  check_dummies(bolza("2 3 0 1 6 7 4 5"), "commutator bolza");
+  for (uint64_t seed = 1; seed <= 3; ++seed) check_dummies(random_octagon(seed), "random octagon");
+  check_dummies(random_symmetric_polygon(5, 4), "decagon, two cycles");
+  check_dummies(FundamentalPolygon(genus_3_commutator_12_gon()), "commutator 12-gon");
+}
+END_TEST
 
 START_TEST(bolza_octagon) { check_insertion(bolza(), "bolza", 60, 40, 0.85, 3); }
 END_TEST
@@ -226,5 +288,6 @@ int main() {
     tcase_add_test(tc, commutator_bolza);
     tcase_add_test(tc, random_rational_octagon);
     tcase_add_test(tc, points_outside_the_polygon);
+    tcase_add_test(tc, dummy_points_on_polygons);
   });
 }
