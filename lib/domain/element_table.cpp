@@ -19,18 +19,30 @@ ElementId ElementTable::compose(ElementId a, ElementId b) {
   if (a == kIdentityId) return b;
   if (b == kIdentityId) return a;
   const std::uint64_t key = std::uint64_t(a) << 32 | b;
-  if (const auto found = products_.find(key); found != products_.end()) return found->second;
-  const ElementId id = intern(element(a) * element(b));
-  products_.emplace(key, id);
+  RecentProduct &recent = recent_[std::size_t((key * 0x9E3779B97F4A7C15ull) >> (64 - kRecentBits))];
+  if (recent.key == key) return recent.id;
+  ElementId id;
+  if (const auto found = products_.find(key); found != products_.end()) {
+    id = found->second;
+  } else {
+    id = intern(element(a) * element(b));
+    products_.emplace(key, id);
+  }
+  recent = {key, id};
   return id;
 }
 
 // Cached both ways: the inverse of the inverse is known at once.
 ElementId ElementTable::inverse(ElementId a) {
-  if (entries_.at(a).inverse != kNone) return entries_[a].inverse;
-  const ElementId id = intern(domain::inverse(element(a)));
-  entries_[a].inverse = id;
-  entries_[id].inverse = a;
+  if (a < inverses_.size() && inverses_[a] != kNone) return inverses_[a];
+  if (entries_.at(a).inverse == kNone) {
+    const ElementId id = intern(domain::inverse(element(a)));
+    entries_[a].inverse = id;
+    entries_[id].inverse = a;
+  }
+  const ElementId id = entries_[a].inverse;
+  if (inverses_.size() < entries_.size()) inverses_.resize(entries_.size(), kNone);
+  inverses_[a] = id, inverses_[id] = a;
   return id;
 }
 

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <deque>
 #include <unordered_map>
+#include <vector>
 
 #include "domain/ball_isometry.hpp"
 #include "domain/element.hpp"
@@ -46,6 +47,16 @@ class ElementTable {
   std::deque<Entry> entries_;
   std::unordered_map<Element, ElementId, ElementHash> ids_;
   std::unordered_map<std::uint64_t, ElementId> products_;  // key a << 32 | b
+  // The triangulation's hot path asks the same few products and inverses
+  // again and again: a direct-mapped cache of recent products in front of
+  // the map, and the inverses by id in a plain vector (kNone: not yet).
+  struct RecentProduct {
+    std::uint64_t key = ~std::uint64_t(0);
+    ElementId id = 0;
+  };
+  static constexpr int kRecentBits = 10;
+  std::vector<RecentProduct> recent_ = std::vector<RecentProduct>(std::size_t(1) << kRecentBits);
+  std::vector<ElementId> inverses_;
 };
 
 }  // namespace hdt::domain

@@ -1,6 +1,7 @@
 #include "domain/polygon_kernel.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <functional>
 #include <initializer_list>
 #include <stdexcept>
@@ -131,8 +132,21 @@ const PolygonKernel::DoubleIsometry &PolygonKernel::double_isometry(ElementId t)
   return doubles_[t];
 }
 
-// As ball_row, written out in real and imaginary parts; z is exact.
 PolygonKernel::DoubleRow PolygonKernel::double_row(const PolygonPoint &p) {
+  std::uint64_t bx, by;
+  std::memcpy(&bx, &p.x, sizeof bx);
+  std::memcpy(&by, &p.y, sizeof by);
+  const std::uint64_t h = (bx * 0x9E3779B97F4A7C15ull) ^ ((by + std::uint64_t(p.t) * 0xC2B2AE3D27D4EB4Full) * 0x165667B19E3779F9ull);
+  RowSlot &slot = row_cache_[std::size_t(h >> (64 - kRowCacheBits))];
+  if (slot.x != p.x || slot.y != p.y || slot.t != p.t) {
+    slot.row = computed_double_row(p);
+    slot.x = p.x, slot.y = p.y, slot.t = p.t;
+  }
+  return slot.row;
+}
+
+// As ball_row, written out in real and imaginary parts; z is exact.
+PolygonKernel::DoubleRow PolygonKernel::computed_double_row(const PolygonPoint &p) {
   const DoubleIsometry &U = double_isometry(p.t);
   const ErrorDouble x(p.x), y(p.y);
   const ErrorDouble nr = U.ar * x - U.ai * y + U.br, ni = U.ar * y + U.ai * x + U.bi;

@@ -62,6 +62,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
@@ -144,7 +145,11 @@ class PolygonKernel {
   };
 
   const DoubleIsometry &double_isometry(ElementId t);
+  // p's double row, from a small direct-mapped cache by (x, y, t): a walk
+  // and a conflict search ask for the same corners again and again. By
+  // value: a later lookup may take the slot.
   DoubleRow double_row(const PolygonPoint &p);
+  DoubleRow computed_double_row(const PolygonPoint &p);
   BallRow ball_row(const PolygonPoint &p) const;
   ExactRow exact_row(const PolygonPoint &p) const;
   ExactRow exact_row(const Complex &w) const;  // an exact point of the disk
@@ -167,6 +172,13 @@ class PolygonKernel {
   // By element id, as far as computed; a deque, so that a reference handed
   // out stays valid while a later id grows it (same_point holds two).
   std::deque<DoubleIsometry> doubles_;
+  struct RowSlot {
+    double x = NAN, y = NAN;  // NaN: equal to no point
+    ElementId t = 0;
+    DoubleRow row;
+  };
+  static constexpr int kRowCacheBits = 8;
+  std::vector<RowSlot> row_cache_ = std::vector<RowSlot>(std::size_t(1) << kRowCacheBits);
   // The last large_circumdisk threshold, in the polygon's field, and its ball.
   std::optional<Number> threshold_given_, threshold_;
   RealBall threshold_ball_;

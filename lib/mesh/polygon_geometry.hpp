@@ -20,6 +20,8 @@
 
 #include "domain/polygon_surface.hpp"
 #include "group/moebius.hpp"
+#include "predicates/sign.hpp"
+#include "predicates/stage_disk.hpp"
 #include "predicates/translated_point.hpp"
 
 namespace hdt::mesh {
@@ -34,17 +36,28 @@ class PolygonGeometry {
   // The mesh's predicates on translated points, by the polygon kernel; the
   // circumdiameter test against sys/2 with the surface's certified
   // threshold (a lower bound: a face it passes is certainly below sys/2).
+  // Points that share one element first meet M_g's static disk filters
+  // (predicates/stage_disk.hpp) on their stored coordinates: the predicates
+  // are invariant under a common isometry, and the two kernels compute the
+  // same determinants (polygon_kernel.hpp); the common case of a walk and
+  // of a conflict search, decided without the kernel's rows.
   class Kernel {
    public:
     explicit Kernel(Surface &s) : s_(s), k_(s.kernel()) {}
     int orientation(const TranslatedPoint &a, const TranslatedPoint &b, const TranslatedPoint &c) {
+      if (a.translation == b.translation && a.translation == c.translation)
+        if (const predicates::Sign s = predicates::disk_orientation(a.x, a.y, b.x, b.y, c.x, c.y);
+            predicates::decided(s))
+          return predicates::to_int(s);
       return k_.orientation(p(a), p(b), p(c));
     }
     int in_circle(const TranslatedPoint &a, const TranslatedPoint &b, const TranslatedPoint &c,
                   const TranslatedPoint &d) {
+      if (const int s = disk_in_circle({a, b, c, d})) return s;
       return k_.in_circle(p(a), p(b), p(c), p(d));
     }
     int in_circle_perturbed(const std::array<TranslatedPoint, 4> &q, const std::array<uint32_t, 4> &vertex) {
+      if (const int s = disk_in_circle(q)) return s;  // not 0: the perturbation decides only ties
       return k_.in_circle_perturbed({p(q[0]), p(q[1]), p(q[2]), p(q[3])}, vertex);
     }
     int compare_distance(const TranslatedPoint &q, const TranslatedPoint &a, const TranslatedPoint &b) {
@@ -56,6 +69,14 @@ class PolygonGeometry {
 
    private:
     static domain::PolygonPoint p(const TranslatedPoint &q) { return {q.x, q.y, domain::ElementId(q.translation)}; }
+    // The disk filter's sign for four points of one element, else 0.
+    static int disk_in_circle(const std::array<TranslatedPoint, 4> &q) {
+      const TranslationId t = q[0].translation;
+      if (q[1].translation != t || q[2].translation != t || q[3].translation != t) return 0;
+      const predicates::Sign s =
+          predicates::disk_in_circle(q[0].x, q[0].y, q[1].x, q[1].y, q[2].x, q[2].y, q[3].x, q[3].y);
+      return predicates::decided(s) ? predicates::to_int(s) : 0;
+    }
     Surface &s_;
     domain::PolygonKernel &k_;
   };
