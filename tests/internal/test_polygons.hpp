@@ -4,10 +4,16 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "domain/fundamental_polygon.hpp"
 #include "domain/polygon_text.hpp"
+#include "domain/random_octagon.hpp"
 
 namespace hdt::domain::test {
 
@@ -59,6 +65,24 @@ inline Number q(long p, long d) {
   mpq_class r(p, d);
   r.canonicalize();
   return Number(r);
+}
+
+// The first random rational octagon (random_octagon.hpp, seeds 1, 2, ...)
+// with every vertex within Euclidean radius max_reach, and that radius: a
+// bounded search, so that the tiles a brute force searches stay few.
+struct CompactOctagon {
+  FundamentalPolygon polygon;
+  double reach;
+  std::uint64_t seed;
+};
+inline CompactOctagon compact_random_octagon(double max_reach = 0.9) {
+  for (std::uint64_t seed = 1; seed < 200; ++seed) {
+    FundamentalPolygon P = random_octagon(seed);
+    double reach = 0;
+    for (int k = 0; k < 8; ++k) reach = std::max(reach, std::abs(P.vertex_double(k)));
+    if (reach <= max_reach) return {std::move(P), reach, seed};
+  }
+  throw std::logic_error("compact_random_octagon: none among 200 seeds");
 }
 
 }  // namespace hdt::domain::test
