@@ -75,6 +75,7 @@ CITED_RUNS = [
     ("words_bench", ["--genus", "1024"],
      "hdt.h at HDT_GENUS_MAX and HDT_WORD_MAX_LENGTH (the linear pass, the first call of a genus)"),
     ("surface_bench", [], "docs/polygons.md (the systole's cost)"),
+    ("polygon_mesh_bench", ["--n", "100000", "--rounds", "5"], "docs/polygons.md (insertion on polygon surfaces)"),
 ]
 # Figures measured once, by a command this script does not rerun (too long
 # here, or a driver that is not a program of bench/): (figure, where it was
@@ -97,6 +98,9 @@ RECORDED_FIGURES = [
     ("the layer split (issue 34) against the tree before it (3db7357), release builds, callgrind: instructions in `hdt_insert_many` a point at 10^5 points 6,401.2 before / 6,393.8 after at genus 2, 7,841.5 / 7,833.7 at genus 32; in the process's two `hdt_create` calls (the first builds the dummies) 3,860,638,441 / 3,853,310,817 at genus 128, 10,181,759,636 / 10,149,458,518 at genus 256 (CPU time of the first, median of three alternating runs: 606 / 585 ms at 128, 1,480 / 1,372 ms at 256)",
      '`valgrind --tool=callgrind --toggle-collect=hdt_insert_many triangulation_bench --n 100000 --genus G` and `--toggle-collect=hdt_create ... --n 10 --genus G` in a worktree of each commit, 7 December 2026',
      "issue 34's must-hold (not cited by hdt.h)"),
+    ("the mesh as one template for M_g and polygon surfaces (8ecd568, issue 35) against the tree before it (d1810b3), release builds, callgrind: instructions in `hdt_insert_many` at 10^5 points 639,379,581 / 639,211,176 at genus 2, 783,367,830 / 782,954,132 at genus 32; in `hdt_create` at genus 8 (the dummy construction templated too, 72175cc) 1,069,339,886 / 1,069,340,223",
+     '`valgrind --tool=callgrind --toggle-collect=hdt_insert_many triangulation_bench --n 100000 --genus G` (and `--toggle-collect=hdt_create ... --n 10 --genus 8`) in a worktree of each commit, 8 December 2026',
+     "issue 35's must-hold (not cited by hdt.h)"),
 ]
 
 
@@ -585,6 +589,8 @@ def method(w, args, cgal, sizes):
     w("| `bench/predicates_bench.cpp` | the predicates alone: filtered and forced through the exact field |")
     w("| `bench/surface_bench.c` | polygon surfaces: the exact checks of `hdt_surface_random_symmetric`'s octagons "
       "and decagons, and their certified systole |")
+    w("| `bench/polygon_mesh_bench.cpp` | the same points inserted into the built-in M_2, the Bolza octagon given "
+      "as a polygon and a random rational octagon, side by side (the C++ core: polygon surfaces have no C API yet) |")
     w("")
     sizes_text = ", ".join(f"10^{len(str(n)) - 1}" if str(n).strip("0") == "1" else str(n) for n in sizes)
     w(f"- **Points.** All programs draw from one generator, `bench/uniform_points.h` (splitmix64, seed "
