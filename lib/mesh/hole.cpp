@@ -1,4 +1,5 @@
 #include "mesh/hole.hpp"
+#include "mesh/polygon_geometry.hpp"
 
 #include <cmath>
 #include <limits>
@@ -205,6 +206,7 @@ bool fill_hole(Kernel &kernel, const std::vector<HoleVertex> &polygon, const Hol
   return HoleFiller(kernel, polygon, removed).run(faces);
 }
 
+template <class Kernel>
 void fill_hole_by_wrapping(Kernel &kernel, const std::vector<HoleVertex> &polygon, std::vector<HoleFace> *faces) {
   // The part p[i..j] of the polygon is closed by the edge p[j] -> p[i]; its
   // face on that edge has the third corner c whose circle holds no other
@@ -231,5 +233,8 @@ void fill_hole_by_wrapping(Kernel &kernel, const std::vector<HoleVertex> &polygo
     if (j - best >= 2) parts.push_back({best, j});
   }
 }
+
+template void fill_hole_by_wrapping(predicates::Kernel &, const std::vector<HoleVertex> &, std::vector<HoleFace> *);
+template void fill_hole_by_wrapping(PolygonGeometry::Kernel &, const std::vector<HoleVertex> &, std::vector<HoleFace> *);
 
 }  // namespace hdt::mesh

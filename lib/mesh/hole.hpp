@@ -58,8 +58,9 @@ bool fill_hole(predicates::Kernel &kernel, const std::vector<HoleVertex> &polygo
                std::vector<HoleFace> *faces);
 
 // The same faces by wrapping. Throws std::logic_error when a part of the
-// polygon has no Delaunay triangle on its closing edge.
-void fill_hole_by_wrapping(predicates::Kernel &kernel, const std::vector<HoleVertex> &polygon,
-                           std::vector<HoleFace> *faces);
+// polygon has no Delaunay triangle on its closing edge. Any kernel with
+// orientation and in_circle_perturbed (M_g's, a polygon surface's).
+template <class Kernel>
+void fill_hole_by_wrapping(Kernel &kernel, const std::vector<HoleVertex> &polygon, std::vector<HoleFace> *faces);
 
 }  // namespace hdt::mesh

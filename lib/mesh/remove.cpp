@@ -3,11 +3,14 @@
 // when a new face would break the circumdiameter guarantee, before the
 // filling when that can be proved from distances (early_refusal.hpp).
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "mesh/early_refusal.hpp"
 #include "mesh/hole.hpp"
+#include "mesh/polygon_triangulation.hpp"
 #include "mesh/triangulation.hpp"
 
 namespace hdt::mesh {
@@ -40,8 +43,15 @@ bool BasicTriangulation<Geometry>::remove(uint32_t v) {
   scratch_.old_faces.clear();
   scratch_.boundary.clear();
   scratch_.new_faces.clear();
+  // M_g's kernel takes certified double lifts of the hole's points (the
+  // ears' order, the early refusal, the circumdiameter tests); a polygon
+  // surface's decides from the points alone.
+  constexpr bool lifts = std::is_same_v<Geometry, MgGeometry>;
   // The link of v, counterclockwise, in the first star face's frame.
-  auto hole_vertex = [&](uint32_t u, TranslationId t) { return lifted_hole_vertex(*kernel_, point(u, t), u); };
+  auto hole_vertex = [&](uint32_t u, TranslationId t) {
+    if constexpr (lifts) return lifted_hole_vertex(*kernel_, point(u, t), u);
+    else return HoleVertex{point(u, t), u, {}, std::numeric_limits<double>::infinity()};
+  };
   std::vector<HoleVertex> &polygon = scratch_.hole;
   polygon.clear();
   polygon.reserve(scratch_.star.size());
@@ -61,38 +71,46 @@ bool BasicTriangulation<Geometry>::remove(uint32_t v) {
 
   const Face &first = faces_[scratch_.star[0].face];
   const HoleVertex removed = hole_vertex(v, T.compose(scratch_.star[0].frame, first.t[scratch_.star[0].corner]));
-  if (refusal_is_certain(*kernel_, polygon, removed)) {
+  if constexpr (lifts) {
+    if (refusal_is_certain(*kernel_, polygon, removed)) {
 #ifdef HDT_CHECK_PREDICATES
-    // The debugging build checks the proof against the filled hole.
+      // The debugging build checks the proof against the filled hole.
+      fill_hole_by_wrapping(*kernel_, polygon, &scratch_.hole_faces);
+      bool large = false;
+      for (const HoleFace &f : scratch_.hole_faces)
+        large = large || kernel_->large_circumdisk(polygon[std::size_t(f[0])].point, polygon[std::size_t(f[1])].point,
+                                                   polygon[std::size_t(f[2])].point) > 0;
+      if (!large) throw std::logic_error("check_predicates: a removal refused early has no large face");
+#endif
+      return false;
+    }
+    if (!fill_hole(*kernel_, polygon, removed, &scratch_.hole_faces)) fill_hole_by_wrapping(*kernel_, polygon, &scratch_.hole_faces);
+#ifdef HDT_CHECK_PREDICATES
+    // The debugging build checks the fast method against the simple one.
+    std::vector<HoleFace> wrapped;
+    fill_hole_by_wrapping(*kernel_, polygon, &wrapped);
+    auto canonical = [](std::vector<HoleFace> faces) {
+      for (HoleFace &f : faces) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+      std::sort(faces.begin(), faces.end());
+      return faces;
+    };
+    if (canonical(wrapped) != canonical(scratch_.hole_faces))
+      throw std::logic_error("check_predicates: the two hole-filling methods disagree");
+#endif
+  } else {
     fill_hole_by_wrapping(*kernel_, polygon, &scratch_.hole_faces);
-    bool large = false;
-    for (const HoleFace &f : scratch_.hole_faces)
-      large = large || kernel_->large_circumdisk(polygon[std::size_t(f[0])].point, polygon[std::size_t(f[1])].point,
-                                                 polygon[std::size_t(f[2])].point) > 0;
-    if (!large) throw std::logic_error("check_predicates: a removal refused early has no large face");
-#endif
-    return false;
   }
-  if (!fill_hole(*kernel_, polygon, removed, &scratch_.hole_faces)) fill_hole_by_wrapping(*kernel_, polygon, &scratch_.hole_faces);
-#ifdef HDT_CHECK_PREDICATES
-  // The debugging build checks the fast method against the simple one.
-  std::vector<HoleFace> wrapped;
-  fill_hole_by_wrapping(*kernel_, polygon, &wrapped);
-  auto canonical = [](std::vector<HoleFace> faces) {
-    for (HoleFace &f : faces) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-    std::sort(faces.begin(), faces.end());
-    return faces;
-  };
-  if (canonical(wrapped) != canonical(scratch_.hole_faces))
-    throw std::logic_error("check_predicates: the two hole-filling methods disagree");
-#endif
   for (const HoleFace &f : scratch_.hole_faces) {
     const TranslatedPoint &a = polygon[std::size_t(f[0])].point, &b = polygon[std::size_t(f[1])].point,
                           &c = polygon[std::size_t(f[2])].point;
     // The lifts, certified, skip the point cache (one test per new face).
-    if (kernel_->large_circumdisk(a, b, c, polygon[std::size_t(f[0])].certified(),
-                                  polygon[std::size_t(f[1])].certified(), polygon[std::size_t(f[2])].certified()) > 0)
+    if constexpr (lifts) {
+      if (kernel_->large_circumdisk(a, b, c, polygon[std::size_t(f[0])].certified(),
+                                    polygon[std::size_t(f[1])].certified(), polygon[std::size_t(f[2])].certified()) > 0)
+        return false;
+    } else if (kernel_->large_circumdisk(a, b, c) > 0) {
       return false;
+    }
     scratch_.new_faces.push_back({{Corner{polygon[std::size_t(f[0])].vertex, a.translation},
                            Corner{polygon[std::size_t(f[1])].vertex, b.translation},
                            Corner{polygon[std::size_t(f[2])].vertex, c.translation}}});
@@ -126,5 +144,7 @@ std::size_t BasicTriangulation<Geometry>::remove_dummies() {
 
 template bool Triangulation::remove(uint32_t);
 template std::size_t Triangulation::remove_dummies();
+template bool PolygonTriangulation::remove(uint32_t);
+template std::size_t PolygonTriangulation::remove_dummies();
 
 }  // namespace hdt::mesh

@@ -50,7 +50,7 @@ template Triangulation::BasicTriangulation(std::unique_ptr<MgGeometry>, Triangul
 template Triangulation::BasicTriangulation(const DummyTemplate &);
 
 // Polygon surfaces': what their triangulations support so far (insertion,
-// location, stars, validation), each file instantiating its part.
+// removal, location, stars, validation), each file instantiating its part.
 template PolygonTriangulation::BasicTriangulation(std::unique_ptr<PolygonGeometry>, std::vector<Vertex>, std::vector<bool>,
                                                   std::vector<Face>);
 template PolygonTriangulation::BasicTriangulation(std::unique_ptr<PolygonGeometry>, PolygonTriangulation::Empty);

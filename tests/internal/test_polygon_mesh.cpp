@@ -215,6 +215,39 @@ void check_dummies(const FundamentalPolygon &P, const char *name) {
   ck_assert_uint_eq(t.vertex_count(), V + 300);
 }
 
+// Dummies first, then n points of the fundamental set inserted; every dummy
+// removed (remove_dummies) and then every seventh point: the faces must be
+// the oracle's on the points left, which for the Bolza octagon are the
+// built-in M_2's (test_polygon_brute_force).
+void check_removal(const FundamentalPolygon &P, const char *name, int n, double reach, uint64_t seed) {
+  const FieldLock lock(P.field() != nullptr);
+  PolygonTriangulation t = hdt::dummies::new_polygon_triangulation(P);
+  const std::vector<Point> z = fundamental_set_points(P, n, reach, seed);
+  std::vector<double> xy;
+  for (const Point &p : z) xy.insert(xy.end(), {p.real(), p.imag()});
+  std::vector<uint32_t> ids(z.size());
+  t.insert_many(xy.data(), z.size(), ids.data());
+  ck_assert_msg(t.remove_dummies() == 0, "%s: %zu dummies stay", name, t.dummy_count());
+  std::vector<Point> kept;
+  std::vector<int> index(t.vertices().size(), -1);
+  std::size_t removed = 0;
+  for (std::size_t i = 0; i < z.size(); ++i) {
+    if (i % 7 == 3 && t.remove(ids[i])) {
+      ++removed;
+      continue;
+    }
+    index[ids[i]] = int(kept.size());
+    kept.push_back(z[i]);
+  }
+  t.validate();
+  ck_assert_uint_gt(removed, z.size() / 10);
+  const OracleResult R = polygon_delaunay(P, kept, quarter_systole(P));
+  ck_assert_msg(R.status == OracleStatus::complete, "%s: oracle: %s", name, R.why.c_str());
+  compare(mesh_keys(t, index), oracle_keys(R, t), name);
+  std::printf("%s: dummies and %zu points removed, %zu faces as the oracle's on %zu points\n", name, removed,
+              t.faces().size(), kept.size());
+}
+
 }  // namespace
 
 START_TEST(dummy_points_on_polygons) {
@@ -223,6 +256,14 @@ START_TEST(dummy_points_on_polygons) {
   for (uint64_t seed = 1; seed <= 3; ++seed) check_dummies(random_octagon(seed), "random octagon");
   check_dummies(random_symmetric_polygon(5, 4), "decagon, two cycles");
   check_dummies(FundamentalPolygon(genus_3_commutator_12_gon()), "commutator 12-gon");
+}
+END_TEST
+
+START_TEST(removals) {
+  check_removal(bolza(), "bolza", 80, 0.85, 6);
+  check_removal(bolza("2 3 0 1 6 7 4 5"), "commutator bolza", 150, 0.85, 7);
+  const CompactOctagon O = compact_random_octagon();
+  check_removal(O.polygon, "random octagon", 220, O.reach, 8);
 }
 END_TEST
 
@@ -282,5 +323,6 @@ int main() {
     tcase_add_test(tc, random_rational_octagon);
     tcase_add_test(tc, points_outside_the_polygon);
     tcase_add_test(tc, dummy_points_on_polygons);
+    tcase_add_test(tc, removals);
   });
 }
