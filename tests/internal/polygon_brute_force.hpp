@@ -61,6 +61,7 @@
 #include <map>
 #include <memory>
 #include <queue>
+#include <stdexcept>
 #include <string>
 #include <unordered_set>
 #include <utility>
@@ -391,6 +392,28 @@ inline std::vector<std::complex<double>> fundamental_set_points(const Fundamenta
     const Representative rep = reduce(e);
     if (rep.crossings == 0 && rep.point == e) z.push_back({x, y});
   }
+  return z;
+}
+
+// Two points on each vertex's diagonal, a little inside P (hyperbolically
+// about 0.3 and 0.8 from the vertex at Euclidean radius 0.93), at random
+// radii and angles (symmetric points would be cocircular): uniform points
+// of the disk are sparse, hyperbolically, in the corners. Each is checked
+// to be in P's fundamental set.
+inline std::vector<std::complex<double>> near_vertex_points(const FundamentalPolygon &P, uint64_t seed) {
+  FieldLock lock(P.field() != nullptr);
+  const Reduction reduce(P);
+  std::vector<std::complex<double>> z;
+  uint64_t state = seed;
+  for (int k = 0; k < P.side_count(); ++k)
+    for (const double s0 : {0.985, 0.95}) {
+      const double s = s0 + 0.01 * uniform01(&state), turn = 0.002 * (uniform01(&state) - 0.5);
+      const std::complex<double> c = P.vertex_double(k) * s * std::polar(1.0, turn);
+      const Complex e = P.exact_point(c.real(), c.imag());
+      const Representative rep = reduce(e);
+      if (rep.crossings != 0 || rep.point != e) throw std::logic_error("near_vertex_points: a point outside P");
+      z.push_back(c);
+    }
   return z;
 }
 

@@ -88,8 +88,8 @@ void print(const char *name, const OracleResult &R, int n) {
 
 // The built-in M_2 after inserting z and removing the dummies: its faces'
 // keys, vertex ids mapped to the indices of z.
-std::vector<Key> built_in_keys(const std::vector<Point> &z) {
-  hdt::mesh::Triangulation t = hdt::dummies::new_triangulation(2);
+std::vector<Key> built_in_keys(int genus, const std::vector<Point> &z) {
+  hdt::mesh::Triangulation t = hdt::dummies::new_triangulation(genus);
   std::vector<double> xy;
   for (const Point &p : z) xy.insert(xy.end(), {p.real(), p.imag()});
   std::vector<uint32_t> ids(z.size());
@@ -167,27 +167,30 @@ void check_polygon(const FundamentalPolygon &P, const char *name, int n, double 
 
 }  // namespace
 
-// The built-in F_2 has v_k at angle (2k+1) pi/8, radius sqrt(cos(pi/4)) =
-// 2^{-1/4}: the vertices of test_polygons.hpp's Bolza octagon, no
-// rotation; its side s_k (v_{k-1} to v_k) is the polygon's side k - 1, and
-// its generator g_k (s_{k+4} onto s_k) the polygon's pairing(k - 1): the
-// same group, compared as canonical matrices [[1, b], [c, d]].
-START_TEST(bolza_vertices_are_the_built_in_ones) {
-  const FundamentalPolygon P = bolza();
-  hdt::mesh::Triangulation t = hdt::dummies::new_triangulation(2);
+// The built-in F_g has v_k at angle (2k+1) pi/4g, radius sqrt(cos(pi/2g)):
+// at genus 2 the vertices of test_polygons.hpp's Bolza octagon, at genus 3
+// those of its regular 12-gon, no rotation; its side s_k (v_{k-1} to v_k)
+// is the polygon's side k - 1, and its generator g_k (s_{k+2g} onto s_k)
+// the polygon's pairing(k - 1): the same group, compared as canonical
+// matrices [[1, b], [c, d]].
+void check_built_in_vertices(const FundamentalPolygon &P, int genus) {
+  hdt::mesh::Triangulation t = hdt::dummies::new_triangulation(genus);
   FieldLock lock(true);
   auto d = [](const Complex &e) { return Point(static_cast<double>(e.re), static_cast<double>(e.im)); };
-  for (int k = 0; k < 8; ++k) {
+  const int n = 4 * genus;
+  for (int k = 0; k < n; ++k) {
     const auto v = hdt::surface::vertex(t.surface().presentation(), k);
     ck_assert(std::abs(P.vertex_double(k) - Point(v.re, v.im)) < 1e-15);
     const auto &g = t.table().moebius(t.table().intern(hdt::group::Word{k}));
     const Point a(g.a.re, g.a.im), b(g.b.re, g.b.im);
-    const Element e(P.pairing((k + 7) % 8));
+    const Element e(P.pairing((k + n - 1) % n));
     const Moebius &m = e.matrix();
     ck_assert(std::abs(d(m.b) - b / a) < 1e-12 && std::abs(d(m.c) - std::conj(b) / a) < 1e-12 &&
               std::abs(d(m.d) - std::conj(a) / a) < 1e-12);
   }
 }
+
+START_TEST(bolza_vertices_are_the_built_in_ones) { check_built_in_vertices(bolza(), 2); }
 END_TEST
 
 START_TEST(bolza_polygon_equals_the_built_in_m2) {
@@ -198,7 +201,7 @@ START_TEST(bolza_polygon_equals_the_built_in_m2) {
     const OracleResult R = polygon_delaunay(P, z, 1.0);
     print("bolza vs M_2", R, n);
     ck_assert_msg(R.status == OracleStatus::complete, "%s", R.why.c_str());
-    compare_keys(built_in_keys(z), oracle_keys(R));
+    compare_keys(built_in_keys(2, z), oracle_keys(R));
     faces += R.faces.size();
   }
   std::printf("bolza vs M_2: %zu faces equal\n", faces);
@@ -216,6 +219,22 @@ START_TEST(random_rational_octagon) {
 END_TEST
 
 START_TEST(regular_12_gon_of_genus_3) { check_polygon(FundamentalPolygon(genus_3_12_gon()), "12-gon", 60, 0.94, 1.2, 6); }
+END_TEST
+
+// M_3 as a polygon: the regular 12-gon's vertices and pairings are the
+// built-in F_3's, and the oracle's faces the built-in triangulation's.
+START_TEST(regular_12_gon_equals_the_built_in_m3) {
+  const FundamentalPolygon P(genus_3_12_gon());
+  check_built_in_vertices(P, 3);
+  // Uniform points of the disk are sparse, hyperbolically, in the corners,
+  // where the built-in vertex site v_0 stays unless points come near it.
+  std::vector<Point> z = fundamental_set_points(P, 100, 0.94, 11);
+  for (const Point &c : near_vertex_points(P, 12)) z.push_back(c);
+  const OracleResult R = polygon_delaunay(P, z, 1.2);
+  print("12-gon vs M_3", R, int(z.size()));
+  ck_assert_msg(R.status == OracleStatus::complete, "%s", R.why.c_str());
+  compare_keys(built_in_keys(3, z), oracle_keys(R));
+}
 END_TEST
 
 // Four points on one circle about 0 and none inside it: the circle of
@@ -272,6 +291,7 @@ int main() {
     tcase_add_test(tc, commutator_bolza);
     tcase_add_test(tc, random_rational_octagon);
     tcase_add_test(tc, regular_12_gon_of_genus_3);
+    tcase_add_test(tc, regular_12_gon_equals_the_built_in_m3);
     tcase_add_test(tc, too_sparse_or_too_small_fails);
     tcase_add_test(tc, cocircular_points_are_degenerate);
     tcase_add_test(tc, exact_signs_give_the_same_faces);

@@ -219,10 +219,13 @@ void check_dummies(const FundamentalPolygon &P, const char *name) {
 // removed (remove_dummies) and then every seventh point: the faces must be
 // the oracle's on the points left, which for the Bolza octagon are the
 // built-in M_2's (test_polygon_brute_force).
-void check_removal(const FundamentalPolygon &P, const char *name, int n, double reach, uint64_t seed) {
+void check_removal(const FundamentalPolygon &P, const char *name, int n, double reach, uint64_t seed,
+                   bool corners = false) {
   const FieldLock lock(P.field() != nullptr);
   PolygonTriangulation t = hdt::dummies::new_polygon_triangulation(P);
-  const std::vector<Point> z = fundamental_set_points(P, n, reach, seed);
+  std::vector<Point> z = fundamental_set_points(P, n, reach, seed);
+  if (corners)
+    for (const Point &c : near_vertex_points(P, seed)) z.push_back(c);
   std::vector<double> xy;
   for (const Point &p : z) xy.insert(xy.end(), {p.real(), p.imag()});
   std::vector<uint32_t> ids(z.size());
@@ -264,6 +267,9 @@ START_TEST(removals) {
   check_removal(bolza("2 3 0 1 6 7 4 5"), "commutator bolza", 150, 0.85, 7);
   const CompactOctagon O = compact_random_octagon();
   check_removal(O.polygon, "random octagon", 220, O.reach, 8);
+  // M_3 as a polygon (test_polygon_brute_force: its oracle's faces are the
+  // built-in M_3's).
+  check_removal(FundamentalPolygon(genus_3_12_gon()), "regular 12-gon", 100, 0.94, 11, true);
 }
 END_TEST
 
