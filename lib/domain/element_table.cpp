@@ -35,13 +35,8 @@ ElementId ElementTable::compose(ElementId a, ElementId b) {
 // Cached both ways: the inverse of the inverse is known at once.
 ElementId ElementTable::inverse(ElementId a) {
   if (a < inverses_.size() && inverses_[a] != kNone) return inverses_[a];
-  if (entries_.at(a).inverse == kNone) {
-    const ElementId id = intern(domain::inverse(element(a)));
-    entries_[a].inverse = id;
-    entries_[id].inverse = a;
-  }
-  const ElementId id = entries_[a].inverse;
-  if (inverses_.size() < entries_.size()) inverses_.resize(entries_.size(), kNone);
+  const ElementId id = intern(domain::inverse(element(a)));
+  inverses_.resize(entries_.size(), kNone);
   inverses_[a] = id, inverses_[id] = a;
   return id;
 }

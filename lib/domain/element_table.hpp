@@ -41,7 +41,6 @@ class ElementTable {
   struct Entry {
     Element element;
     BallIsometry ball;
-    ElementId inverse = kNone;
   };
 
   std::deque<Entry> entries_;
@@ -49,7 +48,7 @@ class ElementTable {
   std::unordered_map<std::uint64_t, ElementId> products_;  // key a << 32 | b
   // The triangulation's hot path asks the same few products and inverses
   // again and again: a direct-mapped cache of recent products in front of
-  // the map, and the inverses by id in a plain vector (kNone: not yet).
+  // the map; the inverses by id (kNone: not yet), each pair set both ways.
   struct RecentProduct {
     std::uint64_t key = ~std::uint64_t(0);
     ElementId id = 0;

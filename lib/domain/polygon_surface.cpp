@@ -57,9 +57,12 @@ ElementId PolygonSurface::home(double x, double y) {
 }
 
 std::complex<double> PolygonSurface::image(ElementId h, double x, double y) const {
-  const BallIsometry &U = table_.ball(h);
-  const std::complex<double> a(real(U.a).mid(), imag(U.a).mid()), b(real(U.b).mid(), imag(U.b).mid());
-  const std::complex<double> z(x, y);
+  while (rounded_.size() <= h) {
+    const BallIsometry &U = table_.ball(ElementId(rounded_.size()));
+    rounded_.push_back({std::complex<double>(real(U.a).mid(), imag(U.a).mid()),
+                        std::complex<double>(real(U.b).mid(), imag(U.b).mid())});
+  }
+  const std::complex<double> a = rounded_[h][0], b = rounded_[h][1], z(x, y);
   return (a * z + b) / (std::conj(b) * z + std::conj(a));
 }
 

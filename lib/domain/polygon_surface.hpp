@@ -13,6 +13,7 @@
 // a surface over a number field.
 #pragma once
 
+#include <array>
 #include <complex>
 #include <cstddef>
 #include <optional>
@@ -47,8 +48,9 @@ class PolygonSurface {
   // outside the open disk.
   ElementId home(double x, double y);
 
-  // h(x + iy) in double, from h's SU(1,1) ball (about 1e-15 relative: for
-  // the walk's starting points and pictures, never for a decision).
+  // h(x + iy) in double, from h's SU(1,1) ball rounded (about 1e-15
+  // relative: for the walk's starting points and pictures, never for a
+  // decision); the rounded matrix is kept per element.
   std::complex<double> image(ElementId h, double x, double y) const;
 
   // The systole, certified (systole.hpp), computed on first use.
@@ -65,6 +67,7 @@ class PolygonSurface {
   PolygonKernel kernel_;
   Reduction reduction_;
   std::vector<ElementId> pairings_;
+  mutable std::vector<std::array<std::complex<double>, 2>> rounded_;  // (a, b) by element id, as far as asked
   std::optional<Systole> systole_;
   std::optional<Number> threshold_;
 };

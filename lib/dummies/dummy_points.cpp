@@ -65,9 +65,11 @@ class DummyBuilder {
   void build_polygon() {
     domain::PolygonSurface &S = t_.surface();
     const double sys = S.systole().length.lo;
-    // The points are pairwise at least sys/4 apart (paper, section 5), so
-    // disks of radius sys/8 about them are disjoint: at most the area
-    // 4 pi (g - 1) over a disk's 2 pi (cosh(sys/8) - 1).
+    // Each inserted circumcentre is at least sys/4 (up to rounding) from
+    // every earlier point, the centre of an empty circle that large (paper,
+    // section 5), so disks of radius sys/8 about the inserted points are
+    // disjoint: at most the area 4 pi (g - 1) over a disk's
+    // 2 pi (cosh(sys/8) - 1) of them, the fan's few points besides.
     const double packing = 2 * (t_.genus() - 1) / (std::cosh(sys / 8) - 1);
     triangulate(std::cosh(sys / 4), std::size_t(std::min(2 * packing, 1e7)) + 256);
     e_.compact_ids();
