@@ -70,7 +70,7 @@ HDT_API const char *hdt_last_error_message(void) HDT_NOEXCEPT;
    a later function can test at compile time, e.g. hdt_save (HDT_0.4) with
    #if HDT_VERSION >= 400. hdt_version() is the library's own at run time. */
 #define HDT_VERSION_MAJOR 0
-#define HDT_VERSION_MINOR 7
+#define HDT_VERSION_MINOR 8
 #define HDT_VERSION_PATCH 0
 #define HDT_VERSION (HDT_VERSION_MAJOR * 10000 + HDT_VERSION_MINOR * 100 + HDT_VERSION_PATCH)
 
@@ -745,9 +745,10 @@ HDT_API hdt_status hdt_set_progress(hdt_triangulation *t, hdt_progress_fn fn, vo
    calls on surfaces with coordinates in a number field (and reading a text
    with a field line) are serialized by one process-wide lock, since the
    number-field library refines a shared embedding; rational surfaces run in
-   parallel. This release reads, checks,
-   describes and draws such surfaces, with their systole, neighbour count
-   and representatives; triangulating them comes in a later node. */
+   parallel. These calls read, check,
+   describe and draw such surfaces, with their systole, neighbour count
+   and representatives; hdt_create_on_surface (HDT_0.8, below) triangulates
+   them. */
 typedef struct hdt_surface hdt_surface; /* opaque */
 
 /* A surface from the text of its fundamental polygon (length bytes, no NUL
@@ -843,6 +844,45 @@ HDT_API hdt_status hdt_surface_representative(const hdt_surface *s, double x, do
    with capacity > 0; HDT_ENOMEM. */
 HDT_API hdt_status hdt_surface_svg(const hdt_surface *s, double size, char *text, size_t capacity,
                                    size_t *length) HDT_NOEXCEPT;
+
+/* ---- Triangulations of surfaces given by a polygon (symbol version HDT_0.8) ----
+   A triangulation handle on a surface s from hdt_surface_from_polygon or
+   hdt_surface_random_symmetric, made as hdt_create makes one for M_g: the
+   paper's Algorithm 1 on s (dummy points in the polygon, each face's
+   circumdiameter certified below sys/2), then the same Delaunay insertion
+   and removal with exact predicates on s's group. Translation ids are s's
+   group elements: 0 is the identity, equal elements have equal ids;
+   hdt_translation_word gives an id's word in the pairings (letter k is the
+   pairing of side k, as for hdt_surface_representative), and
+   hdt_translation_matrix its SU(1,1) form as hdt_surface_pairing does (the
+   midpoint of a certified enclosure: a few units in the last place).
+   Vertex points are reported as the points inserted (the representative in
+   the polygon of each, rounded, for a point given outside it).
+   These calls work on such a handle as on an M_g one: hdt_destroy,
+   hdt_genus, hdt_insert, hdt_insert_many (with progress and cancellation),
+   hdt_remove_vertex, hdt_remove_dummies, hdt_vertex_count,
+   hdt_dummy_count, hdt_vertex_id_bound, hdt_face_count, hdt_vertex_point,
+   hdt_vertex_is_dummy, hdt_vertices, hdt_faces, hdt_translation_word,
+   hdt_translation_matrix, hdt_locate, hdt_nearest_vertex, hdt_validate,
+   hdt_face_neighbours, hdt_edge_count and hdt_set_progress. Every other
+   call taking a triangulation (the dual, refinement, quality, homology,
+   saving, hdt_svg) answers HDT_ENOTSUP and changes nothing; later releases
+   add them. On a surface over a number field, every call holds the
+   process-wide field lock (see above). */
+
+/* A triangulation of s holding only its dummy points. s is only read: the
+   triangulation keeps its own copy of the polygon, and s may be destroyed
+   at once. *out is NULL on failure: HDT_EINVAL for out or s NULL;
+   HDT_ENOTSUP where the systole's computation refuses the polygon (as
+   hdt_surface_systole does) or the systole is so small that the dummy set
+   could exceed 10^6 points (refused before any is built); HDT_ENOMEM.
+   Time: well under a second for octagons and decagons (docs/polygons.md). */
+HDT_API hdt_status hdt_create_on_surface(hdt_triangulation **out, const hdt_surface *s) HDT_NOEXCEPT;
+/* The surface t triangulates: *out receives a new surface (the caller
+   destroys it) with the same polygon, exactly, when t was made by
+   hdt_create_on_surface, and NULL when t is on a built-in M_g (hdt_create,
+   hdt_load). HDT_EINVAL for t or out NULL, or t busy; HDT_ENOMEM. */
+HDT_API hdt_status hdt_triangulation_surface(const hdt_triangulation *t, hdt_surface **out) HDT_NOEXCEPT;
 
 #ifdef __cplusplus
 }

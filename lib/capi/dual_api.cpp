@@ -25,17 +25,18 @@ extern "C" {
 HDT_API hdt_status hdt_face_neighbours(const hdt_triangulation *t, uint32_t *faces, int32_t *translations,
                                        size_t capacity, size_t *count) HDT_NOEXCEPT {
   return guarded("hdt_face_neighbours", [&] {
-    const Triangulation &tri = of(t);
-    const auto &all = tri.faces();
-    if (!list_fits(all.size(), capacity, count, "faces")) return HDT_OK;
-    // Nothing to compute: the canonical copies and the translations between
-    // them are hdt_faces' as stored.
-    for (std::size_t f = 0; f < all.size(); ++f)
-      for (int i = 0; i < 3; ++i) {
-        if (faces) faces[3 * f + i] = all[f].n[i];
-        if (translations) translations[3 * f + i] = all[f].nt[i];
-      }
-    return HDT_OK;
+    return hdt::capi::visit(t, [&](const auto &tri) {
+      const auto &all = tri.faces();
+      if (!list_fits(all.size(), capacity, count, "faces")) return HDT_OK;
+      // Nothing to compute: the canonical copies and the translations
+      // between them are hdt_faces' as stored.
+      for (std::size_t f = 0; f < all.size(); ++f)
+        for (int i = 0; i < 3; ++i) {
+          if (faces) faces[3 * f + i] = all[f].n[i];
+          if (translations) translations[3 * f + i] = all[f].nt[i];
+        }
+      return HDT_OK;
+    });
   });
 }
 
@@ -65,7 +66,7 @@ HDT_API hdt_status hdt_vertex_star(const hdt_triangulation *t, uint32_t v, uint3
 }
 
 HDT_API size_t hdt_edge_count(const hdt_triangulation *t) HDT_NOEXCEPT {
-  return t ? t->tri.faces().size() / 2 * 3 : 0;
+  return hdt::capi::count(t, [](const auto &tri) { return tri.faces().size() / 2 * 3; });
 }
 
 HDT_API hdt_status hdt_edges(const hdt_triangulation *t, uint32_t *vertices, int32_t *translations, uint32_t *faces,

@@ -1,16 +1,22 @@
 // The opaque handle behind hdt_triangulation: a core triangulation, made
-// by hdt_create (a genus) or hdt_load (a restored triangulation), shared by
-// the files of lib/capi that take one.
+// by hdt_create (a genus), hdt_load (a restored triangulation) or
+// hdt_create_on_surface (a surface given by a polygon), shared by the files
+// of lib/capi that take one. It holds one of the two kinds of mesh: M_g's
+// (every call) or a polygon surface's (the calls hdt.h lists for it; the
+// others answer HDT_ENOTSUP).
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <utility>
+#include <variant>
 
 #include "capi/guard.hpp"
 #include "dual/outputs.hpp"
 #include "dummies/dummy_points.hpp"
 #include "hdt.h"
+#include "domain/field_lock.hpp"
+#include "mesh/polygon_triangulation.hpp"
 #include "mesh/progress.hpp"
 #include "mesh/triangulation.hpp"
 
@@ -18,7 +24,11 @@ struct hdt_triangulation {
   // The genus's dummy set (built on the process's first call for it).
   explicit hdt_triangulation(int genus) : tri(hdt::dummies::new_triangulation(genus)) {}
   explicit hdt_triangulation(hdt::mesh::Triangulation &&t) : tri(std::move(t)) {}
-  hdt::mesh::Triangulation tri;
+  // in_field: the polygon's coordinates lie in a number field, so every
+  // call that computes on it holds the field lock (domain/field_lock.hpp).
+  hdt_triangulation(hdt::mesh::PolygonTriangulation &&t, bool in_field) : tri(std::move(t)), in_field(in_field) {}
+  std::variant<hdt::mesh::Triangulation, hdt::mesh::PolygonTriangulation> tri;
+  const bool in_field = false;
   hdt::mesh::Progress progress;  // hdt_set_progress; none by default
   // The dual outputs' caches and scratch, kept from call to call. Const
   // queries use them: one thread uses a handle at a time (hdt.h).
@@ -42,15 +52,44 @@ inline void check_usable(const hdt_triangulation *t) {
   if (t->busy) throw ApiError(HDT_EINVAL, std::string("the triangulation is busy in ") + t->busy);
 }
 
-// The triangulation behind a handle: const for a const handle (queries fill
-// only the core's documented caches).
+// The M_g triangulation behind a handle, for the calls that only M_g's
+// meshes support so far: HDT_ENOTSUP on a polygon surface's. Const for a
+// const handle (queries fill only the core's documented caches).
+[[noreturn]] void not_on_polygons();
 inline mesh::Triangulation &of(hdt_triangulation *t) {
   check_usable(t);
-  return t->tri;
+  if (auto *mg = std::get_if<mesh::Triangulation>(&t->tri)) return *mg;
+  not_on_polygons();
 }
 inline const mesh::Triangulation &of(const hdt_triangulation *t) {
+  return of(const_cast<hdt_triangulation *>(t));
+}
+
+// f(triangulation) on either kind of mesh, under the field lock where the
+// surface needs it; the calls that both kinds support.
+template <class F>
+decltype(auto) visit(hdt_triangulation *t, F &&f) {
   check_usable(t);
-  return t->tri;
+  const domain::FieldLock lock(t->in_field);
+  return std::visit(std::forward<F>(f), t->tri);
+}
+template <class F>
+decltype(auto) visit(const hdt_triangulation *t, F &&f) {
+  check_usable(t);
+  const domain::FieldLock lock(t->in_field);
+  return std::visit(std::forward<F>(f), std::as_const(t->tri));
+}
+// The same for the counts, which take no lock and answer for NULL too.
+template <class F>
+auto count(const hdt_triangulation *t, F &&f) -> decltype(f(std::declval<const mesh::Triangulation &>())) {
+  if (!t) return {};
+  return std::visit(std::forward<F>(f), t->tri);
+}
+
+// Frees a handle (its mesh's numbers under the field lock).
+inline void destroy(hdt_triangulation *t) {
+  const domain::FieldLock lock(t->in_field);
+  delete t;
 }
 
 // A long call that runs the caller's progress function (hdt_insert_many,
@@ -62,7 +101,8 @@ inline const mesh::Triangulation &of(const hdt_triangulation *t) {
 // guard must be the last thing in the call to touch it.
 class LongCall {
  public:
-  LongCall(hdt_triangulation *t, const char *function) : tri_(of(t)), t_(t), caller_(t->progress) {
+  LongCall(hdt_triangulation *t, const char *function)
+      : t_((check_usable(t), t)), lock_(t->in_field), caller_(t->progress) {
     if (caller_.report) progress_ = {&report_unless_destroyed, this, caller_.interval};
     t->busy = function;
   }
@@ -70,10 +110,18 @@ class LongCall {
   LongCall &operator=(const LongCall &) = delete;
   ~LongCall() {
     t_->busy = nullptr;
-    if (t_->destroy_pending) delete t_;
+    if (t_->destroy_pending) delete t_;  // the lock is still held
   }
 
-  mesh::Triangulation &tri() const { return tri_; }
+  // The M_g mesh (HDT_ENOTSUP on a polygon surface's), or f on either.
+  mesh::Triangulation &tri() const {
+    if (auto *mg = std::get_if<mesh::Triangulation>(&t_->tri)) return *mg;
+    not_on_polygons();
+  }
+  template <class F>
+  decltype(auto) visit(F &&f) const {
+    return std::visit(std::forward<F>(f), t_->tri);
+  }
   // For the core: the caller's function, read once; none when unset.
   const mesh::Progress *progress() const { return &progress_; }
 
@@ -86,8 +134,8 @@ class LongCall {
     return stop != 0 || call.t_->destroy_pending;
   }
 
-  mesh::Triangulation &tri_;
   hdt_triangulation *t_;
+  const domain::FieldLock lock_;
   const mesh::Progress caller_;  // the handle's progress function as the call began
   mesh::Progress progress_;      // what the core calls: none, or the function above
 };

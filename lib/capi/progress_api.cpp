@@ -9,14 +9,13 @@
 
 using hdt::capi::ApiError;
 using hdt::capi::guarded;
-using hdt::capi::of;
 
 extern "C" {
 
 HDT_API hdt_status hdt_set_progress(hdt_triangulation *t, hdt_progress_fn fn, void *user,
                                     double interval_seconds) HDT_NOEXCEPT {
   return guarded("hdt_set_progress", [&] {
-    of(t);
+    hdt::capi::check_usable(t);
     if (!(interval_seconds >= 0)) throw ApiError(HDT_EINVAL, "interval_seconds must be >= 0 (and not NaN)");
     t->progress = {fn, fn ? user : nullptr, interval_seconds};
     return HDT_OK;

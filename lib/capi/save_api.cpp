@@ -14,10 +14,10 @@ extern "C" {
 
 HDT_API hdt_status hdt_save(const hdt_triangulation *t, void *bytes, size_t capacity, size_t *size) HDT_NOEXCEPT {
   return guarded("hdt_save", [&] {
-    hdt::capi::check_usable(t);
+    const hdt::mesh::Triangulation &tri = hdt::capi::of(t);
     if (!size) throw ApiError(HDT_EINVAL, "size must not be NULL");
     if (capacity > 0 && !bytes) throw ApiError(HDT_EINVAL, "bytes is NULL but capacity is " + std::to_string(capacity));
-    const std::size_t n = hdt::capi::saved_size(t->tri);
+    const std::size_t n = hdt::capi::saved_size(tri);
     if (capacity == 0) {
       *size = n;
       return HDT_OK;
@@ -27,7 +27,7 @@ HDT_API hdt_status hdt_save(const hdt_triangulation *t, void *bytes, size_t capa
       throw ApiError(HDT_EBUFS, "the saved triangulation needs " + std::to_string(n) + " bytes, the buffer holds " +
                                     std::to_string(capacity));
     }
-    hdt::capi::write_saved(t->tri, static_cast<unsigned char *>(bytes));
+    hdt::capi::write_saved(tri, static_cast<unsigned char *>(bytes));
     *size = n;
     return HDT_OK;
   });

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "domain/ball.hpp"
+#include "domain/base_point.hpp"
 #include "domain/real_bounds.hpp"
 #include "domain/word.hpp"
 
@@ -45,7 +46,8 @@ PolygonSurface::PolygonSurface(FundamentalPolygon polygon)
     : polygon_(std::move(polygon)),
       table_(polygon_.vertex(0).re),
       kernel_(polygon_, table_),
-      reduction_(polygon_) {
+      reduction_(polygon_),
+      base_(base_point(polygon_)) {
   for (const Element &g : pairing_elements(polygon_)) pairings_.push_back(table_.intern(g));
 }
 
@@ -56,14 +58,31 @@ ElementId PolygonSurface::home(double x, double y) {
   return h;
 }
 
-std::complex<double> PolygonSurface::image(ElementId h, double x, double y) const {
+std::array<std::complex<double>, 2> PolygonSurface::rounded(ElementId h) const {
   while (rounded_.size() <= h) {
     const BallIsometry &U = table_.ball(ElementId(rounded_.size()));
     rounded_.push_back({std::complex<double>(real(U.a).mid(), imag(U.a).mid()),
                         std::complex<double>(real(U.b).mid(), imag(U.b).mid())});
   }
-  const std::complex<double> a = rounded_[h][0], b = rounded_[h][1], z(x, y);
+  return rounded_[h];
+}
+
+std::complex<double> PolygonSurface::image(ElementId h, double x, double y) const {
+  const auto [a, b] = rounded(h);
+  const std::complex<double> z(x, y);
   return (a * z + b) / (std::conj(b) * z + std::conj(a));
+}
+
+std::vector<int> PolygonSurface::word(ElementId h) {
+  const Representative t = reduction_(table_.element(h).apply(base_));
+  std::vector<int> letters;
+  ElementId check = kIdentityId;
+  for (auto k = t.word.letters.rbegin(); k != t.word.letters.rend(); ++k) {
+    letters.push_back(polygon_.paired(*k));  // g_k^-1 = g_paired(k)
+    check = table_.compose(check, pairing(letters.back()));
+  }
+  if (check != h) throw std::logic_error("domain::PolygonSurface: a word that does not compose to its element");
+  return letters;
 }
 
 const Systole &PolygonSurface::systole() {

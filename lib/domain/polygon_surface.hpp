@@ -52,6 +52,16 @@ class PolygonSurface {
   // relative: for the walk's starting points and pictures, never for a
   // decision); the rounded matrix is kept per element.
   std::complex<double> image(ElementId h, double x, double y) const;
+  // h's SU(1,1) form (a, b), z -> (a z + b) / (conj(b) z + conj(a)), each
+  // part the midpoint of its certified ball: the matrix image() uses.
+  std::array<std::complex<double>, 2> rounded(ElementId h) const;
+
+  // h as a word in the pairings (letter k: the pairing of side k, the word
+  // w_0 w_1 ... the product g_{w_0} g_{w_1} ...). Exact: the reduction of
+  // h(b), b the interior base point, gives t with t h (b) = b, so t h = 1 as
+  // the group acts freely; h's word is t's inverted. Checked by composing
+  // the word's ids back to h.
+  std::vector<int> word(ElementId h);
 
   // The systole, certified (systole.hpp), computed on first use.
   const Systole &systole();
@@ -67,6 +77,7 @@ class PolygonSurface {
   PolygonKernel kernel_;
   Reduction reduction_;
   std::vector<ElementId> pairings_;
+  Complex base_;  // interior: word()'s witness point
   mutable std::vector<std::array<std::complex<double>, 2>> rounded_;  // (a, b) by element id, as far as asked
   std::optional<Systole> systole_;
   std::optional<Number> threshold_;

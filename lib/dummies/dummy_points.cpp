@@ -62,6 +62,7 @@ class DummyBuilder {
 
   // A polygon surface: the refined set, certified (not thinned: that takes
   // removals, which are M_g's only so far).
+  static constexpr double kPolygonDummyMax = 1e6;
   void build_polygon() {
     domain::PolygonSurface &S = t_.surface();
     const double sys = S.systole().length.lo;
@@ -71,7 +72,13 @@ class DummyBuilder {
     // disjoint: at most the area 4 pi (g - 1) over a disk's
     // 2 pi (cosh(sys/8) - 1) of them, the fan's few points besides.
     const double packing = 2 * (t_.genus() - 1) / (std::cosh(sys / 8) - 1);
-    triangulate(std::cosh(sys / 4), std::size_t(std::min(2 * packing, 1e7)) + 256);
+    // A surface with a tiny systole may need that many, each placed by a
+    // walk and flips: refused up front rather than worked at for minutes.
+    if (!(packing <= kPolygonDummyMax))
+      throw exact::Unsupported("dummy points: the systole " + std::to_string(sys) + " allows up to " +
+                               std::to_string(std::llround(packing)) + " dummy points, more than " +
+                               std::to_string(std::llround(kPolygonDummyMax)) + " are not built");
+    triangulate(std::cosh(sys / 4), std::size_t(2 * packing) + 256);
     e_.compact_ids();
     t_.validate();  // the certificate
   }

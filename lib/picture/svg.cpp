@@ -619,6 +619,14 @@ HDT_API hdt_status hdt_svg(const hdt_triangulation *t, double size, const char *
     if (capacity > 0 && !text)  // before the drawing, which copy_text would check after
       throw ApiError(HDT_EINVAL, "text is NULL but capacity is " + std::to_string(capacity));
 
+    // M_g's picture only, so far: a polygon surface's would need its
+    // polygon, pairings and neighbour copies in place of F_g's.
+    hdt_surface *surface = nullptr;
+    check(hdt_triangulation_surface(t, &surface));
+    if (surface) {
+      hdt_surface_destroy(surface);
+      throw ApiError(HDT_ENOTSUP, "not yet supported on a triangulation of a surface given by a polygon");
+    }
     Snapshot s;
     take_snapshot(t, s);
     if (flags & HDT_SVG_VORONOI) take_voronoi(t, s);

@@ -50,7 +50,7 @@ from .triangulation import (Cells, Edges, Faces, Location, Neighbours, Quality, 
                             Vertices, Voronoi)
 
 #: The version of these bindings (the library's is version()).
-__version__ = "0.7.0"
+__version__ = "0.8.0"
 
 __all__ = [
     "AlreadyExists",
