@@ -137,6 +137,9 @@ PROTOTYPES = {
     "hdt_surface_neighbour_count": (_status, (_surface, _size_p)),
     "hdt_surface_representative": (_status, (_surface, _double, _double, _double_p, _double_p, _word, _size,
                                              _size_p)),
+    # Triangulations of surfaces given by a polygon (HDT_0.8).
+    "hdt_create_on_surface": (_status, (_handle_p, _surface)),
+    "hdt_triangulation_surface": (_status, (_handle, _surface_p)),
 }
 
 

@@ -30,6 +30,7 @@ import math
 from typing import TYPE_CHECKING, Iterable, List, Optional, Sequence, Tuple, cast
 
 from ._arrays import Matrix, Point, as_lists
+from ._errors import NotSupported
 from .group import neighbour_words, word_matrix
 from .surface import polygon_side_midpoint, polygon_vertex
 
@@ -195,6 +196,8 @@ class Scene:
     BOUNDARY = 1e-9
 
     def __init__(self, triangulation: Triangulation, voronoi: bool = False) -> None:
+        if triangulation.surface is not None:  # F_g's picture only, so far
+            raise NotSupported("pictures of triangulations of surfaces given by a polygon are not supported yet")
         with triangulation._lock:
             #: The Voronoi edges (p, q) as placed by Triangulation.voronoi(), with voronoi.
             self.voronoi = [tuple(tuple(point) for point in edge)

@@ -68,6 +68,7 @@ from ._interrupt import interruptible
 from ._convert import c_coordinate, c_genus, c_translation, c_vertex, call_doubles, call_point, call_word
 from ._errors import HandleClosed, InternalError, InvalidArgument, Status, check, error_for_status
 from ._lib import lib
+from .surface import Surface
 
 if TYPE_CHECKING:  # for the annotations only: matplotlib and meshio are optional
     import matplotlib.axes
@@ -270,11 +271,20 @@ class Triangulation:
     _busy: Optional[str] = None  # the method whose library call is running (a signal handler may run inside it)
     _close_pending = False  # close() from inside that call: done as the call returns
 
-    def __init__(self, genus: int) -> None:
-        """A new triangulation of M_genus holding the dummy points of its genus."""
-        genus = c_genus(genus)
+    def __init__(self, genus: Union[int, Surface]) -> None:
+        """A new triangulation of M_genus holding the dummy points of its
+        genus, or, given a :class:`hdt.Surface`, of that surface holding
+        dummy points built for it (libhdt 0.8.0 on). On a surface, the
+        insertion, removal, queries, faces and neighbours work as on M_g;
+        the dual, refinement, quality, homology, saving and pictures raise
+        :class:`hdt.NotSupported` for now. The triangulation keeps its own
+        copy of the polygon: the surface may be closed afterwards."""
         handle = ctypes.c_void_p()
-        check(lib.hdt_create(ctypes.byref(handle), genus))
+        if isinstance(genus, Surface):
+            with genus._lock:
+                check(lib.hdt_create_on_surface(ctypes.byref(handle), genus._live("Triangulation")))
+        else:
+            check(lib.hdt_create(ctypes.byref(handle), c_genus(genus)))
         self._adopt(handle)
 
     def _adopt(self, handle: ctypes.c_void_p) -> None:
@@ -283,6 +293,10 @@ class Triangulation:
         self._lock = threading.RLock()
         self._handle = handle
         self._finalizer = weakref.finalize(self, _destroy, handle)
+        surface = ctypes.c_void_p()
+        check(lib.hdt_triangulation_surface(handle, ctypes.byref(surface)))
+        # The surface triangulated, None on a built-in M_g.
+        self._surface: Optional[Surface] = Surface._made(surface) if surface else None
 
     # ---- lifetime ----
 
@@ -417,6 +431,12 @@ class Triangulation:
                     f"({lib.hdt_dummy_count(handle)} dummies) faces={lib.hdt_face_count(handle)}>")
 
     # ---- counts ----
+
+    @property
+    def surface(self) -> Optional[Surface]:
+        """The :class:`hdt.Surface` triangulated (its own copy of the
+        polygon given), or None for a triangulation of the built-in M_g."""
+        return self._surface
 
     @property
     def genus(self) -> int:

@@ -20,6 +20,7 @@ import os
 from typing import TYPE_CHECKING, Iterable, Optional, Tuple, Union
 
 from ._arrays import Matrix, WordLike, as_lists
+from ._errors import NotSupported
 from .group import neighbour_words, word_matrix
 from .surface import polygon_vertex
 
@@ -96,6 +97,8 @@ def data_json(triangulation: Triangulation, *, title: Optional[str] = None, voro
     with their corners' translations (ids, canonical words, matrices), and
     with voronoi the Voronoi edges. title (plain text, or None for the
     page's default caption) is the page's heading."""
+    if triangulation.surface is not None:
+        raise NotSupported("the viewer of triangulations of surfaces given by a polygon is not supported yet")
     genus = triangulation.genus
     sides = 4 * genus
     with triangulation._lock:
