@@ -75,7 +75,7 @@ CITED_RUNS = [
     ("words_bench", ["--genus", "1024"],
      "hdt.h at HDT_GENUS_MAX and HDT_WORD_MAX_LENGTH (the linear pass, the first call of a genus)"),
     ("surface_bench", [], "docs/polygons.md (the systole's cost)"),
-    ("polygon_mesh_bench", ["--n", "100000", "--rounds", "5"], "docs/polygons.md (insertion on polygon surfaces)"),
+    ("polygon_mesh_bench", ["--n", "100000", "--rounds", "5"], "docs/polygons.md (insertion and epsilon-nets on polygon surfaces)"),
 ]
 # Figures measured once, by a command this script does not rerun (too long
 # here, or a driver that is not a program of bench/): (figure, where it was
@@ -590,7 +590,7 @@ def method(w, args, cgal, sizes):
     w("| `bench/surface_bench.c` | polygon surfaces: the exact checks of `hdt_surface_random_symmetric`'s octagons "
       "and decagons, and their certified systole |")
     w("| `bench/polygon_mesh_bench.cpp` | the same points inserted into the built-in M_2, the Bolza octagon given "
-      "as a polygon and a random rational octagon, side by side (the C++ core: polygon surfaces have no C API yet) |")
+      "as a polygon and a random rational octagon, side by side, then an epsilon-net on each (the C++ core) |")
     w("")
     sizes_text = ", ".join(f"10^{len(str(n)) - 1}" if str(n).strip("0") == "1" else str(n) for n in sizes)
     w(f"- **Points.** All programs draw from one generator, `bench/uniform_points.h` (splitmix64, seed "

@@ -864,11 +864,16 @@ HDT_API hdt_status hdt_surface_svg(const hdt_surface *s, double size, char *text
    hdt_dummy_count, hdt_vertex_id_bound, hdt_face_count, hdt_vertex_point,
    hdt_vertex_is_dummy, hdt_vertices, hdt_faces, hdt_translation_word,
    hdt_translation_matrix, hdt_locate, hdt_nearest_vertex, hdt_validate,
-   hdt_face_neighbours, hdt_edge_count and hdt_set_progress. Every other
-   call taking a triangulation (the dual, refinement, quality, homology,
-   saving, hdt_svg) answers HDT_ENOTSUP and changes nothing; later releases
-   add them. On a surface over a number field, every call holds the
-   process-wide field lock (see above). */
+   hdt_set_progress, the adjacency and the dual (hdt_face_neighbours,
+   hdt_vertex_star, hdt_vertex_stars, hdt_edge_count, hdt_edges,
+   hdt_face_points, hdt_voronoi_vertices, hdt_voronoi_edges,
+   hdt_voronoi_cell, hdt_voronoi_cells: the same constructions, from the
+   elements' certified matrices, their accuracy measured on M_g only), and
+   hdt_refine, hdt_epsilon_net and hdt_quality with the same bounds and
+   guarantees. The calls left (hdt_translation_homology, hdt_save, hdt_svg)
+   answer HDT_ENOTSUP and change nothing; later releases add them. On a
+   surface over a number field, every call holds the process-wide field
+   lock (see above). */
 
 /* A triangulation of s holding only its dummy points. s is only read: the
    triangulation keeps its own copy of the polygon, and s may be destroyed

@@ -370,6 +370,120 @@ START_TEST(bolza_octagon_is_the_built_in_m2) {
 }
 END_TEST
 
+/* The hyperbolic radius of the circle through three disk points: the
+   Euclidean circle (centre c, radius R) meets the ray from 0 through c at
+   |c| - R and |c| + R, a diameter. */
+static double circumradius(double complex a, double complex b, double complex c) {
+  const double complex ab = b - a, ac = c - a;
+  const double d = 2 * cimag(conj(ab) * ac);
+  const double complex centre = a + I * (ab * cabs(ac) * cabs(ac) - ac * cabs(ab) * cabs(ab)) / d;
+  const double R = cabs(a - centre), m = cabs(centre);
+  return atanh(m + R) - atanh(m - R);
+}
+
+static double distance(double complex p, double complex q) { return 2 * atanh(cabs(p - q) / cabs(1 - conj(p) * q)); }
+
+/* The Voronoi cells tile the surface: their areas ((k - 2) pi minus the
+   angles of each convex cell) sum to 4 pi (g - 1); the stars of one call
+   are those of one vertex at a time. */
+static void expect_dual(const hdt_triangulation *t) {
+  const size_t bound = hdt_vertex_id_bound(t), F = hdt_face_count(t);
+  size_t *offsets = malloc((bound + 1) * sizeof *offsets), count;
+  double *xy = malloc(6 * F * sizeof *xy);
+  uint32_t *faces = malloc(3 * F * sizeof *faces), *one = malloc(3 * F * sizeof *one);
+  ck_assert(offsets && xy && faces && one);
+  OK(hdt_voronoi_cells(t, offsets, xy, 3 * F, &count));
+  expect(count == 3 * F, "%zu cell corners for %zu faces", count, F);
+  double area = 0;
+  for (size_t v = 0; v < bound; ++v) {
+    const size_t k = offsets[v + 1] - offsets[v];
+    if (k == 0) continue;
+    double sum = 0;
+    for (size_t i = 0; i < k; ++i) {
+      const double *p = xy + 2 * (offsets[v] + i), *a = xy + 2 * (offsets[v] + (i + k - 1) % k),
+                   *b = xy + 2 * (offsets[v] + (i + 1) % k);
+      sum += angle(p[0] + I * p[1], b[0] + I * b[1], a[0] + I * a[1]);
+    }
+    area += (double)(k - 2) * PI - sum;
+  }
+  const double expected = 4 * PI * (hdt_genus(t) - 1);
+  expect(fabs(area - expected) < 1e-8 * expected, "the Voronoi cells' areas sum to %.17g, not %.17g", area, expected);
+  OK(hdt_vertex_stars(t, offsets, faces, NULL, NULL, 3 * F, &count));
+  for (size_t v = 0; v < bound; v += 3) {
+    if (offsets[v + 1] == offsets[v]) continue;
+    OK(hdt_vertex_star(t, (uint32_t)v, one, NULL, NULL, 3 * F, &count));
+    expect(count == offsets[v + 1] - offsets[v] && memcmp(one, faces + offsets[v], count * sizeof *one) == 0,
+           "vertex %zu's star differs between the two calls", v);
+  }
+  free(offsets), free(xy), free(faces), free(one);
+}
+
+/* The largest circumradius and ratio over the faces, and the shortest edge
+   at a vertex of id >= from, all computed here from the corners. */
+static void measure(const hdt_triangulation *t, uint32_t from, double *radius, double *ratio, double *shortest) {
+  mesh_t m = read_mesh(t);
+  *radius = *ratio = 0, *shortest = INFINITY;
+  for (size_t f = 0; f < m.F; ++f) {
+    double complex z[3];
+    double edge = INFINITY;
+    for (int i = 0; i < 3; ++i) z[i] = corner(t, &m, f, i);
+    for (int i = 0; i < 3; ++i) {
+      const double d = distance(z[(i + 1) % 3], z[(i + 2) % 3]);
+      edge = fmin(edge, d);
+      if (m.fv[3 * f + (i + 1) % 3] >= from || m.fv[3 * f + (i + 2) % 3] >= from) *shortest = fmin(*shortest, d);
+    }
+    const double r = circumradius(z[0], z[1], z[2]);
+    *radius = fmax(*radius, r), *ratio = fmax(*ratio, r / edge);
+  }
+  free_mesh(&m);
+}
+
+/* Refinement and epsilon-nets meet their bounds, measured here. */
+static void expect_refinement(const hdt_surface *s, uint64_t seed) {
+  hdt_triangulation *t = on_surface(s);
+  double *xy = wide_points(200, seed);
+  OK(hdt_insert_many(t, xy, 200, NULL));
+  expect_dual(t);
+  size_t added, unmet;
+  OK(hdt_refine(t, 0.3, 1.2, SIZE_MAX, &added, &unmet));
+  expect(unmet == 0 && added > 0, "refinement: %zu added, %zu unmet", added, unmet);
+  double radius, ratio, shortest;
+  measure(t, 0, &radius, &ratio, &shortest);
+  expect(radius <= 0.3 * (1 + 1e-6) && ratio <= 1.2 * (1 + 1e-6), "after refinement: radius %.17g, ratio %.17g",
+         radius, ratio);
+  double qa, qr, qm, qe;
+  OK(hdt_quality(t, &qa, &qr, &qm, &qe));
+  expect(fabs(qm - radius) < 1e-9 && fabs(qr - ratio) < 1e-9 * ratio, "hdt_quality: radius %.17g, ratio %.17g", qm, qr);
+  expect_delaunay(t);
+  expect_dual(t);
+  hdt_destroy(t);
+  free(xy);
+
+  t = on_surface(s);
+  const uint32_t from = (uint32_t)hdt_vertex_id_bound(t);
+  OK(hdt_epsilon_net(t, 0.1, SIZE_MAX, &added, &unmet));
+  expect(unmet == 0 && added > 0, "epsilon-net: %zu added, %zu unmet", added, unmet);
+  measure(t, from, &radius, &ratio, &shortest);
+  expect(radius <= 0.1 * (1 + 1e-6), "an epsilon-net with a face of circumradius %.17g", radius);
+  expect(shortest >= 0.1 * (1 - 1e-6), "an epsilon-net with points %.17g apart", shortest);
+  expect_delaunay(t);
+  expect_dual(t);
+  hdt_destroy(t);
+}
+
+START_TEST(dual_and_refinement) {
+  hdt_surface *s = random_surface(8, 1);
+  expect_refinement(s, 50);
+  hdt_surface_destroy(s);
+  s = random_surface(10, 4);
+  expect_refinement(s, 51);
+  hdt_surface_destroy(s);
+  s = surface_from_text(bolza_commutator);
+  expect_refinement(s, 52);
+  hdt_surface_destroy(s);
+}
+END_TEST
+
 /* The triangulation keeps its own polygon: the surface it gives back has
    the same text, and the one it was made from may go first. */
 START_TEST(surface_round_trip) {
@@ -409,8 +523,8 @@ static void expect_unchanged(const hdt_triangulation *t, size_t V, size_t F, con
   free(now);
 }
 
-/* Bad input and calls not supported yet on a polygon surface: a status,
-   a message, and nothing changed. */
+/* Bad input and the calls not supported yet on a polygon surface (homology,
+   saving, pictures): a status, a message, and nothing changed. */
 START_TEST(refusals) {
   hdt_triangulation *t = (hdt_triangulation *)1;
   expect(hdt_create_on_surface(&t, NULL) == HDT_EINVAL && t == NULL, "a NULL surface accepted");
@@ -434,19 +548,17 @@ START_TEST(refusals) {
   expect_unchanged(t, V, F, fv, "a refused removal");
 
   size_t added, unmet;
-  double r, q;
   uint8_t bytes[16];
   char text[16];
   int32_t out[8];
   double m[4];
-  expect(hdt_refine(t, 0.5, 0, 1000, &added, &unmet) == HDT_ENOTSUP, "hdt_refine");
-  expect(strstr(hdt_last_error_message(), "hdt_refine") && strstr(hdt_last_error_message(), "polygon"),
-         "the message: %s", hdt_last_error_message());
-  expect(hdt_epsilon_net(t, 0.5, 1000, &added, &unmet) == HDT_ENOTSUP, "hdt_epsilon_net");
-  expect(hdt_quality(t, &r, &q, &r, &q) == HDT_ENOTSUP, "hdt_quality");
-  expect(hdt_voronoi_vertices(t, NULL, NULL, 0, &count) == HDT_ENOTSUP, "hdt_voronoi_vertices");
-  expect(hdt_vertex_star(t, 0, NULL, NULL, NULL, 0, &count) == HDT_ENOTSUP, "hdt_vertex_star");
   expect(hdt_translation_homology(t, 0, out, 8, &count) == HDT_ENOTSUP, "hdt_translation_homology");
+  expect(strstr(hdt_last_error_message(), "hdt_translation_homology") && strstr(hdt_last_error_message(), "polygon"),
+         "the message: %s", hdt_last_error_message());
+  expect(hdt_refine(t, 0.5, 0.5, 1000, &added, &unmet) == HDT_EINVAL, "a ratio below 1 accepted");
+  expect(hdt_epsilon_net(t, NAN, 1000, &added, &unmet) == HDT_EINVAL, "a NaN epsilon accepted");
+  expect(hdt_refine(t, 1e-9, INFINITY, SIZE_MAX, &added, &unmet) == HDT_ENOMEM, "a refinement past memory accepted");
+  expect(strstr(hdt_last_error_message(), "a surface of genus 2"), "the message: %s", hdt_last_error_message());
   expect(hdt_save(t, bytes, sizeof bytes, &count) == HDT_ENOTSUP, "hdt_save");
   expect(hdt_svg(t, 400, NULL, 0, text, sizeof text, &count) == HDT_ENOTSUP, "hdt_svg");
   expect_unchanged(t, V, F, fv, "the unsupported calls");
@@ -508,6 +620,7 @@ END_TEST
 
 int main(void) {
   const TTest *const tests[] = {bolza_octagon,       bolza_commutator_octagon, random_octagons, random_decagon,
-                                bolza_octagon_is_the_built_in_m2, surface_round_trip,   refusals,        progress};
+                                bolza_octagon_is_the_built_in_m2, dual_and_refinement,
+                                surface_round_trip,  refusals,                progress};
   return run_tests("surface_triangulations", tests, sizeof tests / sizeof tests[0]);
 }

@@ -67,16 +67,20 @@ inline const mesh::Triangulation &of(const hdt_triangulation *t) {
 
 // f(triangulation) on either kind of mesh, under the field lock where the
 // surface needs it; the calls that both kinds support.
+// The lock only where needed: queries called once per vertex (stars,
+// cells) pay nothing for it on M_g.
 template <class F>
 decltype(auto) visit(hdt_triangulation *t, F &&f) {
   check_usable(t);
-  const domain::FieldLock lock(t->in_field);
+  if (!t->in_field) return std::visit(std::forward<F>(f), t->tri);
+  const domain::FieldLock lock(true);
   return std::visit(std::forward<F>(f), t->tri);
 }
 template <class F>
 decltype(auto) visit(const hdt_triangulation *t, F &&f) {
   check_usable(t);
-  const domain::FieldLock lock(t->in_field);
+  if (!t->in_field) return std::visit(std::forward<F>(f), std::as_const(t->tri));
+  const domain::FieldLock lock(true);
   return std::visit(std::forward<F>(f), std::as_const(t->tri));
 }
 // The same for the counts, which take no lock and answer for NULL too.

@@ -18,7 +18,6 @@
 using hdt::capi::ApiError;
 using hdt::capi::fail;
 using hdt::capi::guarded;
-using hdt::capi::of;
 
 namespace {
 
@@ -36,8 +35,8 @@ double memory_limit() {
 // Work that cannot finish is refused before anything changes: the vertices
 // that the radius bound certainly needs (up to the cap) would not fit in
 // memory.
-void check_room(const char *what, const hdt::mesh::Triangulation &tri, double max_radius,
-                size_t max_points) {
+template <class Tri>
+void check_room(const char *what, const Tri &tri, double max_radius, size_t max_points) {
   const double needed = hdt::dual::vertices_needed(tri.genus(), max_radius);
   const double live = double(tri.vertex_count());
   const double added = std::min(double(max_points), std::max(0.0, needed - live));
@@ -46,9 +45,9 @@ void check_room(const char *what, const hdt::mesh::Triangulation &tri, double ma
   if (bytes <= limit) return;
   char message[320];
   std::snprintf(message, sizeof message,
-                "%s to radius %.3g on M_%d needs at least %.3g vertices (covering), %.3g GiB, more than the %.3g GiB "
+                "%s to radius %.3g on %s%d needs at least %.3g vertices (covering), %.3g GiB, more than the %.3g GiB "
                 "this process can have; nothing changed (a larger radius or a cap on the points added fits)",
-                what, max_radius, tri.genus(), live + added, bytes / 0x1p30, limit / 0x1p30);
+                what, max_radius, hdt::dual::kMg<Tri> ? "M_" : "a surface of genus ", tri.genus(), live + added, bytes / 0x1p30, limit / 0x1p30);
   throw ApiError(HDT_ENOMEM, message);
 }
 
@@ -61,13 +60,13 @@ hdt_status run(const char *function, bool net, hdt_triangulation *t, double max_
   const hdt::capi::LongCall call(t, function);
   if (added) *added = 0;
   if (unmet) *unmet = 0;
-  const hdt::mesh::Triangulation &tri = call.tri();
   if (net && !(max_radius > 0 && !std::isinf(max_radius))) throw ApiError(HDT_EINVAL, "epsilon must be finite and > 0");
   if (!(max_radius > 0)) throw ApiError(HDT_EINVAL, "the radius bound must be > 0 (and not NaN)");
   if (!(max_ratio >= 1)) throw ApiError(HDT_EINVAL, "max_ratio must be >= 1 (and not NaN)");
-  check_room(std::isinf(max_ratio) ? "an epsilon-net" : "a refinement", tri, max_radius, max_points);
-  const hdt::dual::Refined r =
-      hdt::dual::refine(call.tri(), {max_radius, max_ratio}, max_points, call.progress());
+  const hdt::dual::Refined r = call.visit([&](auto &tri) {
+    check_room(std::isinf(max_ratio) ? "an epsilon-net" : "a refinement", tri, max_radius, max_points);
+    return hdt::dual::refine(tri, {max_radius, max_ratio}, max_points, call.progress());
+  });
   if (added) *added = r.added;
   if (unmet) *unmet = r.unmet;
   if (r.out_of_memory)
@@ -95,7 +94,7 @@ HDT_API hdt_status hdt_epsilon_net(hdt_triangulation *t, double epsilon, size_t 
 HDT_API hdt_status hdt_quality(const hdt_triangulation *t, double *min_angle, double *max_ratio, double *max_radius,
                                double *min_edge) HDT_NOEXCEPT {
   return guarded("hdt_quality", [&] {
-    const hdt::dual::Quality q = hdt::dual::quality(of(t));
+    const hdt::dual::Quality q = hdt::capi::visit(t, [](const auto &tri) { return hdt::dual::quality(tri); });
     if (min_angle) *min_angle = q.min_angle;
     if (max_ratio) *max_ratio = q.max_ratio;
     if (max_radius) *max_radius = q.max_radius;

@@ -3,6 +3,7 @@
 #include <gmpxx.h>
 #include <mpfr.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -65,6 +66,59 @@ std::array<std::complex<double>, 2> PolygonSurface::rounded(ElementId h) const {
                         std::complex<double>(real(U.b).mid(), imag(U.b).mid())});
   }
   return rounded_[h];
+}
+
+namespace {
+
+// A ball's midpoint as hi + lo, and its radius into *radius (the larger).
+void split_part(const RealBall &x, double *hi, double *lo, double *radius) {
+  arf_t rest, top;
+  arf_init(rest);
+  arf_init(top);
+  *hi = arf_get_d(arb_midref(x.get()), ARF_RND_NEAR);
+  arf_set_d(top, *hi);
+  arf_sub(rest, arb_midref(x.get()), top, ARF_PREC_EXACT, ARF_RND_DOWN);
+  *lo = arf_get_d(rest, ARF_RND_NEAR);
+  arf_clear(top);
+  arf_clear(rest);
+  *radius = std::max(*radius, mag_get_d(arb_radref(x.get())));
+}
+
+// The number x rounded to out's precision.
+void round_to(const Number &x, mpfr_ptr out) {
+  if (x.is_rational()) {
+    mpfr_set_q(out, static_cast<mpq_class>(x).get_mpq_t(), MPFR_RNDN);
+    return;
+  }
+  arb_t b;
+  arb_init(b);
+  renf_elem_get_arb(b, x.renf_elem_t(), x.parent().renf_t(), slong(mpfr_get_prec(out)) + 32);
+  arf_get_mpfr(out, arb_midref(b), MPFR_RNDN);
+  arb_clear(b);
+}
+
+}  // namespace
+
+PolygonSurface::SplitMatrix PolygonSurface::split(ElementId h) const {
+  const BallIsometry &U = table_.ball(h);
+  SplitMatrix m{};
+  double radius = 0, ar, ai, br, bi, lr, li, mr, mi;
+  split_part(real(U.a), &ar, &lr, &radius);
+  split_part(imag(U.a), &ai, &li, &radius);
+  split_part(real(U.b), &br, &mr, &radius);
+  split_part(imag(U.b), &bi, &mi, &radius);
+  m.a_hi = {ar, ai}, m.a_lo = {lr, li}, m.b_hi = {br, bi}, m.b_lo = {mr, mi};
+  // |a| >= 1: the radius over 1 bounds it relatively, rounded up by 2x.
+  m.error = 2 * radius;
+  return m;
+}
+
+void PolygonSurface::precise_image(ElementId h, double x, double y, mpfr_ptr re, mpfr_ptr im) const {
+  const Number &like = polygon_.vertex(0).re;
+  const Complex z(Number(like.parent(), mpq_class(x)), Number(like.parent(), mpq_class(y)));
+  const Complex w = h == kIdentityId ? z : table_.element(h).apply(z);
+  round_to(w.re, re);
+  round_to(w.im, im);
 }
 
 std::complex<double> PolygonSurface::image(ElementId h, double x, double y) const {

@@ -13,6 +13,8 @@
 // a surface over a number field.
 #pragma once
 
+#include <mpfr.h>
+
 #include <array>
 #include <complex>
 #include <cstddef>
@@ -55,6 +57,18 @@ class PolygonSurface {
   // h's SU(1,1) form (a, b), z -> (a z + b) / (conj(b) z + conj(a)), each
   // part the midpoint of its certified ball: the matrix image() uses.
   std::array<std::complex<double>, 2> rounded(ElementId h) const;
+  // h's (a, b) as double-double parts, for the dual's accurate stage:
+  // each exact part within error (|a| + |b|) of hi + lo, plus 2^-106 of
+  // itself (the 128-bit ball's midpoint rounded twice, its radius bounded).
+  struct SplitMatrix {
+    std::complex<double> a_hi, b_hi, a_lo, b_lo;
+    double error;
+  };
+  SplitMatrix split(ElementId h) const;
+  // h(x + iy) exactly (in K), rounded to the precision of re and im (MPFR
+  // variables the caller initialised): for the dual's last resort, faces
+  // that double-double cannot resolve.
+  void precise_image(ElementId h, double x, double y, mpfr_ptr re, mpfr_ptr im) const;
 
   // h as a word in the pairings (letter k: the pairing of side k, the word
   // w_0 w_1 ... the product g_{w_0} g_{w_1} ...). Exact: the reduction of

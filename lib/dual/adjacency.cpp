@@ -3,12 +3,14 @@
 
 #include <stdexcept>
 #include <string>
+#include "mesh/polygon_triangulation.hpp"
 
 namespace hdt::dual {
 
-void vertex_star(const mesh::Triangulation &tri, uint32_t v, std::vector<StarEntry> *out) {
+template <class Tri>
+void vertex_star(const Tri &tri, uint32_t v, std::vector<StarEntry> *out) {
   tri.check_live(v);
-  group::TranslationTable &T = tri.table();
+  auto &T = tri.table();
   const auto &faces = tri.faces();
   const uint32_t first = tri.vertices()[v].face;
   // public_corner of v's corner in each face, with v's home read once.
@@ -31,9 +33,18 @@ void vertex_star(const mesh::Triangulation &tri, uint32_t v, std::vector<StarEnt
   } while (f != first);
 }
 
-mesh::TranslationId edge_translation(const mesh::Triangulation &tri, const mesh::Face &F, int i) {
-  group::TranslationTable &T = tri.table();
+template <class Tri>
+mesh::TranslationId edge_translation(const Tri &tri, const mesh::Face &F, int i) {
+  auto &T = tri.table();
   return T.compose(T.inverse(public_corner(tri, F, mesh::next(i))), public_corner(tri, F, mesh::prev(i)));
 }
+
+// Both kinds of triangulation: M_g's and a polygon surface's.
+#define HDT_DUAL_INSTANTIATE(Tri) \
+  template void vertex_star(const Tri &, uint32_t, std::vector<StarEntry> *); \
+  template mesh::TranslationId edge_translation(const Tri &, const mesh::Face &, int);
+HDT_DUAL_INSTANTIATE(mesh::Triangulation)
+HDT_DUAL_INSTANTIATE(mesh::PolygonTriangulation)
+#undef HDT_DUAL_INSTANTIATE
 
 }  // namespace hdt::dual

@@ -15,10 +15,11 @@ namespace hdt::dual {
 // that corner of the canonical copy, rep the vertex's representative.
 // Inline: the edge list and the stars ask it of every corner, and most
 // vertices are at home in F_g.
-inline mesh::TranslationId public_corner(const mesh::Triangulation &tri, const mesh::Face &f, int i) {
+template <class Tri>
+inline mesh::TranslationId public_corner(const Tri &tri, const mesh::Face &f, int i) {
   const mesh::TranslationId home = tri.vertices()[f.v[i]].home;
   if (home == 0) return f.t[i];
-  group::TranslationTable &T = tri.table();
+  auto &T = tri.table();
   return T.compose(f.t[i], T.inverse(home));
 }
 
@@ -29,7 +30,8 @@ struct StarEntry {
 };
 // The faces around the live vertex v, counterclockwise, from the face the
 // vertex stores. Throws std::invalid_argument for a dead or unknown vertex.
-void vertex_star(const mesh::Triangulation &tri, uint32_t v, std::vector<StarEntry> *out);
+template <class Tri>
+void vertex_star(const Tri &tri, uint32_t v, std::vector<StarEntry> *out);
 
 // The edges, each once: edge i of face f (opposite corner i, from corner
 // i+1 to corner i+2, f on its left) is listed with f when f is the smaller
@@ -39,6 +41,7 @@ inline bool edge_listed_with(const mesh::Face &F, uint32_t f, int i) { return F.
 // The translation h of that edge: it runs from rep(a) to h(rep(b)), a and
 // b the vertices of corners i+1 and i+2 (c_a^-1 c_b for their corner
 // translations). May add ids to the table.
-mesh::TranslationId edge_translation(const mesh::Triangulation &tri, const mesh::Face &F, int i);
+template <class Tri>
+mesh::TranslationId edge_translation(const Tri &tri, const mesh::Face &F, int i);
 
 }  // namespace hdt::dual

@@ -28,40 +28,46 @@ class AllStars {
   // std::logic_error on a broken invariant; the triangulation is unchanged
   // (its table may have gained ids, as with any query). wide: 64-bit
   // entries even when 32 bits hold them (for the tests of that path).
-  void build(const mesh::Triangulation &tri, bool matrices, bool wide = false);
+  template <class Tri>
+  void build(const Tri &tri, bool matrices, bool wide = false);
   // The same with matrices, for the cells, and every entry of the cache
   // made to hold its face's circumcentre, in the same pass over the faces
   // (reserved here; its misses computed and kept, as hdt_voronoi_cell
   // does): write_cells then reads cache.centres().
-  void build_cells(const mesh::Triangulation &tri, CentreCache &cache, bool wide = false);
+  template <class Tri>
+  void build_cells(const Tri &tri, CentreCache &cache, bool wide = false);
   // What build_cells adds to build(tri, false) of the same triangulation
   // (the matrices, the cache's centres), for rows built that way.
-  void prepare_cells(const mesh::Triangulation &tri, CentreCache &cache);
+  template <class Tri>
+  void prepare_cells(const Tri &tri, CentreCache &cache);
   std::size_t entries() const { return entries_; }  // 3F
   // Then the outputs, which cannot fail. offsets: id bound + 1 entries
   // (may be null); the others 1 per entry, each may be null.
-  void write(const mesh::Triangulation &tri, std::size_t *offsets, uint32_t *faces, uint8_t *corners,
+  template <class Tri>
+  void write(const Tri &tri, std::size_t *offsets, uint32_t *faces, uint8_t *corners,
              int32_t *translations) const;
   // xy: 2 per entry; centre[f] the circumcentre of face f's canonical copy
   // (built with matrices).
-  void write_cells(const mesh::Triangulation &tri, std::size_t *offsets, double *xy, const Point *centre) const;
+  template <class Tri>
+  void write_cells(const Tri &tri, std::size_t *offsets, double *xy, const Point *centre) const;
 
  private:
   template <class U>
   struct Rows;
-  void build(const mesh::Triangulation &tri, bool matrices, CentreCache *cache, bool wide);
-  template <class U>
-  void build_rows(const mesh::Triangulation &tri, bool matrices, CentreCache *cache, Rows<U> &rows);
-  template <class U>
-  void order_rows(const mesh::Triangulation &tri, Rows<U> &rows);
+  template <class Tri>
+  void build(const Tri &tri, bool matrices, CentreCache *cache, bool wide);
+  template <class U, class Tri>
+  void build_rows(const Tri &tri, bool matrices, CentreCache *cache, Rows<U> &rows);
+  template <class U, class Tri>
+  void order_rows(const Tri &tri, Rows<U> &rows);
   // For each live vertex by id, in star order: emit(entry, face, corner,
   // translation); offsets written when not null. prefetch (may be null):
   // per-face data emit reads, fetched some entries ahead.
-  template <class U, class Emit>
-  void each(const mesh::Triangulation &tri, const Rows<U> &rows, std::size_t *offsets, const Point *prefetch,
+  template <class U, class Emit, class Tri>
+  void each(const Tri &tri, const Rows<U> &rows, std::size_t *offsets, const Point *prefetch,
             Emit &&emit) const;
-  template <class Emit>
-  void dispatch(const mesh::Triangulation &tri, std::size_t *offsets, const Point *prefetch, Emit &&emit) const;
+  template <class Emit, class Tri>
+  void dispatch(const Tri &tri, std::size_t *offsets, const Point *prefetch, Emit &&emit) const;
 
   // The scatter puts each corner, in face order, into its vertex's next
   // slot: its corner index k = 4f + c (the top bit set when its translation

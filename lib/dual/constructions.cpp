@@ -23,6 +23,7 @@
 #include "predicates/double_double.hpp"
 #include "dual/disk_isometry.hpp"
 #include "dual/precise_circumcircle.hpp"
+#include "mesh/polygon_triangulation.hpp"
 
 namespace hdt::dual {
 
@@ -48,7 +49,8 @@ HDT_INLINE bool stored_point_serves(const mesh::Vertex &u) { return u.home == 0 
 
 // The corners of face f's canonical copy: most faces lie inside F_g, with
 // no translation at all.
-HDT_INLINE void corners(const mesh::Triangulation &tri, const mesh::Face &f, Point p[3]) {
+template <class Tri>
+HDT_INLINE void corners(const Tri &tri, const mesh::Face &f, Point p[3]) {
   const std::vector<mesh::Vertex> &V = tri.vertices();
   for (int i = 0; i < 3; ++i) {
     const mesh::Vertex &u = V[f.v[i]];
@@ -59,7 +61,8 @@ HDT_INLINE void corners(const mesh::Triangulation &tri, const mesh::Face &f, Poi
 
 // The vertices of face f + 32, fetched ahead: the loops over the faces
 // read their corners' points scattered over the vertices.
-HDT_INLINE void fetch_ahead(const mesh::Triangulation &tri, std::size_t f) {
+template <class Tri>
+HDT_INLINE void fetch_ahead(const Tri &tri, std::size_t f) {
   const std::vector<mesh::Face> &F = tri.faces();
   if (f + 32 >= F.size()) return;
   const mesh::Face &A = F[f + 32];
@@ -68,7 +71,8 @@ HDT_INLINE void fetch_ahead(const mesh::Triangulation &tri, std::size_t f) {
 
 // Whether some corner of f is rounded: translated, a dummy's algebraic
 // point, or a representative moved back (stored_point_serves false).
-HDT_INLINE bool rounded_corners(const mesh::Triangulation &tri, const mesh::Face &f) {
+template <class Tri>
+HDT_INLINE bool rounded_corners(const Tri &tri, const mesh::Face &f) {
   if ((f.t[0] | f.t[1] | f.t[2]) != 0) return true;
   if (tri.site_of(f.v[0]) >= 0 || tri.site_of(f.v[1]) >= 0 || tri.site_of(f.v[2]) >= 0) return true;
   const std::vector<mesh::Vertex> &V = tri.vertices();
@@ -85,7 +89,8 @@ constexpr double kUnit = 0x1p-53;
 // (|a| + |b|)^2 <= 4 |a|^2 and 1 / |den|^2 = (1 - |p|^2) / (1 - |z|^2), the
 // map's derivative, which also scales z's own error. Infinite for a
 // representative moved back (its relative translation is not at hand).
-double corner_error2(const mesh::Triangulation &tri, const mesh::Face &f, int i, const Point &p) {
+template <class Tri>
+double corner_error2(const Tri &tri, const mesh::Face &f, int i, const Point &p) {
   const mesh::Vertex &u = tri.vertices()[f.v[i]];
   if (!stored_point_serves(u)) return HUGE_VAL;
   const double ez = tri.site_of(f.v[i]) >= 0 ? kUnit : 0;
@@ -112,20 +117,23 @@ DD round_dd(const R &x) {
 // moebius_error (|a| + |b|) + 2^-105 |part|), every operation within
 // 2^-100: within 16 (error + 2^-100) (|a| + |b|) / |den| as above, and
 // z's error times the derivative. *error2 receives the square of that.
-PointDD corner_dd(const mesh::Triangulation &tri, const mesh::Face &f, int i, double *error2) {
+template <class Tri>
+PointDD corner_dd(const Tri &tri, const mesh::Face &f, int i, double *error2) {
   const mesh::Vertex &u = tri.vertices()[f.v[i]];
   PointDD z{DD(u.x), DD(u.y)};
   double ez = 0;
-  if (const int32_t site = tri.site_of(f.v[i]); site >= 0) {
-    const surface::Site &s = tri.surface().site(site);
-    if (s.has_approximation) z = {round_dd(s.approximation.re), round_dd(s.approximation.im)}, ez = 0x1p-104;
-    else ez = kUnit;
+  if constexpr (kMg<Tri>) {  // a polygon surface's vertices are doubles
+    if (const int32_t site = tri.site_of(f.v[i]); site >= 0) {
+      const surface::Site &s = tri.surface().site(site);
+      if (s.has_approximation) z = {round_dd(s.approximation.re), round_dd(s.approximation.im)}, ez = 0x1p-104;
+      else ez = kUnit;
+    }
   }
   if (f.t[i] == 0) {
     *error2 = ez * ez;
     return z;
   }
-  group::TranslationTable &T = tri.table();
+  auto &T = tri.table();
   const group::Moebius<double> &hi = T.moebius(f.t[i]), &lo = T.moebius_low(f.t[i]);
   const double me = T.moebius_error(f.t[i]) + 0x1p-100;
   const DD ar = DD::fast_two_sum(hi.a.re, lo.a.re), ai = DD::fast_two_sum(hi.a.im, lo.a.im);
@@ -155,7 +163,8 @@ HDT_INLINE double area_cross(const Point &dq, const Point &dr, const Point &e) {
 // The frame's corners and sides from the exact data (face_frame, when the
 // a-priori bound fails): in double-double, each side then within 2^-60 of
 // itself, or else at 200 bits (two corners within 1e-30 of each other).
-__attribute__((noinline)) void exact_frame(const mesh::Triangulation &tri, const mesh::Face &f, FaceFrame *frame) {
+template <class Tri>
+__attribute__((noinline)) void exact_frame(const Tri &tri, const mesh::Face &f, FaceFrame *frame) {
   PointDD z[3];
   double e2[3];
   for (int i = 0; i < 3; ++i) z[i] = corner_dd(tri, f, i, &e2[i]);
@@ -177,7 +186,8 @@ __attribute__((noinline)) void exact_frame(const mesh::Triangulation &tri, const
 // could move a side, an angle or the circle by more than 2^-46 relative:
 // each moves by at most about 4 (side error) / (smallest altitude), the
 // altitude |n1 x n2| / (longest side). Most faces have no rounded corner.
-HDT_INLINE FaceFrame frame_of(const mesh::Triangulation &tri, const mesh::Face &f, const Point p[3]) {
+template <class Tri>
+HDT_INLINE FaceFrame frame_of(const Tri &tri, const mesh::Face &f, const Point p[3]) {
   FaceFrame frame;
   for (int i = 0; i < 3; ++i) {
     frame.p[i] = p[i];
@@ -296,14 +306,16 @@ HDT_INLINE bool centre_of_corners(const Point p[3], bool rounded, Point *centre,
 
 // The multiprecision circle, for the rare faces double cannot resolve
 // (centre_of false); the radius into *radius when not null.
-Point precise_centre(const mesh::Triangulation &tri, const mesh::Face &f, double *radius) {
+template <class Tri>
+Point precise_centre(const Tri &tri, const mesh::Face &f, double *radius) {
   const Circle precise = precise_circumcircle(tri, f);
   if (radius) *radius = precise.radius;
   return precise.centre;
 }
 
 // centre_of, or the fallback.
-HDT_INLINE Point face_centre(const mesh::Triangulation &tri, const mesh::Face &f, const Point p[3], double *radius) {
+template <class Tri>
+HDT_INLINE Point face_centre(const Tri &tri, const mesh::Face &f, const Point p[3], double *radius) {
   Point c;
   if (centre_of(frame_of(tri, f, p), &c, radius)) return c;
   return precise_centre(tri, f, radius);
@@ -313,7 +325,8 @@ HDT_INLINE Point face_centre(const mesh::Triangulation &tri, const mesh::Face &f
 // the fallback, which computes it anyway), else -s2, from which
 // CentreCache::radius_held computes the same radius later, a logarithm
 // without the rest.
-HDT_INLINE Point face_centre_kept(const mesh::Triangulation &tri, const mesh::Face &f, const Point p[3], bool radius,
+template <class Tri>
+HDT_INLINE Point face_centre_kept(const Tri &tri, const mesh::Face &f, const Point p[3], bool radius,
                                   double *kept) {
   Point c;
   double s2 = 0;
@@ -340,33 +353,38 @@ HDT_INLINE double length_of(const Point &d, double wp, double wq) {
 
 }  // namespace
 
-Point face_corner(const mesh::Triangulation &tri, const mesh::Face &f, int i) {
+template <class Tri>
+Point face_corner(const Tri &tri, const mesh::Face &f, int i) {
   const mesh::Vertex &u = tri.vertices()[f.v[i]];
   if (stored_point_serves(u))
     return f.t[i] == 0 ? Point{u.x, u.y} : tri.table().moebius(f.t[i]).apply(Point{u.x, u.y});
-  group::TranslationTable &T = tri.table();
+  auto &T = tri.table();
   const mesh::TranslationId relative = T.compose(f.t[i], T.inverse(u.home));
   double x, y;
   tri.vertex_point(f.v[i], &x, &y);
   return relative == 0 ? Point{x, y} : T.moebius(relative).apply(Point{x, y});
 }
 
-FaceFrame face_frame(const mesh::Triangulation &tri, const mesh::Face &f, const Point p[3]) { return frame_of(tri, f, p); }
+template <class Tri>
+FaceFrame face_frame(const Tri &tri, const mesh::Face &f, const Point p[3]) { return frame_of(tri, f, p); }
 
-Circle circumcircle(const mesh::Triangulation &tri, const mesh::Face &f, const Point p[3]) {
+template <class Tri>
+Circle circumcircle(const Tri &tri, const mesh::Face &f, const Point p[3]) {
   Circle c;
   c.centre = face_centre(tri, f, p, &c.radius);
   return c;
 }
 
-Circle circumcircle(const mesh::Triangulation &tri, const mesh::Face &f, const FaceFrame &frame) {
+template <class Tri>
+Circle circumcircle(const Tri &tri, const mesh::Face &f, const FaceFrame &frame) {
   Circle c;
   if (centre_of(frame, &c.centre, &c.radius)) return c;
   c.centre = precise_centre(tri, f, &c.radius);
   return c;
 }
 
-Circle coarse_circumcircle(const mesh::Triangulation &tri, const mesh::Face &f, const Point p[3]) {
+template <class Tri>
+Circle coarse_circumcircle(const Tri &tri, const mesh::Face &f, const Point p[3]) {
   Circle c;
   if (centre_of_corners(p, rounded_corners(tri, f), &c.centre, &c.radius)) return c;
   c.centre = precise_centre(tri, f, &c.radius);
@@ -388,13 +406,15 @@ double corner_angle(const FaceFrame &frame, int i) {
   return std::atan2(std::fabs(cross), dot);
 }
 
-Point translate(const mesh::Triangulation &tri, group::TranslationId h, const Point &p) {
+template <class Tri>
+Point translate(const Tri &tri, group::TranslationId h, const Point &p) {
   if (h == 0) return p;
   return tri.table().moebius(h).apply(p);
 }
 
-void warm_corner_matrices(const mesh::Triangulation &tri, bool across) {
-  group::TranslationTable &T = tri.table();
+template <class Tri>
+void warm_corner_matrices(const Tri &tri, bool across) {
+  auto &T = tri.table();
   for (const mesh::Face &f : tri.faces()) {
     if ((f.t[0] | f.t[1] | f.t[2]) != 0)
       for (int i = 0; i < 3; ++i)
@@ -405,7 +425,8 @@ void warm_corner_matrices(const mesh::Triangulation &tri, bool across) {
   }
 }
 
-void face_points(const mesh::Triangulation &tri, double *xy) {
+template <class Tri>
+void face_points(const Tri &tri, double *xy) {
   const std::vector<mesh::Face> &F = tri.faces();
   for (std::size_t f = 0; f < F.size(); ++f) {
     fetch_ahead(tri, f);
@@ -419,7 +440,8 @@ namespace {
 
 // Face f's centre (and radius into *radius, which may be null), through the
 // cache when there is one.
-HDT_INLINE Point cached_centre(const mesh::Triangulation &tri, uint32_t f, double *radius, CentreCache *cache) {
+template <class Tri>
+HDT_INLINE Point cached_centre(const Tri &tri, uint32_t f, double *radius, CentreCache *cache) {
   if (cache && cache->holds(tri, f)) return cache->centre_held(f, radius);
   // Computed here, inline; the radius (a logarithm) only when asked.
   const mesh::Face &A = tri.faces()[f];
@@ -434,7 +456,8 @@ HDT_INLINE Point cached_centre(const mesh::Triangulation &tri, uint32_t f, doubl
 
 }  // namespace
 
-void voronoi_vertices(const mesh::Triangulation &tri, double *xy, double *radii, CentreCache *cache) {
+template <class Tri>
+void voronoi_vertices(const Tri &tri, double *xy, double *radii, CentreCache *cache) {
   const std::size_t F = tri.faces().size();
   if (!cache) {  // the loop without the cache's tests, which a call without a cache need not pay
     for (std::size_t f = 0; f < F; ++f) {
@@ -453,13 +476,15 @@ void voronoi_vertices(const mesh::Triangulation &tri, double *xy, double *radii,
   }
 }
 
-void face_centres(const mesh::Triangulation &tri, Point *out, CentreCache *cache, bool across) {
+template <class Tri>
+void face_centres(const Tri &tri, Point *out, CentreCache *cache, bool across) {
   face_centres(tri, out, cache, across, 0, tri.faces().size());
 }
 
-void face_centres(const mesh::Triangulation &tri, Point *out, CentreCache *cache, bool across, std::size_t begin,
+template <class Tri>
+void face_centres(const Tri &tri, Point *out, CentreCache *cache, bool across, std::size_t begin,
                   std::size_t end) {
-  group::TranslationTable &T = tri.table();
+  auto &T = tri.table();
   const auto warm = [&](const mesh::Face &A) {
     if (across && (A.nt[0] | A.nt[1] | A.nt[2]) != 0)
       for (int i = 0; i < 3; ++i)
@@ -483,7 +508,8 @@ void face_centres(const mesh::Triangulation &tri, Point *out, CentreCache *cache
   }
 }
 
-void write_edges(const mesh::Triangulation &tri, std::size_t count, uint32_t *vertices, uint32_t *faces, double *lengths) {
+template <class Tri>
+void write_edges(const Tri &tri, std::size_t count, uint32_t *vertices, uint32_t *faces, double *lengths) {
   const std::vector<mesh::Face> &F = tri.faces();
   std::size_t k = 0;
   for (uint32_t f = 0; f < F.size(); ++f) {
@@ -513,7 +539,8 @@ void write_edges(const mesh::Triangulation &tri, std::size_t count, uint32_t *ve
   if (k != count) throw std::logic_error("write_edges: fewer edges than 3F/2");
 }
 
-void CentreCache::reserve(const mesh::Triangulation &tri) {
+template <class Tri>
+void CentreCache::reserve(const Tri &tri) {
   // A never-used entry names vertex kNone, which no face holds.
   const std::size_t n = tri.faces().size();
   if (keys_.size() < n) {
@@ -523,7 +550,8 @@ void CentreCache::reserve(const mesh::Triangulation &tri) {
   }
 }
 
-Point CentreCache::compute(const mesh::Triangulation &tri, uint32_t f, double *radius) {
+template <class Tri>
+Point CentreCache::compute(const Tri &tri, uint32_t f, double *radius) {
   const mesh::Face &F = tri.faces()[f];
   Point p[3];
   corners(tri, F, p);
@@ -544,5 +572,25 @@ double CentreCache::radius_held(uint32_t f) {
 }
 
 #undef HDT_INLINE
+
+// Both kinds of triangulation: M_g's and a polygon surface's.
+#define HDT_DUAL_INSTANTIATE(Tri) \
+  template Point face_corner(const Tri &, const mesh::Face &, int);                                        \
+  template FaceFrame face_frame(const Tri &, const mesh::Face &, const Point[3]);                         \
+  template Circle circumcircle(const Tri &, const mesh::Face &, const Point[3]);                          \
+  template Circle circumcircle(const Tri &, const mesh::Face &, const FaceFrame &);                       \
+  template Circle coarse_circumcircle(const Tri &, const mesh::Face &, const Point[3]);                   \
+  template Point translate(const Tri &, group::TranslationId, const Point &);                              \
+  template void warm_corner_matrices(const Tri &, bool);                                                  \
+  template void face_points(const Tri &, double *);                                                       \
+  template void voronoi_vertices(const Tri &, double *, double *, CentreCache *);                         \
+  template void face_centres(const Tri &, Point *, CentreCache *, bool);                                  \
+  template void face_centres(const Tri &, Point *, CentreCache *, bool, std::size_t, std::size_t);        \
+  template void write_edges(const Tri &, std::size_t, uint32_t *, uint32_t *, double *);                  \
+  template void CentreCache::reserve(const Tri &);                                                        \
+  template Point CentreCache::compute(const Tri &, uint32_t, double *);
+HDT_DUAL_INSTANTIATE(mesh::Triangulation)
+HDT_DUAL_INSTANTIATE(mesh::PolygonTriangulation)
+#undef HDT_DUAL_INSTANTIATE
 
 }  // namespace hdt::dual

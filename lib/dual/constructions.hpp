@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "dual/circle.hpp"
@@ -15,11 +16,18 @@
 
 namespace hdt::dual {
 
+// Whether the triangulation is M_g's (exact sites, Dehn words) rather than
+// a polygon surface's (mesh/polygon_triangulation.hpp): the few steps that
+// differ choose by it.
+template <class Tri>
+constexpr bool kMg = std::is_same_v<Tri, mesh::Triangulation>;
+
 // Corner i of face f's canonical copy: the stored point under the corner's
 // translation t (which includes the vertex's home h), one Moebius map with
 // the table's last-bit-accurate matrix; for a vertex with a home, its
 // representative under t h^-1 (which may add ids to the table).
-Point face_corner(const mesh::Triangulation &tri, const mesh::Face &f, int i);
+template <class Tri>
+Point face_corner(const Tri &tri, const mesh::Face &f, int i);
 
 // A face's corners with its sides as differences: side[i] = p[i+2] - p[i+1],
 // the side opposite corner i. The constructions read a short side from
@@ -36,22 +44,26 @@ struct FaceFrame {
   bool rounded;  // some corner is a rounded value with a rounded side
 };
 // Face f's frame, p its corners (face_corner).
-FaceFrame face_frame(const mesh::Triangulation &tri, const mesh::Face &f, const Point p[3]);
+template <class Tri>
+FaceFrame face_frame(const Tri &tri, const mesh::Face &f, const Point p[3]);
 
 // Face f's circumcircle, p its corners (face_corner): in double from its
 // frame, or in multiprecision from the exact data for the rare faces
 // double cannot resolve (precise_circumcircle.hpp). Every face has one. The
 // quality measures and the dual outputs all use it, so their centres agree
 // to the bit.
-Circle circumcircle(const mesh::Triangulation &tri, const mesh::Face &f, const Point p[3]);
+template <class Tri>
+Circle circumcircle(const Tri &tri, const mesh::Face &f, const Point p[3]);
 
 // The same circle from the corners as they are, without the frame: as
 // accurate as the corners (docs/refinement.md's error analysis), not
 // relatively accurate on thin or tiny faces, which refinement leaves
 // anyway (refine.hpp's resolution); refinement's choice, for speed.
-Circle coarse_circumcircle(const mesh::Triangulation &tri, const mesh::Face &f, const Point p[3]);
+template <class Tri>
+Circle coarse_circumcircle(const Tri &tri, const mesh::Face &f, const Point p[3]);
 // Face f's circumcircle from its frame (the same bits as circumcircle()).
-Circle circumcircle(const mesh::Triangulation &tri, const mesh::Face &f, const FaceFrame &frame);
+template <class Tri>
+Circle circumcircle(const Tri &tri, const mesh::Face &f, const FaceFrame &frame);
 
 // Hyperbolic distance in the Poincare disk (curvature -1).
 double distance(const Point &p, const Point &q);
@@ -64,7 +76,8 @@ double side_length(const Point &d, double wp, double wq);
 double corner_angle(const FaceFrame &frame, int i);
 
 // h(p) for a translation id h.
-Point translate(const mesh::Triangulation &tri, group::TranslationId h, const Point &p);
+template <class Tri>
+Point translate(const Tri &tri, group::TranslationId h, const Point &p);
 
 // The circumcentres (and radii) of the faces' canonical copies, each
 // computed on first request and kept: a Voronoi cell needs the centres of
@@ -81,21 +94,25 @@ Point translate(const mesh::Triangulation &tri, group::TranslationId h, const Po
 class CentreCache {
  public:
   // Room for every face (may throw std::bad_alloc); nothing else allocates.
-  void reserve(const mesh::Triangulation &tri);
+  template <class Tri>
+  void reserve(const Tri &tri);
   // Whether reserve() has made room for every face (a caller that does
   // without the cache rather than allocate it).
-  bool ready(const mesh::Triangulation &tri) const { return keys_.size() >= tri.faces().size(); }
+  template <class Tri>
+  bool ready(const Tri &tri) const { return keys_.size() >= tri.faces().size(); }
   // The circumcentre of face f's canonical copy and its radius when radius
   // is not null (the same bits as circumcircle()'s of its corners).
   // reserve() first; the face's corner matrices may be computed (as
   // face_corner does).
-  Point centre(const mesh::Triangulation &tri, uint32_t f, double *radius = nullptr) {
+  template <class Tri>
+  Point centre(const Tri &tri, uint32_t f, double *radius = nullptr) {
     if (holds(tri, f)) return centre_held(f, radius);
     return compute(tri, f, radius);
   }
   // Whether face f's entry holds its centre (reserve() first); its radius
   // then comes with it.
-  bool holds(const mesh::Triangulation &tri, uint32_t f) const {
+  template <class Tri>
+  bool holds(const Tri &tri, uint32_t f) const {
     const mesh::Face &F = tri.faces()[f];
     const Key &e = keys_[f];
     // Compared one by one: std::array's == calls memcmp.
@@ -112,7 +129,8 @@ class CentreCache {
   const Point *centres() const { return centres_.data(); }
   // Face f's centre and what its radius needs (kept, as radii_),
   // computed by the caller (the same bits).
-  void store(const mesh::Triangulation &tri, uint32_t f, const Point &centre, double kept) {
+  template <class Tri>
+  void store(const Tri &tri, uint32_t f, const Point &centre, double kept) {
     const mesh::Face &F = tri.faces()[f];
     keys_[f] = Key{F.v, F.t};
     centres_[f] = centre;
@@ -120,7 +138,8 @@ class CentreCache {
   }
 
  private:
-  Point compute(const mesh::Triangulation &tri, uint32_t f, double *radius);
+  template <class Tri>
+  Point compute(const Tri &tri, uint32_t f, double *radius);
   double radius_held(uint32_t f);
   // What an entry was computed for: the face's vertices and corner
   // translations.
@@ -145,18 +164,24 @@ class CentreCache {
 // translations for hdt_voronoi_edges): warm_corner_matrices() computes
 // those first, which may fail (memory); after it these allocate nothing,
 // so a caller can write into its user's buffers.
-void warm_corner_matrices(const mesh::Triangulation &tri, bool across);
-void face_points(const mesh::Triangulation &tri, double *xy);  // 6 per face
+template <class Tri>
+void warm_corner_matrices(const Tri &tri, bool across);
+template <class Tri>
+void face_points(const Tri &tri, double *xy);  // 6 per face
 // 2 and 1 per face, either null; through the cache when one is given (ready()).
-void voronoi_vertices(const mesh::Triangulation &tri, double *xy, double *radii, CentreCache *cache);
+template <class Tri>
+void voronoi_vertices(const Tri &tri, double *xy, double *radii, CentreCache *cache);
 // 1 per face, the same; may make the corners' matrices, and with across
 // those of the neighbour translations too (warm_corner_matrices(tri, true)
 // in the same pass). With a cache, out may be null (the cache filled only).
-void face_centres(const mesh::Triangulation &tri, Point *out, CentreCache *cache, bool across = false);
+template <class Tri>
+void face_centres(const Tri &tri, Point *out, CentreCache *cache, bool across = false);
 // The same for the faces begin .. end - 1 only (out still indexed by face).
-void face_centres(const mesh::Triangulation &tri, Point *out, CentreCache *cache, bool across, std::size_t begin,
+template <class Tri>
+void face_centres(const Tri &tri, Point *out, CentreCache *cache, bool across, std::size_t begin,
                   std::size_t end);
 // hdt_edges' vertices, faces and lengths (each may be null), count = 3F/2.
-void write_edges(const mesh::Triangulation &tri, std::size_t count, uint32_t *vertices, uint32_t *faces, double *lengths);
+template <class Tri>
+void write_edges(const Tri &tri, std::size_t count, uint32_t *vertices, uint32_t *faces, double *lengths);
 
 }  // namespace hdt::dual

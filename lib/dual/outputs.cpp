@@ -3,15 +3,18 @@
 #include <algorithm>
 #include <stdexcept>
 #include <utility>
+#include "mesh/polygon_triangulation.hpp"
 
 namespace hdt::dual {
 
-const std::vector<StarEntry> &Outputs::star(const mesh::Triangulation &tri, uint32_t v) {
+template <class Tri>
+const std::vector<StarEntry> &Outputs::star(const Tri &tri, uint32_t v) {
   vertex_star(tri, v, &star_);
   return star_;
 }
 
-const std::vector<Point> &Outputs::cell_of_star(const mesh::Triangulation &tri) {
+template <class Tri>
+const std::vector<Point> &Outputs::cell_of_star(const Tri &tri) {
   centres_.reserve(tri);
   cell_.clear();
   for (const StarEntry &s : star_) {
@@ -21,7 +24,8 @@ const std::vector<Point> &Outputs::cell_of_star(const mesh::Triangulation &tri) 
   return cell_;
 }
 
-void Outputs::edges(const mesh::Triangulation &tri, std::size_t count, uint32_t *vertices, int32_t *translations,
+template <class Tri>
+void Outputs::edges(const Tri &tri, std::size_t count, uint32_t *vertices, int32_t *translations,
                     uint32_t *faces, double *lengths) {
   const auto &all = tri.faces();
   // What may fail (new translation ids and matrices, memory) first. An
@@ -33,7 +37,7 @@ void Outputs::edges(const mesh::Triangulation &tri, std::size_t count, uint32_t 
   // too, in the same pass over the faces (not a pass of their own).
   std::vector<std::pair<std::size_t, int32_t>> moved;
   if (translations || lengths) {
-    group::TranslationTable &T = tri.table();
+    auto &T = tri.table();
     bool homes = false;
     if (translations)
       for (const auto &u : tri.vertices()) homes |= u.alive() && u.home != 0;
@@ -64,7 +68,8 @@ void Outputs::edges(const mesh::Triangulation &tri, std::size_t count, uint32_t 
   }
 }
 
-void Outputs::voronoi_vertices(const mesh::Triangulation &tri, double *xy, double *radii) {
+template <class Tri>
+void Outputs::voronoi_vertices(const Tri &tri, double *xy, double *radii) {
   // The matrices first; then nothing allocates, and the results go
   // straight to the caller's buffers (only a broken invariant, a logic
   // error, could stop it part way). Through the centre cache when
@@ -76,7 +81,8 @@ void Outputs::voronoi_vertices(const mesh::Triangulation &tri, double *xy, doubl
   if (xy || radii) dual::voronoi_vertices(tri, xy, radii, centres_.ready(tri) ? &centres_ : nullptr);
 }
 
-void Outputs::voronoi_edges(const mesh::Triangulation &tri, std::size_t count, double *xy) {
+template <class Tri>
+void Outputs::voronoi_edges(const Tri &tri, std::size_t count, double *xy) {
   const auto &all = tri.faces();
   // Every centre first, with the matrices the writing needs (the neighbour
   // translations'; the corners' the centres make): nothing is written
@@ -112,7 +118,8 @@ void Outputs::voronoi_edges(const mesh::Triangulation &tri, std::size_t count, d
   if (k != count) throw std::logic_error("voronoi_edges: the edge count is not 3F/2");
 }
 
-void Outputs::vertex_stars(const mesh::Triangulation &tri, std::size_t *offsets, uint32_t *faces, uint8_t *corners,
+template <class Tri>
+void Outputs::vertex_stars(const Tri &tri, std::size_t *offsets, uint32_t *faces, uint8_t *corners,
                            int32_t *translations) {
   if (rows_revision_ != tri.revision()) {
     rows_revision_ = cells_revision_ = kNever;
@@ -122,7 +129,8 @@ void Outputs::vertex_stars(const mesh::Triangulation &tri, std::size_t *offsets,
   rows_.write(tri, offsets, faces, corners, translations);
 }
 
-void Outputs::voronoi_cells(const mesh::Triangulation &tri, std::size_t *offsets, double *xy) {
+template <class Tri>
+void Outputs::voronoi_cells(const Tri &tri, std::size_t *offsets, double *xy) {
   // The rows (with every matrix the centres and the cells need) and, in
   // the same pass over the faces, every face's centre in the cache (the
   // same bits as cell_of_star's; kept for the next call and the other
@@ -137,5 +145,18 @@ void Outputs::voronoi_cells(const mesh::Triangulation &tri, std::size_t *offsets
   }
   rows_.write_cells(tri, offsets, xy, centres_.centres());
 }
+
+// Both kinds of triangulation: M_g's and a polygon surface's.
+#define HDT_DUAL_INSTANTIATE(Tri) \
+  template const std::vector<StarEntry> &Outputs::star(const Tri &, uint32_t);                            \
+  template const std::vector<Point> &Outputs::cell_of_star(const Tri &);                                  \
+  template void Outputs::edges(const Tri &, std::size_t, uint32_t *, int32_t *, uint32_t *, double *);    \
+  template void Outputs::voronoi_vertices(const Tri &, double *, double *);                               \
+  template void Outputs::voronoi_edges(const Tri &, std::size_t, double *);                               \
+  template void Outputs::vertex_stars(const Tri &, std::size_t *, uint32_t *, uint8_t *, int32_t *);      \
+  template void Outputs::voronoi_cells(const Tri &, std::size_t *, double *);
+HDT_DUAL_INSTANTIATE(mesh::Triangulation)
+HDT_DUAL_INSTANTIATE(mesh::PolygonTriangulation)
+#undef HDT_DUAL_INSTANTIATE
 
 }  // namespace hdt::dual

@@ -22,23 +22,30 @@ namespace hdt::dual {
 class Outputs {
  public:
   // The star of live vertex v (vertex_star), in scratch kept here.
-  const std::vector<StarEntry> &star(const mesh::Triangulation &tri, uint32_t v);
+  template <class Tri>
+  const std::vector<StarEntry> &star(const Tri &tri, uint32_t v);
   // The Voronoi cell of the vertex of the last star(): the circumcentre of
   // each face of that star, in the vertex's frame (the centres kept in the
   // cache for the other Voronoi outputs).
-  const std::vector<Point> &cell_of_star(const mesh::Triangulation &tri);
+  template <class Tri>
+  const std::vector<Point> &cell_of_star(const Tri &tri);
 
   // hdt_edges (count = 3F/2); each output may be null.
-  static void edges(const mesh::Triangulation &tri, std::size_t count, uint32_t *vertices, int32_t *translations,
+  template <class Tri>
+  static void edges(const Tri &tri, std::size_t count, uint32_t *vertices, int32_t *translations,
                     uint32_t *faces, double *lengths);
   // hdt_voronoi_vertices: 2 and 1 per face, either null.
-  void voronoi_vertices(const mesh::Triangulation &tri, double *xy, double *radii);
+  template <class Tri>
+  void voronoi_vertices(const Tri &tri, double *xy, double *radii);
   // hdt_voronoi_edges: 4 per edge, in hdt_edges' order (count = 3F/2).
-  void voronoi_edges(const mesh::Triangulation &tri, std::size_t count, double *xy);
+  template <class Tri>
+  void voronoi_edges(const Tri &tri, std::size_t count, double *xy);
   // hdt_vertex_stars and hdt_voronoi_cells (AllStars::write, write_cells).
-  void vertex_stars(const mesh::Triangulation &tri, std::size_t *offsets, uint32_t *faces, uint8_t *corners,
+  template <class Tri>
+  void vertex_stars(const Tri &tri, std::size_t *offsets, uint32_t *faces, uint8_t *corners,
                     int32_t *translations);
-  void voronoi_cells(const mesh::Triangulation &tri, std::size_t *offsets, double *xy);
+  template <class Tri>
+  void voronoi_cells(const Tri &tri, std::size_t *offsets, double *xy);
 
  private:
   // Entries check themselves against the faces, so it needs no revision.

@@ -12,7 +12,9 @@
 
 #include "exact/multiprecision.hpp"
 #include "group/generators.hpp"
+#include "dual/constructions.hpp"
 #include "dual/disk_isometry.hpp"
+#include "mesh/polygon_triangulation.hpp"
 
 namespace hdt::dual {
 
@@ -22,22 +24,31 @@ using Real = exact::mp_real<60>;
 using PrecisePoint = group::Complex<Real>;
 
 // The point vertex v stands for, under translation h.
-PrecisePoint corner(const mesh::Triangulation &tri, uint32_t v, group::TranslationId h) {
+template <class Tri>
+PrecisePoint corner(const Tri &tri, uint32_t v, group::TranslationId h) {
   const mesh::Vertex &u = tri.vertices()[v];
   PrecisePoint z{Real(u.x), Real(u.y)};
-  const int32_t site = tri.site_of(v);
-  if (site >= 0) {
-    const surface::Site &s = tri.surface().site(site);
-    if (s.has_approximation) z = {Real(s.approximation.re), Real(s.approximation.im)};
+  if constexpr (kMg<Tri>) {
+    const int32_t site = tri.site_of(v);
+    if (site >= 0) {
+      const surface::Site &s = tri.surface().site(site);
+      if (s.has_approximation) z = {Real(s.approximation.re), Real(s.approximation.im)};
+    }
+    if (h == 0) return z;
+    const auto &generators = group::shared_generators<Real>(tri.surface().presentation());
+    return generators.moebius(tri.table().word(h)).apply(z);
+  } else {
+    // The element's exact image of the double point, rounded once.
+    if (h == 0) return z;
+    tri.surface().precise_image(domain::ElementId(h), u.x, u.y, z.re.backend().data(), z.im.backend().data());
+    return z;
   }
-  if (h == 0) return z;
-  const auto &generators = group::shared_generators<Real>(tri.surface().presentation());
-  return generators.moebius(tri.table().word(h)).apply(z);
 }
 
 }  // namespace
 
-Circle precise_circumcircle(const mesh::Triangulation &tri, const mesh::Face &f) {
+template <class Tri>
+Circle precise_circumcircle(const Tri &tri, const mesh::Face &f) {
   PrecisePoint p[3];
   for (int i = 0; i < 3; ++i) p[i] = corner(tri, f.v[i], f.t[i]);
   // Moved to the origin: the corner opposite the longest edge, whose angle
@@ -66,7 +77,8 @@ Circle precise_circumcircle(const mesh::Triangulation &tri, const mesh::Face &f)
   return {Point{static_cast<double>(centre.re), static_cast<double>(centre.im)}, static_cast<double>(atanh(s))};
 }
 
-void precise_frame(const mesh::Triangulation &tri, const mesh::Face &f, Point p[3], Point side[3]) {
+template <class Tri>
+void precise_frame(const Tri &tri, const mesh::Face &f, Point p[3], Point side[3]) {
   PrecisePoint z[3];
   for (int i = 0; i < 3; ++i) z[i] = corner(tri, f.v[i], f.t[i]);
   for (int i = 0; i < 3; ++i) {
@@ -75,5 +87,12 @@ void precise_frame(const mesh::Triangulation &tri, const mesh::Face &f, Point p[
     side[i] = {static_cast<double>(b.re - a.re), static_cast<double>(b.im - a.im)};
   }
 }
+
+#define HDT_DUAL_INSTANTIATE(Tri)                                    \
+  template Circle precise_circumcircle(const Tri &, const mesh::Face &); \
+  template void precise_frame(const Tri &, const mesh::Face &, Point[3], Point[3]);
+HDT_DUAL_INSTANTIATE(mesh::Triangulation)
+HDT_DUAL_INSTANTIATE(mesh::PolygonTriangulation)
+#undef HDT_DUAL_INSTANTIATE
 
 }  // namespace hdt::dual

@@ -18,11 +18,13 @@ namespace hdt::dual {
 // within 2^-128) under the corners' translations (their words' products at
 // 200 bits). Throws std::logic_error only when even that finds no proper
 // circle (a broken invariant: every face of a triangulation has one).
-Circle precise_circumcircle(const mesh::Triangulation &tri, const mesh::Face &f);
+template <class Tri>
+Circle precise_circumcircle(const Tri &tri, const mesh::Face &f);
 
 // Face f's corners and sides (side[i] = p[i+2] - p[i+1]) from the same
 // 200-bit corners, each rounded once to double: face_frame's last resort,
 // for sides too short for double-double.
-void precise_frame(const mesh::Triangulation &tri, const mesh::Face &f, Point p[3], Point side[3]);
+template <class Tri>
+void precise_frame(const Tri &tri, const mesh::Face &f, Point p[3], Point side[3]);
 
 }  // namespace hdt::dual

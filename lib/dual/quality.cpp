@@ -18,6 +18,7 @@
 #include <limits>
 
 #include "dual/disk_isometry.hpp"
+#include "mesh/polygon_triangulation.hpp"
 
 namespace hdt::dual {
 
@@ -38,7 +39,8 @@ double shortest_edge(const Point p[3]) {
 
 namespace {
 
-FaceFrame frame(const mesh::Triangulation &tri, const mesh::Face &f) {
+template <class Tri>
+FaceFrame frame(const Tri &tri, const mesh::Face &f) {
   const Point p[3] = {face_corner(tri, f, 0), face_corner(tri, f, 1), face_corner(tri, f, 2)};
   return face_frame(tri, f, p);
 }
@@ -69,14 +71,17 @@ double smallest_angle(const FaceFrame &fr) {
 
 }  // namespace
 
-FaceShape face_shape(const mesh::Triangulation &tri, const mesh::Face &f) {
+template <class Tri>
+FaceShape face_shape(const Tri &tri, const mesh::Face &f) {
   const FaceFrame fr = frame(tri, f);
   return {circumcircle(tri, f, fr), shortest_side(fr)};
 }
 
-double smallest_angle(const mesh::Triangulation &tri, const mesh::Face &f) { return smallest_angle(frame(tri, f)); }
+template <class Tri>
+double smallest_angle(const Tri &tri, const mesh::Face &f) { return smallest_angle(frame(tri, f)); }
 
-Quality quality(const mesh::Triangulation &tri) {
+template <class Tri>
+Quality quality(const Tri &tri) {
   Quality q{std::numeric_limits<double>::infinity(), 0, 0, std::numeric_limits<double>::infinity()};
   for (const mesh::Face &f : tri.faces()) {
     const FaceFrame fr = frame(tri, f);
@@ -90,5 +95,14 @@ Quality quality(const mesh::Triangulation &tri) {
   }
   return q;
 }
+
+// Both kinds of triangulation: M_g's and a polygon surface's.
+#define HDT_DUAL_INSTANTIATE(Tri) \
+  template FaceShape face_shape(const Tri &, const mesh::Face &); \
+  template double smallest_angle(const Tri &, const mesh::Face &); \
+  template Quality quality(const Tri &);
+HDT_DUAL_INSTANTIATE(mesh::Triangulation)
+HDT_DUAL_INSTANTIATE(mesh::PolygonTriangulation)
+#undef HDT_DUAL_INSTANTIATE
 
 }  // namespace hdt::dual

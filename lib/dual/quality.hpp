@@ -16,12 +16,14 @@ struct FaceShape {
   Circle circle;        // of the canonical copy: centre in the disk, hyperbolic radius
   double shortest_edge; // hyperbolic length
 };
-FaceShape face_shape(const mesh::Triangulation &tri, const mesh::Face &f);
+template <class Tri>
+FaceShape face_shape(const Tri &tri, const mesh::Face &f);
 // The hyperbolic length of the shortest side of the triangle p[0..2].
 double shortest_edge(const Point p[3]);
 
 // The smallest of the face's three hyperbolic angles, in radians.
-double smallest_angle(const mesh::Triangulation &tri, const mesh::Face &f);
+template <class Tri>
+double smallest_angle(const Tri &tri, const mesh::Face &f);
 
 struct Quality {
   double min_angle;     // radians, over all faces
@@ -29,6 +31,7 @@ struct Quality {
   double max_radius;    // the covering radius: every point of M_g is that close to a vertex
   double min_edge;      // the packing distance: the closest two vertices of M_g
 };
-Quality quality(const mesh::Triangulation &tri);
+template <class Tri>
+Quality quality(const Tri &tri);
 
 }  // namespace hdt::dual

@@ -18,10 +18,12 @@
 #include <vector>
 
 #include "dual/quality.hpp"
+#include "mesh/polygon_triangulation.hpp"
 
 namespace hdt::dual {
 
-bool is_bad(const mesh::Triangulation &tri, const mesh::Face &f, const RefineBounds &b, Circle *circle) {
+template <class Tri>
+bool is_bad(const Tri &tri, const mesh::Face &f, const RefineBounds &b, Circle *circle) {
   const Point p[3] = {face_corner(tri, f, 0), face_corner(tri, f, 1), face_corner(tri, f, 2)};
   *circle = coarse_circumcircle(tri, f, p);
   const double r = circle->radius * (1 + kRefineMargin);
@@ -79,7 +81,8 @@ void check(const RefineBounds &b) {
 
 // The faces still breaking the bounds; all of them when memory is too short
 // even to look (an upper bound, as refine.hpp promises).
-std::size_t count_unmet(const mesh::Triangulation &tri, const RefineBounds &b) noexcept {
+template <class Tri>
+std::size_t count_unmet(const Tri &tri, const RefineBounds &b) noexcept {
   try {
     std::size_t unmet = 0;
     Circle c;
@@ -111,7 +114,8 @@ bool resolvable(const Circle &c) {
   return w * t / (1 - c2 * t * t) >= kResolution;
 }
 
-Refined refine(mesh::Triangulation &tri, const RefineBounds &b, std::size_t max_points, const mesh::Progress *progress) {
+template <class Tri>
+Refined refine(Tri &tri, const RefineBounds &b, std::size_t max_points, const mesh::Progress *progress) {
   check(b);
   Refined out{0, 0, false};
   const std::size_t ids_before = tri.vertices().size();  // ids are never reused: the count of points added
@@ -139,7 +143,7 @@ Refined refine(mesh::Triangulation &tri, const RefineBounds &b, std::size_t max_
       // predicates, and refuses a centre that rounded onto the circle or
       // out of it (a face that double cannot refine: it stays bad).
       const std::size_t before = tri.vertices().size();
-      const mesh::Triangulation::Inserted in = tri.insert_in_circle(e.centre.re, e.centre.im, e.slot, &created);
+      const typename Tri::Inserted in = tri.insert_in_circle(e.centre.re, e.centre.im, e.slot, &created);
       if (in.vertex == mesh::kNone) {
         left = true;
         continue;
@@ -160,5 +164,13 @@ Refined refine(mesh::Triangulation &tri, const RefineBounds &b, std::size_t max_
   }
   return out;
 }
+
+// Both kinds of triangulation: M_g's and a polygon surface's.
+#define HDT_DUAL_INSTANTIATE(Tri) \
+  template bool is_bad(const Tri &, const mesh::Face &, const RefineBounds &, Circle *); \
+  template Refined refine(Tri &, const RefineBounds &, std::size_t, const mesh::Progress *);
+HDT_DUAL_INSTANTIATE(mesh::Triangulation)
+HDT_DUAL_INSTANTIATE(mesh::PolygonTriangulation)
+#undef HDT_DUAL_INSTANTIATE
 
 }  // namespace hdt::dual

@@ -26,7 +26,8 @@ struct RefineBounds {
 constexpr double kRefineMargin = 1e-9;
 
 // Whether the face breaks the bounds, as refine() decides it.
-bool is_bad(const mesh::Triangulation &tri, const mesh::Face &f, const RefineBounds &b, Circle *circle);
+template <class Tri>
+bool is_bad(const Tri &tri, const mesh::Face &f, const RefineBounds &b, Circle *circle);
 
 // Steiner points are doubles, so a bad face is refined only when its
 // circumcircle's Euclidean radius in the disk (in its canonical copy) is at
@@ -65,7 +66,8 @@ double bytes_needed(double vertices);
 // running out of memory is reported in the result, not thrown. progress
 // (may be null) is told the points added (total 0: unknown) and can stop
 // it like the cap.
-Refined refine(mesh::Triangulation &tri, const RefineBounds &b, std::size_t max_points,
+template <class Tri>
+Refined refine(Tri &tri, const RefineBounds &b, std::size_t max_points,
                const mesh::Progress *progress = nullptr);
 
 }  // namespace hdt::dual

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <utility>
 
 #include "domain/polygon_surface.hpp"
@@ -81,22 +82,44 @@ class PolygonGeometry {
     domain::PolygonKernel &k_;
   };
 
-  // The element table under the mesh's id type.
+  // The element table under the mesh's id type, with the double matrices
+  // the dual's constructions read (as group::TranslationTable gives M_g's):
+  // the midpoints of the elements' certified balls, and their double-double
+  // parts with an error bound. Kept per id, in a deque: a reference stays
+  // valid while later ids are added.
   class Table {
    public:
-    explicit Table(domain::ElementTable &t) : t_(t) {}
+    explicit Table(Surface &s) : s_(s), t_(s.table()) {}
     TranslationId compose(TranslationId a, TranslationId b) {
       return TranslationId(t_.compose(domain::ElementId(a), domain::ElementId(b)));
     }
     TranslationId inverse(TranslationId a) { return TranslationId(t_.inverse(domain::ElementId(a))); }
     std::size_t size() const { return t_.size(); }
+    const group::Moebius<double> &moebius(TranslationId h) { return matrices(h).hi; }
+    const group::Moebius<double> &moebius_low(TranslationId h) { return matrices(h).lo; }
+    double moebius_error(TranslationId h) { return matrices(h).error; }
 
    private:
+    struct Matrices {
+      group::Moebius<double> hi, lo;
+      double error;
+    };
+    const Matrices &matrices(TranslationId h) {
+      while (matrices_.size() <= std::size_t(h)) {
+        const domain::PolygonSurface::SplitMatrix m = s_.split(domain::ElementId(matrices_.size()));
+        matrices_.push_back({{{m.a_hi.real(), m.a_hi.imag()}, {m.b_hi.real(), m.b_hi.imag()}},
+                             {{m.a_lo.real(), m.a_lo.imag()}, {m.b_lo.real(), m.b_lo.imag()}},
+                             m.error});
+      }
+      return matrices_[std::size_t(h)];
+    }
+    Surface &s_;
     domain::ElementTable &t_;
+    std::deque<Matrices> matrices_;
   };
 
   explicit PolygonGeometry(domain::FundamentalPolygon polygon)
-      : surface_(std::move(polygon)), kernel_(surface_), table_(surface_.table()) {}
+      : surface_(std::move(polygon)), kernel_(surface_), table_(surface_) {}
   PolygonGeometry(const PolygonGeometry &) = delete;
   PolygonGeometry &operator=(const PolygonGeometry &) = delete;
 

@@ -17,7 +17,7 @@ declare -A uses=(
   [predicates]="exact group surface"
   [mesh]="exact domain group surface predicates"
   [dummies]="exact domain group surface predicates mesh"
-  [dual]="exact group surface predicates mesh"
+  [dual]="exact domain group surface predicates mesh"
   [capi]="exact domain group surface predicates mesh dummies dual"
   [picture]="capi"
 )

@@ -274,10 +274,10 @@ class Triangulation:
     def __init__(self, genus: Union[int, Surface]) -> None:
         """A new triangulation of M_genus holding the dummy points of its
         genus, or, given a :class:`hdt.Surface`, of that surface holding
-        dummy points built for it (libhdt 0.8.0 on). On a surface, the
-        insertion, removal, queries, faces and neighbours work as on M_g;
-        the dual, refinement, quality, homology, saving and pictures raise
-        :class:`hdt.NotSupported` for now. The triangulation keeps its own
+        dummy points built for it (libhdt 0.8.0 on). On a surface,
+        insertion, removal, queries, faces, stars, the Voronoi diagram,
+        refinement, epsilon-nets and quality work as on M_g; homology,
+        saving and pictures raise :class:`hdt.NotSupported` for now. The triangulation keeps its own
         copy of the polygon: the surface may be closed afterwards."""
         handle = ctypes.c_void_p()
         if isinstance(genus, Surface):

@@ -98,8 +98,7 @@ def test_calls_not_supported_yet_raise_and_change_nothing(surface, tmp_path):
     with hdt.Triangulation(surface) as t:
         t.insert_many(disk_points(100, 9))
         before = as_lists(t.faces().vertices)
-        for call in (t.voronoi, t.quality, lambda: t.refine(max_radius=0.5), lambda: t.epsilon_net(0.5),
-                     lambda: t.save(tmp_path / "t.hdt"), t.to_svg, lambda: t.star(0),
+        for call in (lambda: t.translation_homology(0), lambda: t.save(tmp_path / "t.hdt"), t.to_svg,
                      lambda: hdt.picture.Scene(t)):
             with pytest.raises(hdt.NotSupported, match="polygon"):
                 call()
@@ -121,3 +120,14 @@ def test_translation_words_compose_to_the_matrices(surface):
                 a, b = a * pa + b * pb.conjugate(), a * pb + b * pa.conjugate()
             ta, tb = t.translation_matrix(translation)
             assert min(abs(a - ta) + abs(b - tb), abs(a + ta) + abs(b + tb)) < 1e-9 * (abs(ta) + abs(tb))
+
+
+def test_an_epsilon_net_meets_its_bounds(surface):
+    with hdt.Triangulation(surface) as t:
+        refined = t.epsilon_net(0.05)
+        assert refined.added > 0 and refined.unmet == 0
+        quality = t.quality()
+        assert quality.max_radius <= 0.05 * (1 + 1e-9)
+        t.validate()
+        cells = t.voronoi_cells()
+        assert len(as_lists(cells.offsets)) == t.vertex_id_bound + 1
