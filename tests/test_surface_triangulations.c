@@ -23,6 +23,15 @@ static const char bolza[] = "field a^4-2*a^2-1 a 1.5538+/-0.01\n8\n4 5 6 7 0 1 2
 /* The same octagon glued as a1 b1 a1^-1 b1^-1 a2 b2 a2^-1 b2^-1. */
 static const char bolza_commutator[] = "field a^4-2*a^2-1 a 1.5538+/-0.01\n8\n2 3 0 1 6 7 4 5\n" BOLZA_VERTICES;
 
+/* HDT_TEST_SCALE (a positive number, default 1) scales the points and the
+   refinements' work: .ci/valgrind sets 0.25. */
+static double test_scale(void) {
+  const char *s = getenv("HDT_TEST_SCALE");
+  const double v = s ? atof(s) : 1;
+  return v > 0 && v <= 1 ? v : 1;
+}
+static size_t scaled(size_t n) { return (size_t)ceil((double)n * test_scale()); }
+
 typedef struct mob_t {
   double complex a, b; /* z -> (a z + b) / (conj(b) z + conj(a)) */
 } mob_t;
@@ -264,14 +273,14 @@ static void expect_triangulations_of(const hdt_surface *s, size_t n, uint64_t se
 
 START_TEST(bolza_octagon) {
   hdt_surface *s = surface_from_text(bolza);
-  expect_triangulations_of(s, 400, 11);
+  expect_triangulations_of(s, scaled(400), 11);
   hdt_surface_destroy(s);
 }
 END_TEST
 
 START_TEST(bolza_commutator_octagon) {
   hdt_surface *s = surface_from_text(bolza_commutator);
-  expect_triangulations_of(s, 400, 12);
+  expect_triangulations_of(s, scaled(400), 12);
   hdt_surface_destroy(s);
 }
 END_TEST
@@ -279,7 +288,7 @@ END_TEST
 START_TEST(random_octagons) {
   for (uint64_t seed = 1; seed <= 3; ++seed) {
     hdt_surface *s = random_surface(8, seed);
-    expect_triangulations_of(s, 400, 20 + seed);
+    expect_triangulations_of(s, scaled(400), 20 + seed);
     hdt_surface_destroy(s);
   }
 }
@@ -287,7 +296,7 @@ END_TEST
 
 START_TEST(random_decagon) {
   hdt_surface *s = random_surface(10, 4);
-  expect_triangulations_of(s, 400, 30);
+  expect_triangulations_of(s, scaled(400), 30);
   hdt_surface_destroy(s);
 }
 END_TEST
@@ -342,7 +351,7 @@ static face_key_t *face_keys(const hdt_triangulation *t, const uint32_t *ids, si
 START_TEST(bolza_octagon_is_the_built_in_m2) {
   hdt_surface *s = surface_from_text(bolza);
   hdt_triangulation *p = on_surface(s), *b = new_triangulation(2);
-  const size_t n = 600;
+  const size_t n = scaled(600);
   double *xy = wide_points(n, 41);
   uint32_t *pid = malloc(n * sizeof *pid), *bid = malloc(n * sizeof *bid);
   ck_assert(pid && bid);
@@ -441,15 +450,18 @@ static void measure(const hdt_triangulation *t, uint32_t from, double *radius, d
 /* Refinement and epsilon-nets meet their bounds, measured here. */
 static void expect_refinement(const hdt_surface *s, uint64_t seed) {
   hdt_triangulation *t = on_surface(s);
-  double *xy = wide_points(200, seed);
-  OK(hdt_insert_many(t, xy, 200, NULL));
+  const size_t n = scaled(200);
+  /* The bounds' work grows as 1 / radius^2: the radius grows as the scale shrinks. */
+  const double r = 0.3 / sqrt(test_scale()), eps = 0.1 / sqrt(test_scale());
+  double *xy = wide_points(n, seed);
+  OK(hdt_insert_many(t, xy, n, NULL));
   expect_dual(t);
   size_t added, unmet;
-  OK(hdt_refine(t, 0.3, 1.2, SIZE_MAX, &added, &unmet));
+  OK(hdt_refine(t, r, 1.2, SIZE_MAX, &added, &unmet));
   expect(unmet == 0 && added > 0, "refinement: %zu added, %zu unmet", added, unmet);
   double radius, ratio, shortest;
   measure(t, 0, &radius, &ratio, &shortest);
-  expect(radius <= 0.3 * (1 + 1e-6) && ratio <= 1.2 * (1 + 1e-6), "after refinement: radius %.17g, ratio %.17g",
+  expect(radius <= r * (1 + 1e-6) && ratio <= 1.2 * (1 + 1e-6), "after refinement: radius %.17g, ratio %.17g",
          radius, ratio);
   double qa, qr, qm, qe;
   OK(hdt_quality(t, &qa, &qr, &qm, &qe));
@@ -461,11 +473,11 @@ static void expect_refinement(const hdt_surface *s, uint64_t seed) {
 
   t = on_surface(s);
   const uint32_t from = (uint32_t)hdt_vertex_id_bound(t);
-  OK(hdt_epsilon_net(t, 0.1, SIZE_MAX, &added, &unmet));
+  OK(hdt_epsilon_net(t, eps, SIZE_MAX, &added, &unmet));
   expect(unmet == 0 && added > 0, "epsilon-net: %zu added, %zu unmet", added, unmet);
   measure(t, from, &radius, &ratio, &shortest);
-  expect(radius <= 0.1 * (1 + 1e-6), "an epsilon-net with a face of circumradius %.17g", radius);
-  expect(shortest >= 0.1 * (1 - 1e-6), "an epsilon-net with points %.17g apart", shortest);
+  expect(radius <= eps * (1 + 1e-6), "an epsilon-net with a face of circumradius %.17g", radius);
+  expect(shortest >= eps * (1 - 1e-6), "an epsilon-net with points %.17g apart", shortest);
   expect_delaunay(t);
   expect_dual(t);
   hdt_destroy(t);
@@ -594,7 +606,7 @@ START_TEST(progress) {
   hdt_triangulation *t = on_surface(s);
   int reports = 0;
   OK(hdt_set_progress(t, count_reports, &reports, 0));
-  double *xy = wide_points(3000, 9);
+  double *xy = wide_points(3000, 9);  /* 1000 a batch: enough for progress reports at any scale */
   OK(hdt_insert_many(t, xy, 1000, NULL));
   expect(reports > 0, "no progress report");
 

@@ -7,15 +7,25 @@
 
 static void write_text(FILE *f, const snapshot *s, const uint32_t *point_vertex, size_t n_points,
                        const voronoi *vd) {
-  fprintf(f, "# hdt-triangulate %s (libhdt %s): Delaunay triangulation on M_%d\n", HDT_CLI_VERSION,
-          hdt_version_string(), s->genus);
-  fputs("# Sections: a line \"NAME COUNT\", then COUNT lines.\n"
-        "#   vertices:     id x y dummy   (x, y: representative in F_g; dummy: 1 or 0)\n"
-        "#   faces:        v0 v1 v2 t0 t1 t2   (vertices counterclockwise; corner i is\n"
-        "#                 translation t_i applied to the point of vertex v_i)\n"
-        "#   translations: id length letter...   (canonical word; letter k is g_k)\n"
-        "#   points:       index vertex   (the vertex of each input point, input order)\n",
+  if (s->sides)
+    fprintf(f,
+            "# hdt-triangulate %s (libhdt %s): Delaunay triangulation on a surface of genus %d given by a "
+            "%d-sided polygon\n",
+            HDT_CLI_VERSION, hdt_version_string(), s->genus, s->sides);
+  else
+    fprintf(f, "# hdt-triangulate %s (libhdt %s): Delaunay triangulation on M_%d\n", HDT_CLI_VERSION,
+            hdt_version_string(), s->genus);
+  fputs("# Sections: a line \"NAME COUNT\", then COUNT lines.\n", f);
+  fputs(s->sides ? "#   vertices:     id x y dummy   (x, y: representative in the polygon; dummy: 1 or 0)\n"
+                 : "#   vertices:     id x y dummy   (x, y: representative in F_g; dummy: 1 or 0)\n",
         f);
+  fputs("#   faces:        v0 v1 v2 t0 t1 t2   (vertices counterclockwise; corner i is\n"
+        "#                 translation t_i applied to the point of vertex v_i)\n",
+        f);
+  fputs(s->sides ? "#   translations: id length letter...   (word in the pairings; letter k pairs side k)\n"
+                 : "#   translations: id length letter...   (canonical word; letter k is g_k)\n",
+        f);
+  fputs("#   points:       index vertex   (the vertex of each input point, input order)\n", f);
   if (vd)
     fputs("#   voronoi_vertices: x y radius   (per face: circumcentre of its canonical copy)\n"
           "#   voronoi_edges:    left right x0 y0 x1 y1   (per edge: its faces; the Voronoi edge)\n",
@@ -46,6 +56,7 @@ static void write_text(FILE *f, const snapshot *s, const uint32_t *point_vertex,
 static void write_json(FILE *f, const snapshot *s, const uint32_t *point_vertex, size_t n_points,
                        const voronoi *vd) {
   fprintf(f, "{\n  \"genus\": %d,\n  \"libhdt\": \"%s\",\n", s->genus, hdt_version_string());
+  if (s->sides) fprintf(f, "  \"polygon_sides\": %d,\n", s->sides);
   fputs("  \"vertices\": [", f);
   const char *sep = "\n";
   for (size_t v = 0; v < s->vertex_bound; ++v) {

@@ -74,10 +74,12 @@ static void usage(FILE *f) {
           "                      given (standard input is then read only as \"-\")\n"
           "      --neighbours    with --svg: also the copies across the 4g sides of F_g\n"
           "                      (also spelled --neighbors)\n"
-          "      --polygon FILE  instead: read the fundamental polygon of a closed surface\n"
-          "                      in FILE (CGAL's text format), check it exactly, write\n"
-          "                      its genus, pairing, cycles, |N| and systole (with -o,\n"
-          "                      and --svg for a picture of it); no triangulation yet\n"
+          "      --polygon FILE  the surface of the fundamental polygon in FILE (CGAL's\n"
+          "                      text format), checked exactly, instead of M_g: with\n"
+          "                      points (an input FILE or --random) triangulate them on\n"
+          "                      it (not with -g, --svg, --html, --save, --load); alone,\n"
+          "                      write its genus, pairing, cycles, |N| and systole (with\n"
+          "                      -o, and --svg for a picture of it)\n"
           "      --side-labels   with --svg: label the sides of F_g, s_k with g_k (which\n"
           "                      maps s_(k+2g) onto it) and s_(k+2g) with g_k^-1\n"
           "      --voronoi       also the Voronoi diagram: in the output, drawn with\n"
@@ -267,14 +269,13 @@ static int apply_option(options *o, const option_spec *spec, const char *shown, 
   return 0;
 }
 
-/* --polygon describes a surface given by its polygon; triangulating one is
-   not there yet, so it goes with -o and --svg only. */
+/* --polygon without points describes the surface given by its polygon: it
+   goes with -o and --svg only. */
 static int polygon_options_ok(const options *o, int refine_options) {
-  if (o->random || o->input || o->load || o->genus_given || refine_options || o->voronoi || o->html || o->save ||
-      o->mesh || o->format != FACE_FORMAT_TEXT || o->neighbours || o->side_labels || o->keep_dummies ||
-      o->validate || o->stats)
-    return usage_error("--polygon goes with -o and --svg only: triangulating a surface given by a polygon is not "
-                       "supported yet");
+  if (o->load || o->genus_given || refine_options || o->voronoi || o->html || o->save || o->mesh ||
+      o->format != FACE_FORMAT_TEXT || o->neighbours || o->side_labels || o->keep_dummies || o->validate || o->stats)
+    return usage_error("--polygon without points (an input file or --random) describes the surface: it goes with "
+                       "-o and --svg only");
   if (o->svg && strcmp(o->svg, "-") == 0 && (!o->output || strcmp(o->output, "-") == 0))
     return usage_error("--svg - and the description would both go to standard output");
   if (o->svg && o->output && strcmp(o->svg, o->output) == 0)
@@ -327,7 +328,13 @@ static int parse_options(int argc, char **argv, options *o) {
     refine_options += spec->id == OPT_REFINE || spec->id == OPT_EPSILON;
   }
   if (o->help || o->version) return 1;
-  if (o->polygon) return polygon_options_ok(o, refine_options);
+  if (o->polygon && !o->random && !o->input) return polygon_options_ok(o, refine_options);
+  /* Triangulating on a polygon surface: what libhdt does not do there yet. */
+  if (o->polygon && (o->genus_given || o->load || o->save || o->svg || o->html))
+    return usage_error("--polygon with points goes without %s: %s", o->genus_given ? "-g (the genus is the polygon's)"
+                       : o->load ? "--load" : o->save ? "--save" : o->svg ? "--svg" : "--html",
+                       o->genus_given ? "the surface is the polygon's"
+                                      : "saving and pictures of polygon surfaces are not supported yet");
   if (o->random && o->input) return usage_error("--random and an input file ('%s') exclude each other", o->input);
   if (o->seed_given && !o->random) return usage_error("--seed needs --random");
   if (refine_options > 1) return usage_error("--refine and --epsilon exclude each other, and each is given once");
@@ -390,13 +397,16 @@ static const char *input_name(const options *o) {
 
 /* The points: drawn, or read and checked line by line. 0 on failure
    (reported). */
-static int get_points(const options *o, point_list *points, counts *c) {
+/* surface: --polygon's (random points in its polygon), else NULL (in F_g). */
+static int get_points(const options *o, const hdt_surface *surface, point_list *points, counts *c) {
   if (o->random) {
     const size_t n = (size_t)o->n_random;
     points->xy = cli_alloc(n, 2 * sizeof *points->xy);
     points->lines = cli_alloc(n, sizeof *points->lines);
     if (!points->xy || !points->lines) return 0;
-    if (!random_points(o->genus, (uint64_t)o->seed, n, points->xy, &c->tried)) return 0;
+    if (surface ? !random_surface_points(surface, (uint64_t)o->seed, n, points->xy, &c->tried)
+                : !random_points(o->genus, (uint64_t)o->seed, n, points->xy, &c->tried))
+      return 0;
     memset(points->lines, 0, n * sizeof *points->lines);
     points->count = points->capacity = n;
     return 1;
@@ -505,8 +515,15 @@ static void print_stats(const options *o, const hdt_triangulation *tri, const sn
   const size_t V = s->vertex_count, F = s->face_count, E = 3 * F / 2;
   const long euler = (long)V - (long)E + (long)F;
   fflush(stdout);
-  fprintf(stderr, CLI_NAME " %s (libhdt %s): M_%d\n", HDT_CLI_VERSION, hdt_version_string(), o->genus);
-  if (o->random)
+  if (o->polygon)
+    fprintf(stderr, CLI_NAME " %s (libhdt %s): the genus-%d surface of %s\n", HDT_CLI_VERSION, hdt_version_string(),
+            o->genus, o->polygon);
+  else
+    fprintf(stderr, CLI_NAME " %s (libhdt %s): M_%d\n", HDT_CLI_VERSION, hdt_version_string(), o->genus);
+  if (o->random && o->polygon)
+    fprintf(stderr, "  points       : %zu random, uniform for area in the polygon (seed %llu; %zu drawn, %.1f%% kept)\n",
+            c->points, o->seed, c->tried, c->tried ? 100.0 * (double)c->points / (double)c->tried : 0.0);
+  else if (o->random)
     fprintf(stderr, "  points       : %zu random, uniform for area in F_%d (seed %llu; %zu drawn, %.1f%% kept)\n",
             c->points, o->genus, o->seed, c->tried, c->tried ? 100.0 * (double)c->points / (double)c->tried : 0.0);
   else
@@ -547,6 +564,7 @@ static int run(const options *given) {
   output_file out = {0}, svg = {0}, saved = {0}, html = {0};
   counts c = {0};
   timings tm = {0};
+  hdt_surface *surface = NULL; /* --polygon's */
 
   double t0 = cli_now_ms();
   if (o->load) {
@@ -561,7 +579,9 @@ static int run(const options *given) {
 
   t0 = cli_now_ms();
   /* With --load, points come only from an input file or --random. */
-  if ((!o->load || o->input || o->random) && !get_points(o, &points, &c)) goto done;
+  if (o->polygon && !(surface = polygon_file_read(o->polygon))) goto done;
+  if (surface) loaded.genus = hdt_surface_genus(surface);
+  if ((!o->load || o->input || o->random) && !get_points(o, surface, &points, &c)) goto done;
   tm.input = cli_now_ms() - t0;
   c.points = points.count;
 
@@ -573,6 +593,7 @@ static int run(const options *given) {
   if (o->save && !output_open(&saved, o->save)) goto done;
 
   t0 = cli_now_ms();
+  if (!t && surface && !cli_check(hdt_create_on_surface(&t, surface), "hdt_create_on_surface")) goto done;
   if (!t && !cli_check(hdt_create(&t, o->genus), "hdt_create")) goto done;
   if (!o->load) tm.create = cli_now_ms() - t0;
   c.dummies_created = hdt_dummy_count(t);
@@ -667,6 +688,7 @@ done:
   free(seen);
   free(point_vertex);
   hdt_destroy(t);
+  hdt_surface_destroy(surface);
   point_list_free(&points);
   return status;
 }
@@ -682,6 +704,6 @@ int main(int argc, char **argv) {
     printf(CLI_NAME " %s\nlibhdt %s (ABI %d)\n", HDT_CLI_VERSION, hdt_version_string(), hdt_abi_version());
     return fflush(stdout) == 0 ? CLI_EXIT_OK : CLI_EXIT_FAILURE;
   }
-  if (o.polygon) return polygon_file_describe(o.polygon, o.output, o.svg);
+  if (o.polygon && !o.random && !o.input) return polygon_file_describe(o.polygon, o.output, o.svg);
   return run(&o);
 }

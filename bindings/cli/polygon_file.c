@@ -91,18 +91,22 @@ static int draw_svg(output_file *out, const char *name, const hdt_surface *s) {
   return ok;
 }
 
-int polygon_file_describe(const char *path, const char *output, const char *svg) {
+hdt_surface *polygon_file_read(const char *path) {
   size_t size = 0;
   char *text = read_text(path, &size);
-  if (!text) return CLI_EXIT_FAILURE;
+  if (!text) return NULL;
   hdt_surface *s = NULL;
   const hdt_status status = hdt_surface_from_polygon(&s, text, size);
   free(text);
-  if (status != HDT_OK) {
+  if (status != HDT_OK)
     cli_error("%s: not a fundamental polygon of a closed surface: %s", strcmp(path, "-") ? path : "<stdin>",
               hdt_last_error_message());
-    return CLI_EXIT_FAILURE;
-  }
+  return s;
+}
+
+int polygon_file_describe(const char *path, const char *output, const char *svg) {
+  hdt_surface *s = polygon_file_read(path);
+  if (!s) return CLI_EXIT_FAILURE;
   output_file out = {0}, picture = {0};
   int ok = output_open(&out, output);
   if (ok) {

@@ -70,3 +70,35 @@ int random_points(int genus, uint64_t seed, size_t n, double *xy, size_t *tried)
   if (tried) *tried = drawn;
   return 1;
 }
+
+/* The polygon is convex and the disk about 0 through its farthest vertex is
+   a convex hyperbolic disk, so it holds the polygon; its hyperbolic radius R
+   has cosh R = (1 + rho^2) / (1 - rho^2), rho that vertex's radius. */
+int random_surface_points(const hdt_surface *s, uint64_t seed, size_t n, double *xy, size_t *tried) {
+  const double pi = acos(-1.0);
+  double rho2 = 0;
+  for (int k = 0; k < hdt_surface_side_count(s); ++k) {
+    double x, y;
+    if (!cli_check(hdt_surface_vertex(s, k, &x, &y), "hdt_surface_vertex")) return 0;
+    rho2 = fmax(rho2, x * x + y * y);
+  }
+  const double cosh_R = (1 + rho2) / (1 - rho2);
+  splitmix64 rng = {seed};
+  size_t kept = 0, drawn = 0;
+  while (kept < n) {
+    const double ch = 1.0 + next_uniform(&rng) * (cosh_R - 1.0);
+    const double rho = sqrt((ch - 1.0) / (ch + 1.0));
+    const double theta = 2.0 * pi * next_uniform(&rng);
+    const double x = rho * cos(theta), y = rho * sin(theta);
+    ++drawn;
+    size_t length = 0;
+    if (!cli_check(hdt_surface_representative(s, x, y, NULL, NULL, NULL, 0, &length), "hdt_surface_representative"))
+      return 0;
+    if (length != 0) continue; /* outside the half-open fundamental set */
+    xy[2 * kept] = x;
+    xy[2 * kept + 1] = y;
+    ++kept;
+  }
+  if (tried) *tried = drawn;
+  return 1;
+}

@@ -120,6 +120,10 @@ static int take_translations(const hdt_triangulation *t, snapshot *s) {
 int snapshot_take(const hdt_triangulation *t, snapshot *s) {
   memset(s, 0, sizeof *s);
   s->genus = hdt_genus(t);
+  hdt_surface *surface = NULL;
+  if (hdt_triangulation_surface(t, &surface) != HDT_OK) return 0;
+  s->sides = surface ? hdt_surface_side_count(surface) : 0;
+  hdt_surface_destroy(surface);
   if (take_vertices(t, s) && take_faces(t, s) && take_translations(t, s)) return 1;
   snapshot_free(s);
   return 0;

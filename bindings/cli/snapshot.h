@@ -12,6 +12,10 @@
 
 typedef struct snapshot {
   int genus;
+  /* 0 on the built-in M_g; else the number of sides of the polygon the
+     surface is given by (hdt_create_on_surface), whose translation words
+     are words in its pairings. */
+  int sides;
   /* Vertices by id, 0 .. vertex_bound-1: kind[v] is -1 for a removed id,
      0 for a user vertex, 1 for a dummy; (x[v], y[v]) is the representative
      of a live vertex in the half-open F_g. */

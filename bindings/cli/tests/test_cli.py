@@ -138,16 +138,17 @@ def inverse(m):
     return a.conjugate(), -b
 
 
-def check_triangulation(data, genus, what, dummies_removed=True):
+def check_triangulation(data, genus, what, dummies_removed=True, gens=None):
     """Euler's relation with edges identified geometrically, and the
-    documented face conventions."""
+    documented face conventions. gens: the matrices of the words' letters
+    (M_g's generators by default)."""
     check(data["genus"] == genus, f"{what}: genus")
     V, F = len(data["vertices"]), len(data["faces"])
     ids = {v["id"]: complex(v["x"], v["y"]) for v in data["vertices"]}
     check(len(ids) == V, f"{what}: vertex ids are distinct")
     check(all(abs(z) < 1 for z in ids.values()), f"{what}: vertices in the disk")
     check(F == 2 * (V + 2 * genus - 2), f"{what}: F = 2 (V + 2g - 2)")
-    gens = generators(genus)
+    gens = gens or generators(genus)
     words = data["translations"]
     check(words.get("0") == [], f"{what}: translation 0 is the identity")
     mats = {int(k): word_matrix(gens, w) for k, w in words.items()}
@@ -791,7 +792,8 @@ def test_mesh_formats(tmp):
 def test_polygon(tmp):
     """--polygon: a CGAL polygon read, checked and described; the Bolza octagon
     in Q(a) has M_2's genus, |N| and systole; a bad polygon is refused with
-    the reason, and nothing is written; points with it are a usage error."""
+    the reason, and nothing is written; with points, they are triangulated
+    on the surface, the words in its pairings."""
     bolza = ("field a^4-2*a^2-1 a 1.5538+/-0.01\n8\n4 5 6 7 0 1 2 3\n"
              "1/2*a 1/2*a^3-a\n1/2*a^3-a 1/2*a\n-1/2*a^3+a 1/2*a\n-1/2*a 1/2*a^3-a\n"
              "-1/2*a -1/2*a^3+a\n-1/2*a^3+a -1/2*a\n1/2*a^3-a -1/2*a\n1/2*a -1/2*a^3+a\n")
@@ -814,8 +816,23 @@ def test_polygon(tmp):
     code, out, err = run("--polygon", bad, "-o", out_file)
     check(code == 1 and "angle sum must be 2 pi" in err and not os.path.exists(out_file),
           f"--polygon on a bad polygon: {code} {err!r}")
-    code, out, err = run("--polygon", path, "--random", "3")
-    check(code == 2 and "not supported yet" in err, f"--polygon with points: {code} {err!r}")
+    # With points: triangulated on the surface. The Bolza octagon's side k
+    # is F_2's side k + 1 (v_0 at angle pi/8), so its pairing g_k, which
+    # moves side k + 4 onto side k, is M_2's generator k + 1.
+    pairings = [generators(2)[(k + 1) % 8] for k in range(8)]
+    code, out, err = run("--polygon", path, "--random", "200", "-f", "json", "--stats")
+    check(code == 0 and "the genus-2 surface of" in err, f"--polygon --random: {code} {err!r}")
+    data = json.loads(out)
+    check(data.get("polygon_sides") == 8, f"--polygon --random: {data.get('polygon_sides')}")
+    check_triangulation(data, 2, "--polygon --random", gens=pairings)
+    code, out, err = run("--polygon", path, "--epsilon", "0.3", "-", stdin="0.1 0.2\n-0.5 0.3\n0.99 0\n")
+    data = parse_text(out)
+    check(code == 0 and len(data["points"]) == 3, f"--polygon with an input and --epsilon: {code} {err!r}")
+    check_triangulation(data, 2, "--polygon --epsilon", gens=pairings)
+    code, out, err = run("--polygon", path, "--random", "3", "--svg", os.path.join(tmp, "no.svg"))
+    check(code == 2 and "not supported yet" in err, f"--polygon with points and --svg: {code} {err!r}")
+    code, out, err = run("--polygon", path, "--random", "3", "-g", "3")
+    check(code == 2 and "the polygon's" in err, f"--polygon with -g: {code} {err!r}")
 
 
 TESTS = (test_help_and_version, test_random_text_and_json, test_dummies, test_input_forms, test_bad_input,
