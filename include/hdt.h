@@ -442,7 +442,11 @@ HDT_API hdt_status hdt_svg(const hdt_triangulation *t, double size, const char *
    triangulation is the saved one: the same ids, hdt_faces and hdt_vertices
    give the same bytes, and the same later calls on both give the same
    results (a query made on one only may give it new translation ids the
-   other gives to other elements later). */
+   other gives to other elements later). A triangulation of a surface given
+   by a polygon (HDT_0.8) is saved in format version 2, which stores the
+   polygon's text exactly and the translations as words in its pairings;
+   hdt_load reads both versions, and checks a version 2 file's polygon as
+   hdt_surface_from_polygon does. */
 
 /* Writes t's saved form into bytes (capacity bytes). Two-call pattern in
    bytes: capacity 0 asks for *size (bytes may then be NULL); HDT_EBUFS,
@@ -864,14 +868,15 @@ HDT_API hdt_status hdt_surface_svg(const hdt_surface *s, double size, char *text
    hdt_dummy_count, hdt_vertex_id_bound, hdt_face_count, hdt_vertex_point,
    hdt_vertex_is_dummy, hdt_vertices, hdt_faces, hdt_translation_word,
    hdt_translation_matrix, hdt_locate, hdt_nearest_vertex, hdt_validate,
-   hdt_set_progress, the adjacency and the dual (hdt_face_neighbours,
+   hdt_set_progress, hdt_save (format version 2: the polygon stored
+   exactly; hdt_load reads it back), the adjacency and the dual (hdt_face_neighbours,
    hdt_vertex_star, hdt_vertex_stars, hdt_edge_count, hdt_edges,
    hdt_face_points, hdt_voronoi_vertices, hdt_voronoi_edges,
    hdt_voronoi_cell, hdt_voronoi_cells: the same constructions, from the
    elements' certified matrices, their accuracy measured on M_g only), and
    hdt_refine, hdt_epsilon_net and hdt_quality with the same bounds and
-   guarantees. The calls left (hdt_translation_homology, hdt_save, hdt_svg)
-   answer HDT_ENOTSUP and change nothing; later releases add them. On a
+   guarantees. The calls left (hdt_translation_homology, hdt_svg) answer
+   HDT_ENOTSUP and change nothing; later releases add them. On a
    surface over a number field, every call holds the process-wide field
    lock (see above). */
 

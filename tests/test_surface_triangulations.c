@@ -496,6 +496,94 @@ START_TEST(dual_and_refinement) {
 }
 END_TEST
 
+/* The saved bytes of t (malloc'ed, *size of them). */
+static unsigned char *saved(const hdt_triangulation *t, size_t *size) {
+  OK(hdt_save(t, NULL, 0, size));
+  unsigned char *bytes = malloc(*size);
+  ck_assert_ptr_nonnull(bytes);
+  size_t written;
+  OK(hdt_save(t, bytes, *size, &written));
+  expect(written == *size, "hdt_save wrote %zu bytes of %zu", written, *size);
+  return bytes;
+}
+
+static void expect_same_faces(const hdt_triangulation *a, const hdt_triangulation *b, const char *what) {
+  mesh_t m = read_mesh(a), n = read_mesh(b);
+  expect(m.V == n.V && m.F == n.F && m.id_bound == n.id_bound, "%s: other counts", what);
+  expect(memcmp(m.fv, n.fv, 3 * m.F * sizeof *m.fv) == 0 && memcmp(m.ft, n.ft, 3 * m.F * sizeof *m.ft) == 0 &&
+             memcmp(m.nf, n.nf, 3 * m.F * sizeof *m.nf) == 0 && memcmp(m.nt, n.nt, 3 * m.F * sizeof *m.nt) == 0,
+         "%s: other faces", what);
+  for (size_t v = 0; v < m.id_bound; ++v)
+    expect(memcmp(&m.point[v], &n.point[v], sizeof m.point[v]) == 0, "%s: vertex %zu moved", what, v);
+  free_mesh(&m), free_mesh(&n);
+}
+
+/* Saved and loaded: the same triangulation, byte for byte, the polygon
+   kept exactly (its text given back), and the same later insertions;
+   damaged files refused with the byte at fault. */
+static void expect_round_trip(const hdt_surface *s, uint64_t seed) {
+  hdt_triangulation *t = on_surface(s), *u = NULL;
+  const size_t n = scaled(300);
+  double *xy = wide_points(2 * n, seed);
+  OK(hdt_insert_many(t, xy, n, NULL));
+  OK(hdt_remove_dummies(t, NULL));
+  for (uint32_t v = 0; v < 40; v += 3) (void)hdt_remove_vertex(t, v);  /* gaps in the ids */
+  size_t size, again;
+  unsigned char *bytes = saved(t, &size);
+  OK(hdt_load(&u, bytes, size));
+  expect(hdt_genus(u) == hdt_genus(t), "genus %d loaded, %d saved", hdt_genus(u), hdt_genus(t));
+  expect_same_faces(t, u, "loaded");
+  unsigned char *twice = saved(u, &again);
+  expect(again == size && memcmp(bytes, twice, size) == 0, "saving the loaded one gives other bytes");
+  hdt_surface *back = NULL;
+  char a[8192], b[8192];
+  size_t la, lb;
+  OK(hdt_triangulation_surface(u, &back));
+  OK(hdt_surface_polygon_text(s, a, sizeof a, &la));
+  OK(hdt_surface_polygon_text(back, b, sizeof b, &lb));
+  expect(la == lb && strcmp(a, b) == 0, "the loaded polygon differs");
+  hdt_surface_destroy(back);
+  OK(hdt_insert_many(t, xy + 2 * n, n, NULL));
+  OK(hdt_insert_many(u, xy + 2 * n, n, NULL));
+  expect_same_faces(t, u, "after the same insertions");
+  OK(hdt_validate(u));
+  /* A damaged byte: the checksum; the polygon's text changed with the
+     checksum made good again: its exact check. */
+  bytes[size / 2] ^= 1;
+  hdt_triangulation *none = (hdt_triangulation *)1;
+  expect(hdt_load(&none, bytes, size) == HDT_EINVAL && strstr(hdt_last_error_message(), "checksum"),
+         "a damaged file: %s", hdt_last_error_message());
+  bytes[size / 2] ^= 1;
+  const size_t text_at = 48;
+  unsigned char *digit = memchr(bytes + text_at, '1', size - text_at);
+  ck_assert_ptr_nonnull(digit);
+  *digit = '3';
+  uint32_t crc = 0xFFFFFFFFu;  /* CRC-32 (ISO-HDLC), bit by bit */
+  for (size_t i = 0; i + 4 < size; ++i) {
+    crc ^= bytes[i];
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1)));
+  }
+  crc ^= 0xFFFFFFFFu;
+  for (int k = 0; k < 4; ++k) bytes[size - 4 + k] = (unsigned char)(crc >> (8 * k));
+  expect(hdt_load(&none, bytes, size) == HDT_EINVAL && strstr(hdt_last_error_message(), "the polygon"),
+         "a changed polygon: %s", hdt_last_error_message());
+  free(bytes), free(twice), free(xy);
+  hdt_destroy(t), hdt_destroy(u);
+}
+
+START_TEST(save_and_load) {
+  hdt_surface *s = random_surface(8, 2);
+  expect_round_trip(s, 60);
+  hdt_surface_destroy(s);
+  s = random_surface(10, 1);
+  expect_round_trip(s, 61);
+  hdt_surface_destroy(s);
+  s = surface_from_text(bolza_commutator);
+  expect_round_trip(s, 62);
+  hdt_surface_destroy(s);
+}
+END_TEST
+
 /* The triangulation keeps its own polygon: the surface it gives back has
    the same text, and the one it was made from may go first. */
 START_TEST(surface_round_trip) {
@@ -536,7 +624,7 @@ static void expect_unchanged(const hdt_triangulation *t, size_t V, size_t F, con
 }
 
 /* Bad input and the calls not supported yet on a polygon surface (homology,
-   saving, pictures): a status, a message, and nothing changed. */
+   pictures): a status, a message, and nothing changed. */
 START_TEST(refusals) {
   hdt_triangulation *t = (hdt_triangulation *)1;
   expect(hdt_create_on_surface(&t, NULL) == HDT_EINVAL && t == NULL, "a NULL surface accepted");
@@ -560,7 +648,6 @@ START_TEST(refusals) {
   expect_unchanged(t, V, F, fv, "a refused removal");
 
   size_t added, unmet;
-  uint8_t bytes[16];
   char text[16];
   int32_t out[8];
   double m[4];
@@ -571,7 +658,6 @@ START_TEST(refusals) {
   expect(hdt_epsilon_net(t, NAN, 1000, &added, &unmet) == HDT_EINVAL, "a NaN epsilon accepted");
   expect(hdt_refine(t, 1e-9, INFINITY, SIZE_MAX, &added, &unmet) == HDT_ENOMEM, "a refinement past memory accepted");
   expect(strstr(hdt_last_error_message(), "a surface of genus 2"), "the message: %s", hdt_last_error_message());
-  expect(hdt_save(t, bytes, sizeof bytes, &count) == HDT_ENOTSUP, "hdt_save");
   expect(hdt_svg(t, 400, NULL, 0, text, sizeof text, &count) == HDT_ENOTSUP, "hdt_svg");
   expect_unchanged(t, V, F, fv, "the unsupported calls");
   OK(hdt_translation_matrix(t, 0, m));
@@ -633,6 +719,6 @@ END_TEST
 int main(void) {
   const TTest *const tests[] = {bolza_octagon,       bolza_commutator_octagon, random_octagons, random_decagon,
                                 bolza_octagon_is_the_built_in_m2, dual_and_refinement,
-                                surface_round_trip,  refusals,                progress};
+                                save_and_load,       surface_round_trip,      refusals,        progress};
   return run_tests("surface_triangulations", tests, sizeof tests / sizeof tests[0]);
 }

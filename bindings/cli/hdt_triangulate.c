@@ -77,7 +77,7 @@ static void usage(FILE *f) {
           "      --polygon FILE  the surface of the fundamental polygon in FILE (CGAL's\n"
           "                      text format), checked exactly, instead of M_g: with\n"
           "                      points (an input FILE or --random) triangulate them on\n"
-          "                      it (not with -g, --svg, --html, --save, --load); alone,\n"
+          "                      it (not with -g, --load, --svg, --html); alone,\n"
           "                      write its genus, pairing, cycles, |N| and systole (with\n"
           "                      -o, and --svg for a picture of it)\n"
           "      --side-labels   with --svg: label the sides of F_g, s_k with g_k (which\n"
@@ -330,11 +330,12 @@ static int parse_options(int argc, char **argv, options *o) {
   if (o->help || o->version) return 1;
   if (o->polygon && !o->random && !o->input) return polygon_options_ok(o, refine_options);
   /* Triangulating on a polygon surface: what libhdt does not do there yet. */
-  if (o->polygon && (o->genus_given || o->load || o->save || o->svg || o->html))
-    return usage_error("--polygon with points goes without %s: %s", o->genus_given ? "-g (the genus is the polygon's)"
-                       : o->load ? "--load" : o->save ? "--save" : o->svg ? "--svg" : "--html",
-                       o->genus_given ? "the surface is the polygon's"
-                                      : "saving and pictures of polygon surfaces are not supported yet");
+  if (o->polygon && (o->genus_given || o->load))
+    return usage_error("--polygon with points goes without %s: the surface is the polygon's",
+                       o->genus_given ? "-g" : "--load (the file holds its surface)");
+  if (o->polygon && (o->svg || o->html))
+    return usage_error("--polygon with points goes without %s: pictures of polygon surfaces are not supported yet",
+                       o->svg ? "--svg" : "--html");
   if (o->random && o->input) return usage_error("--random and an input file ('%s') exclude each other", o->input);
   if (o->seed_given && !o->random) return usage_error("--seed needs --random");
   if (refine_options > 1) return usage_error("--refine and --epsilon exclude each other, and each is given once");

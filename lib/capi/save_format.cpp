@@ -1,9 +1,10 @@
-// The saved-triangulation format, version 1. Layout (all integers
-// little-endian, doubles as their IEEE-754 bits; docs/format.md):
+// The saved-triangulation format, versions 1 (M_g) and 2 (a surface given
+// by a polygon). Layout (all integers little-endian, doubles as their
+// IEEE-754 bits; docs/format.md):
 //
 //   offset  size  field
 //        0     8  magic 89 'H' 'D' 'T' 0D 0A 1A 0A
-//        8     4  format version (1)
+//        8     4  format version (1: M_g, 2: a polygon surface)
 //       12     4  genus
 //       16     4  W, the translation words beyond N
 //       20     4  V, the vertex ids (live and removed)
@@ -11,7 +12,10 @@
 //       28     4  the face the next walk starts from
 //       32     4  the vertex last touched (FFFFFFFF: none)
 //       36     8  the walk's random state
-//       44        W words: u16 length, then u16 letters
+//       44        version 2 only: u32 T, then the polygon's text, T bytes
+//                 W words: u16 length, then u16 letters (version 1: the
+//                   canonical words of the ids from |N| on; version 2: the
+//                   words in the pairings of ids 1 .. W)
 //                 V vertices, 25 bytes: f64 x, f64 y, i32 home, u32 face
 //                   (FFFFFFFF: removed), u8 flags (bit 0: dummy)
 //                 F faces, 48 bytes: u32 v[3], i32 t[3], u32 n[3], i32 nt[3]
@@ -32,6 +36,10 @@
 #include <zlib.h>
 
 #include "capi/guard.hpp"
+#include "capi/handle.hpp"
+#include "domain/field_lock.hpp"
+#include "domain/fundamental_polygon.hpp"
+#include "domain/polygon_text.hpp"
 #include "group/canonical.hpp"
 
 namespace hdt::capi {
@@ -46,9 +54,8 @@ using mesh::Triangulation;
 using mesh::Vertex;
 
 constexpr unsigned char kMagic[8] = {0x89, 'H', 'D', 'T', 0x0D, 0x0A, 0x1A, 0x0A};
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kVersion = 1, kPolygonVersion = 2;
 constexpr std::size_t kHeader = 44, kVertexBytes = 25, kFaceBytes = 48, kChecksum = 4;
-constexpr std::size_t kWordsAt = kHeader;
 
 // CRC-32 (ISO-HDLC: reflected, polynomial 0xEDB88320) of n bytes: zlib's
 // crc32, which is that CRC, in its size_t form (crc32_z, zlib >= 1.2.9) so
@@ -143,12 +150,12 @@ class Reader {
 };
 
 // Where the item a SnapshotError names is stored.
-std::size_t offset_of(const SnapshotError &e, const std::vector<std::size_t> &word_at, std::size_t vertices_at,
-                      std::size_t faces_at, const std::string &what) {
+std::size_t offset_of(const SnapshotError &e, const std::vector<std::size_t> &word_at, std::size_t words_at,
+                      std::size_t vertices_at, std::size_t faces_at, const std::string &what) {
   switch (e.part) {
     case SnapshotError::kGenus: return 12;
     case SnapshotError::kCounts: return 24;
-    case SnapshotError::kWord: return e.index < word_at.size() ? word_at[e.index] : kWordsAt;
+    case SnapshotError::kWord: return e.index < word_at.size() ? word_at[e.index] : words_at;
     case SnapshotError::kVertex: return vertices_at + kVertexBytes * e.index;
     case SnapshotError::kFace: return faces_at + kFaceBytes * e.index;
     case SnapshotError::kState: return 28;
@@ -191,11 +198,31 @@ std::size_t saved_size(const Triangulation &t) {
   return n + kVertexBytes * t.vertices().size() + kFaceBytes * t.faces().size();
 }
 
-void write_saved(const Triangulation &t, unsigned char *out) {
-  const Snapshot s = t.snapshot();
+namespace {
+
+// Whether two polygon texts are equal but for the ball MID+/-RAD of a
+// field line (its fourth token).
+bool same_but_the_ball(const std::string &a, const std::string &b) {
+  const auto tail = [](const std::string &t) {
+    const std::size_t line = t.find('\n'), ball = t.rfind(' ', line);
+    return t.compare(0, 6, "field ") == 0 && line != std::string::npos && ball != std::string::npos
+               ? std::make_pair(t.substr(0, ball), t.substr(line))
+               : std::make_pair(std::string(), t);
+  };
+  return tail(a) == tail(b);
+}
+
+// The polygon's text as version 2 stores it: what hdt_surface_polygon_text
+// gives, which reads back as the same surface.
+std::string polygon_text_of(const mesh::PolygonTriangulation &t) {
+  return domain::polygon_text(t.surface().polygon().text());
+}
+
+// The file of snapshot s: version 1, or 2 with the polygon's text.
+void write_file(const Snapshot &s, uint32_t version, const std::string *text, unsigned char *out) {
   Writer w(out);
   w.bytes(kMagic, 8);
-  w.u32(kVersion);
+  w.u32(version);
   w.u32(uint32_t(s.genus));
   w.u32(uint32_t(s.extra_words.size()));
   w.u32(uint32_t(s.vertices.size()));
@@ -203,6 +230,10 @@ void write_saved(const Triangulation &t, unsigned char *out) {
   w.u32(s.last_face);
   w.u32(s.last_vertex);
   w.u64(s.rng);
+  if (text) {
+    w.u32(uint32_t(text->size()));
+    w.bytes(text->data(), text->size());
+  }
   for (const group::Word &word : s.extra_words) {
     w.u16(uint16_t(word.size()));
     for (group::Letter l : word) w.u16(uint16_t(l));
@@ -220,7 +251,29 @@ void write_saved(const Triangulation &t, unsigned char *out) {
   w.u32(checksum(out, std::size_t(w.at() - out)));
 }
 
-Triangulation read_saved(const unsigned char *bytes, std::size_t size) {
+}  // namespace
+
+void write_saved(const Triangulation &t, unsigned char *out) { write_file(t.snapshot(), kVersion, nullptr, out); }
+
+std::size_t saved_size(const mesh::PolygonTriangulation &t) {
+  std::size_t n = kHeader + 4 + polygon_text_of(t).size() + kChecksum;
+  for (std::size_t id = 1; id < t.table().size(); ++id) {
+    const std::size_t letters = t.surface().word(domain::ElementId(id)).size();
+    if (letters > mesh::max_saved_word_length(t.genus()))
+      throw ApiError(HDT_ENOTSUP, "translation id " + std::to_string(id) + " has a word of " + std::to_string(letters) +
+                                      " letters, more than the format holds (" +
+                                      std::to_string(mesh::max_saved_word_length(t.genus())) + ")");
+    n += 2 + 2 * letters;
+  }
+  return n + kVertexBytes * t.vertices().size() + kFaceBytes * t.faces().size();
+}
+
+void write_saved(const mesh::PolygonTriangulation &t, unsigned char *out) {
+  const std::string text = polygon_text_of(t);
+  write_file(t.snapshot(), kPolygonVersion, &text, out);
+}
+
+std::unique_ptr<hdt_triangulation> read_saved(const unsigned char *bytes, std::size_t size) {
   if (size < kHeader + kChecksum)
     bad(size, "the file is " + std::to_string(size) + " bytes, shorter than the " + std::to_string(kHeader + kChecksum) +
                   " of a header and checksum: it is truncated or not a saved triangulation");
@@ -228,11 +281,14 @@ Triangulation read_saved(const unsigned char *bytes, std::size_t size) {
   Reader r(bytes, size - kChecksum);
   r.u64();
   const uint32_t version = r.u32();
-  if (version != kVersion)
-    bad(8, "format version " + std::to_string(version) + "; this libhdt reads version " + std::to_string(kVersion));
+  if (version != kVersion && version != kPolygonVersion)
+    bad(8, "format version " + std::to_string(version) + "; this libhdt reads versions 1 (M_g) and 2 (a surface "
+           "given by a polygon)");
+  const bool polygon = version == kPolygonVersion;
   const uint32_t genus = r.u32();
-  // Only a genus hdt_create accepts can have been saved.
-  if (genus < 2 || genus > HDT_CREATE_GENUS_MAX)
+  // Only a genus hdt_create accepts can have been saved (a polygon's is
+  // checked against its text below).
+  if (genus < 2 || (!polygon && genus > HDT_CREATE_GENUS_MAX))
     bad(12, "genus " + std::to_string(genus) + " is not in 2.." + std::to_string(HDT_CREATE_GENUS_MAX));
   const uint32_t W = r.u32(), V = r.u32(), F = r.u32();
   Snapshot s;
@@ -243,7 +299,13 @@ Triangulation read_saved(const unsigned char *bytes, std::size_t size) {
   // Every count is bounded by the bytes it needs before anything is
   // allocated: a hostile header cannot ask for more memory than the file's
   // size justifies.
-  const uint64_t least = uint64_t(kHeader) + 2 * uint64_t(W) + kVertexBytes * uint64_t(V) + kFaceBytes * uint64_t(F) + kChecksum;
+  uint32_t T = 0;  // the polygon's text, version 2
+  if (polygon) {
+    r.need(4, "the polygon's length");
+    T = r.u32();
+  }
+  const uint64_t least = uint64_t(kHeader) + (polygon ? 4 + uint64_t(T) : 0) + 2 * uint64_t(W) +
+                         kVertexBytes * uint64_t(V) + kFaceBytes * uint64_t(F) + kChecksum;
   if (least > size)
     bad(16, "the header's counts (" + std::to_string(W) + " words, " + std::to_string(V) + " vertices, " + std::to_string(F) +
                 " faces) need at least " + std::to_string(least) + " bytes; the file has " + std::to_string(size) +
@@ -259,6 +321,32 @@ Triangulation read_saved(const unsigned char *bytes, std::size_t size) {
     bad(size - kChecksum, text);
   }
 
+  // Version 2: the polygon, read and checked exactly as
+  // hdt_surface_from_polygon does (its messages name the token at fault).
+  std::unique_ptr<domain::FundamentalPolygon> P;
+  std::unique_ptr<domain::FieldLock> lock;
+  if (polygon) {
+    const std::string text(reinterpret_cast<const char *>(bytes) + r.offset(), T);
+    const std::size_t text_at = r.offset();
+    for (uint32_t k = 0; k < T; ++k) r.u8();
+    lock = std::make_unique<domain::FieldLock>(domain::names_field(text));
+    try {
+      P = std::make_unique<domain::FundamentalPolygon>(domain::parse_polygon_text(text));
+    } catch (const std::bad_alloc &) {
+      throw;
+    } catch (const std::exception &e) {  // the checks' ParseError above all
+      bad(text_at, std::string("the polygon: ") + e.what());
+    }
+    // Only the form hdt_save writes: saving the loaded triangulation must
+    // give the same bytes (an equal polygon written otherwise would not),
+    // but for the field line's ball, which e-antic narrows as it refines
+    // the embedding it shares.
+    if (!same_but_the_ball(domain::polygon_text(P->text()), text))
+      bad(text_at, "the polygon's text is not in the form hdt_save writes (hdt_surface_polygon_text's)");
+    if (P->genus() != int(genus))
+      bad(12, "genus " + std::to_string(genus) + ", but the polygon's surface has genus " + std::to_string(P->genus()));
+  }
+  const std::size_t words_at = r.offset();
   std::vector<std::size_t> word_at;
   word_at.reserve(W);
   s.extra_words.resize(W);
@@ -302,9 +390,13 @@ Triangulation read_saved(const unsigned char *bytes, std::size_t size) {
   }
   if (r.left() != 0) bad(r.offset(), std::to_string(r.left()) + " bytes after the last face, before the checksum");
   try {
-    return Triangulation::restore(std::move(s));
+    if (!polygon) return std::make_unique<hdt_triangulation>(Triangulation::restore(std::move(s)));
+    const bool in_field = bool(P->field());
+    return std::make_unique<hdt_triangulation>(
+        mesh::PolygonTriangulation::restore([&] { return std::make_unique<mesh::PolygonGeometry>(*P); }, std::move(s)),
+        in_field);
   } catch (const SnapshotError &e) {
-    bad(offset_of(e, word_at, vertices_at, faces_at, e.what()), e.what());
+    bad(offset_of(e, word_at, words_at, vertices_at, faces_at, e.what()), e.what());
   }
 }
 

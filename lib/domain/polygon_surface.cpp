@@ -127,15 +127,14 @@ std::complex<double> PolygonSurface::image(ElementId h, double x, double y) cons
   return (a * z + b) / (std::conj(b) * z + std::conj(a));
 }
 
-std::vector<int> PolygonSurface::word(ElementId h) {
+std::vector<int> PolygonSurface::word(ElementId h) const {
   const Representative t = reduction_(table_.element(h).apply(base_));
   std::vector<int> letters;
-  ElementId check = kIdentityId;
-  for (auto k = t.word.letters.rbegin(); k != t.word.letters.rend(); ++k) {
+  for (auto k = t.word.letters.rbegin(); k != t.word.letters.rend(); ++k)
     letters.push_back(polygon_.paired(*k));  // g_k^-1 = g_paired(k)
-    check = table_.compose(check, pairing(letters.back()));
-  }
-  if (check != h) throw std::logic_error("domain::PolygonSurface: a word that does not compose to its element");
+  // The exact product, not ids: composing ids would intern the prefixes.
+  if (word_element(polygon_, letters) != table_.element(h))
+    throw std::logic_error("domain::PolygonSurface: a word that does not multiply to its element");
   return letters;
 }
 

@@ -73,9 +73,9 @@ class PolygonSurface {
   // h as a word in the pairings (letter k: the pairing of side k, the word
   // w_0 w_1 ... the product g_{w_0} g_{w_1} ...). Exact: the reduction of
   // h(b), b the interior base point, gives t with t h (b) = b, so t h = 1 as
-  // the group acts freely; h's word is t's inverted. Checked by composing
-  // the word's ids back to h.
-  std::vector<int> word(ElementId h);
+  // the group acts freely; h's word is t's inverted. Checked by the exact
+  // product of the word (no id is made for its prefixes).
+  std::vector<int> word(ElementId h) const;
 
   // The systole, certified (systole.hpp), computed on first use.
   const Systole &systole();

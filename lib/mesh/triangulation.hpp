@@ -16,6 +16,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -112,6 +113,10 @@ class BasicTriangulation {
   // takes the snapshot's vectors (no copy); s is left unspecified.
   Snapshot snapshot() const;
   static BasicTriangulation restore(Snapshot &&s);
+  // A polygon surface's (its words in the pairings, letters < sides): the
+  // same checks and certificate on a fresh geometry from make(), called
+  // again when validate() met new elements and the table must be rebuilt.
+  static BasicTriangulation restore(const std::function<std::unique_ptr<Geometry>()> &make, Snapshot &&s);
 
   bool is_dummy(uint32_t v) const { return dummy_[v]; }
   // Whether v is the id of a vertex not removed.
@@ -176,6 +181,7 @@ class BasicTriangulation {
   // restore() without validate(), after the ranges are checked; moves the
   // vertices, flags and faces out of s.
   static BasicTriangulation rebuild(Snapshot &s);
+  static BasicTriangulation rebuild(std::unique_ptr<Geometry> geometry, Snapshot &s);
 
   // Replaces the faces `old` by `created` (given in one common frame),
   // linking them to each other and to the outer faces of `boundary`. The ids

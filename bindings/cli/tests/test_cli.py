@@ -833,6 +833,13 @@ def test_polygon(tmp):
     check(code == 2 and "not supported yet" in err, f"--polygon with points and --svg: {code} {err!r}")
     code, out, err = run("--polygon", path, "--random", "3", "-g", "3")
     check(code == 2 and "the polygon's" in err, f"--polygon with -g: {code} {err!r}")
+    saved = os.path.join(tmp, "polygon.hdtri")
+    code, out, err = run("--polygon", path, "--random", "50", "--save", saved)
+    check(code == 0 and os.path.exists(saved), f"--polygon --save: {code} {err!r}")
+    code, again, err = run("--load", saved)
+    first, loaded = parse_text(out), parse_text(again)
+    check(code == 0 and loaded["faces"] == first["faces"] and loaded["vertices"] == first["vertices"]
+          and "given by a 8-sided polygon" in again, f"--load of a polygon surface's file: {code} {err!r}")
 
 
 TESTS = (test_help_and_version, test_random_text_and_json, test_dummies, test_input_forms, test_bad_input,

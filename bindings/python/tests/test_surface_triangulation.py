@@ -3,6 +3,7 @@
 built-in M_2."""
 
 import math
+import pickle
 import random
 
 import pytest
@@ -98,8 +99,7 @@ def test_calls_not_supported_yet_raise_and_change_nothing(surface, tmp_path):
     with hdt.Triangulation(surface) as t:
         t.insert_many(disk_points(100, 9))
         before = as_lists(t.faces().vertices)
-        for call in (lambda: t.translation_homology(0), lambda: t.save(tmp_path / "t.hdt"), t.to_svg,
-                     lambda: hdt.picture.Scene(t)):
+        for call in (lambda: t.translation_homology(0), t.to_svg, lambda: hdt.picture.Scene(t)):
             with pytest.raises(hdt.NotSupported, match="polygon"):
                 call()
         assert as_lists(t.faces().vertices) == before
@@ -131,3 +131,18 @@ def test_an_epsilon_net_meets_its_bounds(surface):
         t.validate()
         cells = t.voronoi_cells()
         assert len(as_lists(cells.offsets)) == t.vertex_id_bound + 1
+
+
+def test_saved_and_loaded_and_pickled(surface, tmp_path):
+    with hdt.Triangulation(surface) as t:
+        t.insert_many(disk_points(200, 11))
+        t.remove_dummies()
+        path = tmp_path / "t.hdtri"
+        t.save(path)
+        for u in (hdt.Triangulation.load(path), pickle.loads(pickle.dumps(t))):
+            with u:
+                assert u.surface is not None and u.surface.polygon_text() == surface.polygon_text()
+                assert as_lists(u.faces().vertices) == as_lists(t.faces().vertices)
+                assert as_lists(u.faces().translations) == as_lists(t.faces().translations)
+                assert u.to_bytes() == t.to_bytes()
+                u.validate()
