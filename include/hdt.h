@@ -403,7 +403,8 @@ HDT_API hdt_status hdt_validate(const hdt_triangulation *t) HDT_NOEXCEPT;
 
 /* The triangulation drawn in the Poincare disk, as the text of an SVG
    document (UTF-8; symbol version HDT_0.3). The picture shows M_g as F_g
-   with its sides paired: every copy of a face that meets F_g, with
+   (a surface given by a polygon, HDT_0.8: as that polygon) with its sides
+   paired: every copy of a face that meets F_g, with
    geodesic edges, cut at F_g's sides, so that F_g is tiled exactly; F_g
    filled lightly and outlined; user vertices dark dots, dummy vertices
    larger red ones (a vertex on F_g's boundary gets a dot at each of its
@@ -869,14 +870,17 @@ HDT_API hdt_status hdt_surface_svg(const hdt_surface *s, double size, char *text
    hdt_vertex_is_dummy, hdt_vertices, hdt_faces, hdt_translation_word,
    hdt_translation_matrix, hdt_locate, hdt_nearest_vertex, hdt_validate,
    hdt_set_progress, hdt_save (format version 2: the polygon stored
-   exactly; hdt_load reads it back), the adjacency and the dual (hdt_face_neighbours,
+   exactly; hdt_load reads it back), hdt_svg (the surface drawn in its
+   polygon, cut at its sides; HDT_SVG_NEIGHBOURS: the tiles across each
+   side, HDT_SVG_SIDE_LABELS: side k labelled g_k, its pairing), the
+   adjacency and the dual (hdt_face_neighbours,
    hdt_vertex_star, hdt_vertex_stars, hdt_edge_count, hdt_edges,
    hdt_face_points, hdt_voronoi_vertices, hdt_voronoi_edges,
    hdt_voronoi_cell, hdt_voronoi_cells: the same constructions, from the
    elements' certified matrices, their accuracy measured on M_g only), and
    hdt_refine, hdt_epsilon_net and hdt_quality with the same bounds and
-   guarantees. The calls left (hdt_translation_homology, hdt_svg) answer
-   HDT_ENOTSUP and change nothing; later releases add them. On a
+   guarantees. The call left, hdt_translation_homology, answers
+   HDT_ENOTSUP and changes nothing; a later release adds it. On a
    surface over a number field, every call holds the process-wide field
    lock (see above). */
 
@@ -888,6 +892,13 @@ HDT_API hdt_status hdt_surface_svg(const hdt_surface *s, double size, char *text
    could exceed 10^6 points (refused before any is built); HDT_ENOMEM.
    Time: well under a second for octagons and decagons (docs/polygons.md). */
 HDT_API hdt_status hdt_create_on_surface(hdt_triangulation **out, const hdt_surface *s) HDT_NOEXCEPT;
+/* The word in the pairings (letters as in hdt_surface_representative) of
+   the element of N with index id, 0 .. |N| - 1 (hdt_surface_neighbour_count;
+   id 0 is the identity, the empty word): the elements h whose copy h(P)
+   meets P, in a fixed order. Two-call pattern as in hdt_word_reduce.
+   HDT_EINVAL for s or length NULL, word NULL with capacity > 0, id >= |N|. */
+HDT_API hdt_status hdt_surface_neighbour_word(const hdt_surface *s, size_t id, int32_t *word, size_t capacity,
+                                              size_t *length) HDT_NOEXCEPT;
 /* The surface t triangulates: *out receives a new surface (the caller
    destroys it) with the same polygon, exactly, when t was made by
    hdt_create_on_surface, and NULL when t is on a built-in M_g (hdt_create,

@@ -77,7 +77,7 @@ static void usage(FILE *f) {
           "      --polygon FILE  the surface of the fundamental polygon in FILE (CGAL's\n"
           "                      text format), checked exactly, instead of M_g: with\n"
           "                      points (an input FILE or --random) triangulate them on\n"
-          "                      it (not with -g, --load, --svg, --html); alone,\n"
+          "                      it (not with -g, --load, --html); alone,\n"
           "                      write its genus, pairing, cycles, |N| and systole (with\n"
           "                      -o, and --svg for a picture of it)\n"
           "      --side-labels   with --svg: label the sides of F_g, s_k with g_k (which\n"
@@ -333,9 +333,9 @@ static int parse_options(int argc, char **argv, options *o) {
   if (o->polygon && (o->genus_given || o->load))
     return usage_error("--polygon with points goes without %s: the surface is the polygon's",
                        o->genus_given ? "-g" : "--load (the file holds its surface)");
-  if (o->polygon && (o->svg || o->html))
-    return usage_error("--polygon with points goes without %s: pictures of polygon surfaces are not supported yet",
-                       o->svg ? "--svg" : "--html");
+  if (o->polygon && o->html)
+    return usage_error("--polygon with points goes without --html: the viewer of a polygon surface is not supported "
+                       "yet");
   if (o->random && o->input) return usage_error("--random and an input file ('%s') exclude each other", o->input);
   if (o->seed_given && !o->random) return usage_error("--seed needs --random");
   if (refine_options > 1) return usage_error("--refine and --epsilon exclude each other, and each is given once");
@@ -458,26 +458,33 @@ static void report_domain_errors(const options *o, const point_list *points) {
 }
 
 static void picture_title(const options *o, const counts *c, char *title, size_t size) {
+  char surface[160]; /* M_g, or --polygon's surface by its file's name */
+  if (o->polygon) {
+    const char *slash = strrchr(o->polygon, '/');
+    snprintf(surface, sizeof surface, "the genus-%d surface of %s", o->genus, slash ? slash + 1 : o->polygon);
+  } else {
+    snprintf(surface, sizeof surface, "M_%d", o->genus);
+  }
   if (o->refine == 2)
-    snprintf(title, size, "An epsilon-net of M_%d, eps = %g, refined from %s", o->genus, o->max_radius,
+    snprintf(title, size, "An epsilon-net of %s, eps = %g, refined from %s", surface, o->max_radius,
              c->points == 0 ? "the dummy points" : "the input points");
   else if (o->refine)
-    snprintf(title, size, "Delaunay refinement on M_%d: circumradius <= %g, radius-edge ratio <= %g", o->genus,
+    snprintf(title, size, "Delaunay refinement on %s: circumradius <= %g, radius-edge ratio <= %g", surface,
              o->max_radius, o->max_ratio);
   else if (c->points == 0)
-    snprintf(title, size, "The dummy point set of M_%d%s and its Delaunay triangulation", o->genus,
+    snprintf(title, size, "The dummy point set of %s%s and its Delaunay triangulation", surface,
              o->keep_dummies ? ", before any insertion," : "");
   else if (o->random)
-    snprintf(title, size, "Delaunay triangulation of %zu random point%s on M_%d (seed %llu)", c->points,
-             c->points == 1 ? "" : "s", o->genus, o->seed);
+    snprintf(title, size, "Delaunay triangulation of %zu random point%s on %s (seed %llu)", c->points,
+             c->points == 1 ? "" : "s", surface, o->seed);
   else if (o->input && strcmp(o->input, "-") != 0) {
     const char *slash = strrchr(o->input, '/');
-    snprintf(title, size, "Delaunay triangulation of the %zu point%s of %s on M_%d", c->points,
-             c->points == 1 ? "" : "s", slash ? slash + 1 : o->input, o->genus);
+    snprintf(title, size, "Delaunay triangulation of the %zu point%s of %s on %s", c->points,
+             c->points == 1 ? "" : "s", slash ? slash + 1 : o->input, surface);
   }
   else
-    snprintf(title, size, "Delaunay triangulation of %zu point%s on M_%d", c->points, c->points == 1 ? "" : "s",
-             o->genus);
+    snprintf(title, size, "Delaunay triangulation of %zu point%s on %s", c->points, c->points == 1 ? "" : "s",
+             surface);
 }
 
 /* The picture, drawn by libhdt, written to f. 0 on a failure (reported);

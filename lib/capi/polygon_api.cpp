@@ -160,9 +160,24 @@ HDT_API hdt_status hdt_surface_neighbour_count(const hdt_surface *s, size_t *cou
     const FundamentalPolygon &p = polygon_of(s);
     const FieldLock lock(in_field(p));
     if (!count) throw ApiError(HDT_EINVAL, "count must not be NULL");
-    if (!s->neighbour_count) s->neighbour_count = hdt::domain::neighbours(p).size();
-    *count = *s->neighbour_count;
+    if (!s->neighbours) s->neighbours = hdt::domain::neighbours(p);
+    *count = s->neighbours->size();
     return HDT_OK;
+  });
+}
+
+HDT_API hdt_status hdt_surface_neighbour_word(const hdt_surface *s, size_t id, int32_t *word, size_t capacity,
+                                              size_t *length) HDT_NOEXCEPT {
+  return guarded("hdt_surface_neighbour_word", [&] {
+    const FundamentalPolygon &p = polygon_of(s);
+    const FieldLock lock(in_field(p));
+    if (!length) throw ApiError(HDT_EINVAL, "length must not be NULL");
+    if (!s->neighbours) s->neighbours = hdt::domain::neighbours(p);
+    if (id >= s->neighbours->size())
+      throw ApiError(HDT_EINVAL, "id " + std::to_string(id) + " is not below |N| = " +
+                                     std::to_string(s->neighbours->size()));
+    const auto &letters = (*s->neighbours)[id].letters;
+    return hdt::capi::copy_word(hdt::group::Word(letters.begin(), letters.end()), word, capacity, length);
   });
 }
 

@@ -7,8 +7,10 @@
 #include <memory>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "domain/fundamental_polygon.hpp"
+#include "domain/neighbours.hpp"
 #include "domain/representative.hpp"
 #include "domain/systole.hpp"
 
@@ -19,6 +21,6 @@ struct hdt_surface {
   // time uses a surface): the certified systole, the size of N, and the
   // reduction into the polygon with its Klein form.
   mutable std::optional<hdt::domain::Systole> systole;
-  mutable std::optional<std::size_t> neighbour_count;
+  mutable std::optional<std::vector<hdt::domain::Word>> neighbours;  // N, by id (0: the identity)
   mutable std::unique_ptr<hdt::domain::Reduction> reduction;
 };

@@ -16,7 +16,10 @@
 // file): at size 800 the text is byte for byte what the tool wrote then (the
 // meson test `pictures` compares the committed pictures), which is why the
 // arithmetic below keeps the tool's formulas and their order of operations.
+#include <algorithm>
 #include <array>
+#include <complex>
+#include <memory>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -137,13 +140,83 @@ void take_voronoi(const hdt_triangulation *t, Snapshot &s) {
 // ---- The polygon F_g and the neighbour set N ----
 
 struct Geometry {
-  int n = 0;                            // 4g sides
+  int n = 0;                            // 4g sides (n for a polygon surface)
   std::vector<double> vx, vy;           // F_g's vertices v_0 .. v_{n-1}
   std::vector<double> mx, my;           // the sides' midpoints m_0 .. m_{n-1}
   std::vector<double> cx, cy;           // centres of the sides' circles (orthogonal to the unit circle)
-  std::vector<Matrix> generator;        // g_0 .. g_{n-1}
+  // A polygon surface's sides: sign +1 or -1 makes the power positive on
+  // the polygon's side; a side on a diameter has no circle and line set
+  // (its power then the sign times the cross product with the side).
+  std::vector<double> sign;
+  std::vector<unsigned char> line;
+  std::vector<Matrix> generator;        // g_0 .. g_{n-1} (a polygon's pairings)
   std::vector<Matrix> neighbour;        // the elements of N, by translation id
+  bool polygon = false;                 // a surface given by a polygon, not F_g
 };
+
+double side_power(const Geometry &g, int k, double x, double y);
+
+Matrix product(const Matrix &p, const Matrix &q) {  // p after q, SU(1,1) parts (Re a, Im a, Re b, Im b)
+  const std::complex<double> a(p[0], p[1]), b(p[2], p[3]), c(q[0], q[1]), d(q[2], q[3]);
+  const std::complex<double> e = a * c + b * std::conj(d), f = a * d + b * std::conj(c);
+  return {e.real(), e.imag(), f.real(), f.imag()};
+}
+
+// The polygon of a surface given by one: its vertices, its sides' circles
+// (through v_k and v_{k+1}, orthogonal to the unit circle: centre c with
+// c.v = (1 + |v|^2) / 2 at both), their hyperbolic midpoints, the pairings
+// and the elements of N as products of them, all in double: for drawing.
+void take_polygon_geometry(const hdt_surface *surface, Geometry &g) {
+  const int n = hdt_surface_side_count(surface);
+  g.n = n;
+  g.polygon = true;
+  for (auto *v : {&g.vx, &g.vy, &g.mx, &g.my, &g.cx, &g.cy, &g.sign}) v->assign(std::size_t(n), 0);
+  g.line.assign(std::size_t(n), 0);
+  g.generator.resize(std::size_t(n));
+  for (int k = 0; k < n; ++k) {
+    check(hdt_surface_vertex(surface, k, &g.vx[std::size_t(k)], &g.vy[std::size_t(k)]));
+    check(hdt_surface_pairing(surface, k, nullptr, g.generator[std::size_t(k)].data()));
+  }
+  double ix = 0, iy = 0;  // a point inside: the vertices' mean in the Klein model, back in the disk
+  for (int k = 0; k < n; ++k) {
+    const double x = g.vx[std::size_t(k)], y = g.vy[std::size_t(k)], d = 1 + x * x + y * y;
+    ix += 2 * x / d / n, iy += 2 * y / d / n;
+  }
+  const double kr = 1 + std::sqrt(std::max(0.0, 1 - ix * ix - iy * iy));
+  ix /= kr, iy /= kr;
+  for (int k = 0; k < n; ++k) {
+    const std::size_t a = std::size_t(k), b = std::size_t((k + 1) % n);
+    const double px = g.vx[a], py = g.vy[a], qx = g.vx[b], qy = g.vy[b];
+    const double det = px * qy - py * qx, rp = (1 + px * px + py * py) / 2, rq = (1 + qx * qx + qy * qy) / 2;
+    if (std::fabs(det) < 1e-12 * (std::hypot(px, py) + std::hypot(qx, qy))) {
+      g.line[a] = 1;  // a diameter: the power is the cross product with the side's direction
+      g.cx[a] = -(qy - py), g.cy[a] = qx - px;
+    } else {
+      g.cx[a] = (rp * qy - rq * py) / det, g.cy[a] = (px * rq - qx * rp) / det;
+    }
+    g.sign[a] = 1;
+    // The hyperbolic midpoint: q seen from p at the origin, halfway out, and back.
+    const std::complex<double> p(px, py), q(qx, qy), w = (q - p) / (1.0 - std::conj(p) * q);
+    const std::complex<double> half = w / std::abs(w) * std::tanh(std::atanh(std::abs(w)) / 2);
+    const std::complex<double> m = (half + p) / (1.0 + std::conj(p) * half);
+    g.mx[a] = m.real(), g.my[a] = m.imag();
+  }
+  for (int k = 0; k < n; ++k)  // positive powers on the polygon's side
+    if (side_power(g, k, ix, iy) < 0) g.sign[std::size_t(k)] = -1;
+  size_t count = 0;
+  check(hdt_surface_neighbour_count(surface, &count));
+  g.neighbour.resize(count);
+  std::vector<int32_t> word;
+  for (std::size_t id = 0; id < count; ++id) {
+    size_t length = 0;
+    check(hdt_surface_neighbour_word(surface, id, nullptr, 0, &length));
+    word.resize(length + 1);
+    check(hdt_surface_neighbour_word(surface, id, word.data(), word.size(), &length));
+    Matrix m{1, 0, 0, 0};
+    for (std::size_t i = 0; i < length; ++i) m = product(m, g.generator[std::size_t(word[i])]);
+    g.neighbour[id] = m;
+  }
+}
 
 void take_geometry(int genus, Geometry &g) {
   const int n = 4 * genus;
@@ -183,7 +256,10 @@ void take_geometry(int genus, Geometry &g) {
 // The power of the disk point (x, y) with respect to the circle of side k:
 // negative beyond the side's geodesic (outside F_g's half-plane), zero on it.
 double side_power(const Geometry &g, int k, double x, double y) {
-  return 1 + x * x + y * y - 2 * (g.cx[std::size_t(k)] * x + g.cy[std::size_t(k)] * y);
+  const std::size_t i = std::size_t(k);
+  if (!g.polygon) return 1 + x * x + y * y - 2 * (g.cx[i] * x + g.cy[i] * y);
+  if (g.line[i]) return g.sign[i] * (g.cx[i] * (x - g.vx[i]) + g.cy[i] * (y - g.vy[i]));
+  return g.sign[i] * (1 + x * x + y * y - 2 * (g.cx[i] * x + g.cy[i] * y));
 }
 
 bool beyond(const Geometry &g, int k, double x, double y) { return side_power(g, k, x, y) < 0; }
@@ -378,15 +454,18 @@ void put_escaped(Text &f, const char *text) {
 }
 
 // The caption's first line when the caller gives none.
-std::string default_title(const Snapshot &s) {
-  char text[160];
+// polygon: the surface is given by a polygon, not the built-in M_g.
+std::string default_title(const Snapshot &s, bool polygon) {
+  char text[160], surface[64];
+  if (polygon) std::snprintf(surface, sizeof surface, "a surface of genus %d", s.genus);
+  else std::snprintf(surface, sizeof surface, "M_%d", s.genus);
   const std::size_t user = s.vertex_count - s.dummy_count;
   if (user == 0)
-    std::snprintf(text, sizeof text, "The dummy point set of M_%d%s and its Delaunay triangulation", s.genus,
+    std::snprintf(text, sizeof text, "The dummy point set of %s%s and its Delaunay triangulation", surface,
                   s.vertex_count == s.vertex_id_bound ? ", before any insertion," : "");
   else
-    std::snprintf(text, sizeof text, "Delaunay triangulation of %zu point%s on M_%d", user, user == 1 ? "" : "s",
-                  s.genus);
+    std::snprintf(text, sizeof text, "Delaunay triangulation of %zu point%s on %s", user, user == 1 ? "" : "s",
+                  surface);
   return text;
 }
 
@@ -479,15 +558,18 @@ void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char
     t.put("%zu vertices", s.vertex_count);
     if (s.dummy_count)
       t.put(" (%zu dumm%s, %s)", s.dummy_count, s.dummy_count == 1 ? "y" : "ies", hide_dummies ? "not marked" : "red");
-    t.put(", %zu faces, drawn in F_%d and cut at its sides", s.face_count, s.genus);
+    if (g.polygon) t.put(", %zu faces, drawn in the surface's %d-sided polygon and cut at its sides", s.face_count, g.n);
+    else t.put(", %zu faces, drawn in F_%d and cut at its sides", s.face_count, s.genus);
     if (neighbours) t.put(", and in the %d tiles across them", g.n);
     if (voronoi) t.puts("; Voronoi diagram green");
-    if (side_labels) t.puts("; side s_k labelled g_k: g_k maps s_(k+2g), labelled g_k^-1, onto it");
+    if (side_labels && g.polygon) t.puts("; side k labelled g_k, the pairing that maps its paired side onto it");
+    else if (side_labels) t.puts("; side s_k labelled g_k: g_k maps s_(k+2g), labelled g_k^-1, onto it");
     t.puts("; Poincare disk");
     info = t.str();
   }
   const double text_width_px = size - 24 * scale;
-  const std::vector<std::string> title_lines = wrap(title ? title : default_title(s), text_width_px, 16 * scale);
+  const std::vector<std::string> title_lines =
+      wrap(title ? title : default_title(s, g.polygon), text_width_px, 16 * scale);
   const std::vector<std::string> info_lines = wrap(info, text_width_px, 13 * scale);
   const double more_title = kTitleStep * double(title_lines.size() - 1);
   const double band = kTitleHeight + more_title + kInfoStep * double(info_lines.size() - 1);
@@ -577,7 +659,8 @@ void draw(Text &f, const Snapshot &s, const Geometry &g, double size, const char
           font, 3 * scale);
     for (int k = 0; k < g.n; ++k) {
       char label[32];
-      if (k < g.n / 2) std::snprintf(label, sizeof label, "g_%d", k);
+      if (g.polygon) std::snprintf(label, sizeof label, "g_%d", k);
+      else if (k < g.n / 2) std::snprintf(label, sizeof label, "g_%d", k);
       else std::snprintf(label, sizeof label, "g_%d^-1", k - g.n / 2);
       // The outward unit vector at m_k in SVG's coordinates (y down), and the
       // distance from m_k to the label's centre: a gap and half the label's
@@ -619,19 +702,19 @@ HDT_API hdt_status hdt_svg(const hdt_triangulation *t, double size, const char *
     if (capacity > 0 && !text)  // before the drawing, which copy_text would check after
       throw ApiError(HDT_EINVAL, "text is NULL but capacity is " + std::to_string(capacity));
 
-    // M_g's picture only, so far: a polygon surface's would need its
-    // polygon, pairings and neighbour copies in place of F_g's.
+    // A polygon surface is drawn in its polygon, with its pairings and N.
     hdt_surface *surface = nullptr;
     check(hdt_triangulation_surface(t, &surface));
-    if (surface) {
-      hdt_surface_destroy(surface);
-      throw ApiError(HDT_ENOTSUP, "not yet supported on a triangulation of a surface given by a polygon");
-    }
+    const std::unique_ptr<hdt_surface, void (*)(hdt_surface *)> owned(surface, hdt_surface_destroy);
     Snapshot s;
     take_snapshot(t, s);
     if (flags & HDT_SVG_VORONOI) take_voronoi(t, s);
     Geometry g;
-    take_geometry(s.genus, g);
+    if (surface) {
+      take_polygon_geometry(surface, g);
+    } else {
+      take_geometry(s.genus, g);
+    }
     Text f;
     draw(f, s, g, size, title, flags);
 

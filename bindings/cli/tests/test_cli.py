@@ -829,8 +829,14 @@ def test_polygon(tmp):
     data = parse_text(out)
     check(code == 0 and len(data["points"]) == 3, f"--polygon with an input and --epsilon: {code} {err!r}")
     check_triangulation(data, 2, "--polygon --epsilon", gens=pairings)
-    code, out, err = run("--polygon", path, "--random", "3", "--svg", os.path.join(tmp, "no.svg"))
-    check(code == 2 and "not supported yet" in err, f"--polygon with points and --svg: {code} {err!r}")
+    picture = os.path.join(tmp, "triangulated.svg")
+    code, out, err = run("--polygon", path, "--random", "30", "--svg", picture, "--voronoi")
+    with open(picture) as f:
+        drawn = f.read()
+    check(code == 0 and "on the genus-2 surface of bolza.txt" in drawn and "8-sided polygon" in drawn,
+          f"--polygon with points and --svg: {code} {err!r}")
+    code, out, err = run("--polygon", path, "--random", "3", "--html", os.path.join(tmp, "no.html"))
+    check(code == 2 and "not supported yet" in err, f"--polygon with points and --html: {code} {err!r}")
     code, out, err = run("--polygon", path, "--random", "3", "-g", "3")
     check(code == 2 and "the polygon's" in err, f"--polygon with -g: {code} {err!r}")
     saved = os.path.join(tmp, "polygon.hdtri")

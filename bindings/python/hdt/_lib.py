@@ -140,6 +140,7 @@ PROTOTYPES = {
     # Triangulations of surfaces given by a polygon (HDT_0.8).
     "hdt_create_on_surface": (_status, (_handle_p, _surface)),
     "hdt_triangulation_surface": (_status, (_handle, _surface_p)),
+    "hdt_surface_neighbour_word": (_status, (_surface, _size, _word, _size, _size_p)),
 }
 
 

@@ -99,7 +99,7 @@ def test_calls_not_supported_yet_raise_and_change_nothing(surface, tmp_path):
     with hdt.Triangulation(surface) as t:
         t.insert_many(disk_points(100, 9))
         before = as_lists(t.faces().vertices)
-        for call in (lambda: t.translation_homology(0), t.to_svg, lambda: hdt.picture.Scene(t)):
+        for call in (lambda: t.translation_homology(0), lambda: hdt.picture.Scene(t)):
             with pytest.raises(hdt.NotSupported, match="polygon"):
                 call()
         assert as_lists(t.faces().vertices) == before
@@ -146,3 +146,11 @@ def test_saved_and_loaded_and_pickled(surface, tmp_path):
                 assert as_lists(u.faces().translations) == as_lists(t.faces().translations)
                 assert u.to_bytes() == t.to_bytes()
                 u.validate()
+
+
+def test_to_svg_draws_the_polygon(surface):
+    with hdt.Triangulation(surface) as t:
+        t.insert_many(disk_points(100, 12))
+        svg = t.to_svg(voronoi=True)
+        assert svg.startswith("<svg ") and "on a surface of genus 2" in svg
+        assert f"{surface.side_count}-sided polygon" in svg
