@@ -360,7 +360,8 @@ HDT_API hdt_status hdt_translation_matrix(const hdt_triangulation *t, int32_t id
    entries: capacity 0 asks for *count (= 2g; out may then be NULL);
    HDT_EBUFS, with *count set and nothing written, when 0 < capacity < 2g.
    HDT_EINVAL, nothing written, for t or count NULL, an unknown id, out NULL
-   with capacity > 0. */
+   with capacity > 0. On a surface given by a polygon (HDT_0.8): the class
+   in a basis of its own H_1 (see hdt_create_on_surface). */
 HDT_API hdt_status hdt_translation_homology(const hdt_triangulation *t, int32_t id, int32_t *out, size_t capacity,
                                             size_t *count) HDT_NOEXCEPT;
 
@@ -879,8 +880,10 @@ HDT_API hdt_status hdt_surface_svg(const hdt_surface *s, double size, char *text
    hdt_voronoi_cell, hdt_voronoi_cells: the same constructions, from the
    elements' certified matrices, their accuracy measured on M_g only), and
    hdt_refine, hdt_epsilon_net and hdt_quality with the same bounds and
-   guarantees. The call left, hdt_translation_homology, answers
-   HDT_ENOTSUP and changes nothing; a later release adds it. On a
+   guarantees, and hdt_translation_homology (in a basis of H_1 = Z^{2g}
+   of the surface's own: the quotient of Z^{n/2}, one generator per pair of
+   sides, by the vertex cycles' relations, put in Smith normal form; a
+   homomorphism as on M_g, but not M_g's coordinates on the Bolza octagon). On a
    surface over a number field, every call holds the process-wide field
    lock (see above). */
 

@@ -584,6 +584,110 @@ START_TEST(save_and_load) {
 }
 END_TEST
 
+/* The gcd of the maximal minors of the 2g x m matrix c (columns c[j]):
+   1 exactly when the columns span Z^{2g}. Cofactor expansion over column
+   subsets: m is at most 6 here. */
+static long long minor_gcd(long long c[][8], int rows, int m) {
+  long long g = 0;
+  for (unsigned mask = 0; mask < (1u << m); ++mask) {
+    if (__builtin_popcount(mask) != rows) continue;
+    long long a[8][8];
+    int k = 0;
+    for (int j = 0; j < m; ++j)
+      if (mask >> j & 1) {
+        for (int i = 0; i < rows; ++i) a[i][k] = c[j][i];
+        ++k;
+      }
+    long long det = 1;  /* fraction-free Gaussian elimination (Bareiss) */
+    long long prev = 1;
+    for (int p = 0; p < rows && det != 0; ++p) {
+      int q = p;
+      while (q < rows && a[q][p] == 0) ++q;
+      if (q == rows) { det = 0; break; }
+      if (q != p) for (int j = 0; j < rows; ++j) { long long x = a[p][j]; a[p][j] = a[q][j]; a[q][j] = x; det = -det; }
+      for (int i = p + 1; i < rows; ++i)
+        for (int j = p + 1; j < rows; ++j) a[i][j] = (a[i][j] * a[p][p] - a[i][p] * a[p][j]) / prev;
+      prev = a[p][p];
+    }
+    if (det != 0) det *= a[rows - 1][rows - 1];
+    long long x = llabs(det), y = g;
+    while (y) { const long long r = x % y; x = y; y = r; }
+    g = x;
+  }
+  return g;
+}
+
+/* H_1 on a polygon surface, checked from words and cycles alone: each
+   pairing's class c_k, c_paired(k) = -c_k, each vertex cycle's pairings
+   summing to 0, every translation's class the sum of its letters' (a
+   homomorphism), and the classes spanning Z^{2g}. */
+static void expect_homology(const hdt_surface *s, uint64_t seed) {
+  hdt_triangulation *t = on_surface(s);
+  double *xy = wide_points(scaled(200), seed);
+  OK(hdt_insert_many(t, xy, scaled(200), NULL));
+  const int n = hdt_surface_side_count(s), g2 = 2 * hdt_surface_genus(s);
+  long long c[16][8];
+  int known[16] = {0};
+  int32_t word[64], h[8];
+  size_t length, count;
+  /* The ids in order until one is unknown: the pairings' single letters first. */
+  int32_t ids = 0;
+  for (;; ++ids) {
+    if (hdt_translation_word(t, ids, word, 64, &length) != HDT_OK) break;
+    OK(hdt_translation_homology(t, ids, h, 8, &count));
+    expect(count == (size_t)g2, "%zu homology coordinates at genus %d", count, g2 / 2);
+    if (length == 1) {
+      for (int i = 0; i < g2; ++i) c[word[0]][i] = h[i];
+      known[word[0]] = 1;
+    }
+  }
+  for (int k = 0; k < n; ++k) expect(known[k], "no translation id is the pairing of side %d", k);
+  int paired[16], cycle[16];
+  size_t cycles;
+  for (int k = 0; k < n; ++k) OK(hdt_surface_pairing(s, k, &paired[k], NULL));
+  OK(hdt_surface_vertex_cycles(s, cycle, 16, &cycles));
+  for (int k = 0; k < n; ++k)
+    for (int i = 0; i < g2; ++i) expect(c[paired[k]][i] == -c[k][i], "the classes of g_%d and g_%d do not cancel", k, paired[k]);
+  for (size_t cy = 0; cy < cycles; ++cy)
+    for (int i = 0; i < g2; ++i) {
+      long long sum = 0;
+      for (int v = 0; v < n; ++v) sum += cycle[v] == (int)cy ? c[paired[v]][i] : 0;
+      expect(sum == 0, "vertex cycle %zu's relation has class %lld at coordinate %d", cy, sum, i);
+    }
+  for (int32_t id = 0; id < ids; ++id) {
+    OK(hdt_translation_word(t, id, word, 64, &length));
+    OK(hdt_translation_homology(t, id, h, 8, &count));
+    for (int i = 0; i < g2; ++i) {
+      long long sum = 0;
+      for (size_t l = 0; l < length; ++l) sum += c[word[l]][i];
+      expect(sum == h[i], "translation %d: class %d at coordinate %d, its letters sum to %lld", id, h[i], i, sum);
+    }
+  }
+  long long columns[8][8];
+  int m = 0;
+  for (int k = 0; k < n; ++k)
+    if (k < paired[k]) {
+      for (int i = 0; i < g2; ++i) columns[m][i] = c[k][i];
+      ++m;
+    }
+  expect(minor_gcd(columns, g2, m) == 1, "the pairings' classes do not span Z^%d", g2);
+  free(xy);
+  hdt_destroy(t);
+}
+
+START_TEST(homology) {
+  hdt_surface *s = random_surface(8, 1);
+  expect_homology(s, 80);
+  hdt_surface_destroy(s);
+  s = random_surface(10, 2);
+  expect_homology(s, 81);
+  hdt_surface_destroy(s);
+  s = surface_from_text(bolza_commutator);
+  expect_homology(s, 82);
+  hdt_surface_destroy(s);
+}
+END_TEST
+
 /* The picture: the polygon's sides drawn (its clip path holds one arc a
    side), the caption names the surface, the Voronoi diagram and the tiles
    across the sides come when asked. */
@@ -650,8 +754,7 @@ static void expect_unchanged(const hdt_triangulation *t, size_t V, size_t F, con
   free(now);
 }
 
-/* Bad input and the call not supported yet on a polygon surface
-   (homology): a status, a message, and nothing changed. */
+/* Bad input: a status, a message, and nothing changed. */
 START_TEST(refusals) {
   hdt_triangulation *t = (hdt_triangulation *)1;
   expect(hdt_create_on_surface(&t, NULL) == HDT_EINVAL && t == NULL, "a NULL surface accepted");
@@ -675,11 +778,7 @@ START_TEST(refusals) {
   expect_unchanged(t, V, F, fv, "a refused removal");
 
   size_t added, unmet;
-  int32_t out[8];
   double m[4];
-  expect(hdt_translation_homology(t, 0, out, 8, &count) == HDT_ENOTSUP, "hdt_translation_homology");
-  expect(strstr(hdt_last_error_message(), "hdt_translation_homology") && strstr(hdt_last_error_message(), "polygon"),
-         "the message: %s", hdt_last_error_message());
   expect(hdt_refine(t, 0.5, 0.5, 1000, &added, &unmet) == HDT_EINVAL, "a ratio below 1 accepted");
   expect(hdt_epsilon_net(t, NAN, 1000, &added, &unmet) == HDT_EINVAL, "a NaN epsilon accepted");
   expect(hdt_refine(t, 1e-9, INFINITY, SIZE_MAX, &added, &unmet) == HDT_ENOMEM, "a refinement past memory accepted");
@@ -744,7 +843,8 @@ END_TEST
 int main(void) {
   const TTest *const tests[] = {bolza_octagon,       bolza_commutator_octagon, random_octagons, random_decagon,
                                 bolza_octagon_is_the_built_in_m2, dual_and_refinement,
-                                save_and_load,       pictures,                surface_round_trip,
+                                save_and_load,       pictures,                homology,
+                                surface_round_trip,
                                 refusals,            progress};
   return run_tests("surface_triangulations", tests, sizeof tests / sizeof tests[0]);
 }

@@ -138,6 +138,11 @@ std::vector<int> PolygonSurface::word(ElementId h) const {
   return letters;
 }
 
+const Homology &PolygonSurface::homology() const {
+  if (!homology_) homology_.emplace(polygon_);
+  return *homology_;
+}
+
 const Systole &PolygonSurface::systole() {
   if (!systole_) systole_ = domain::systole(polygon_);
   return *systole_;

@@ -23,6 +23,7 @@
 
 #include "domain/element_table.hpp"
 #include "domain/fundamental_polygon.hpp"
+#include "domain/homology.hpp"
 #include "domain/polygon_kernel.hpp"
 #include "domain/representative.hpp"
 #include "domain/systole.hpp"
@@ -77,6 +78,9 @@ class PolygonSurface {
   // product of the word (no id is made for its prefixes).
   std::vector<int> word(ElementId h) const;
 
+  // H_1 as Z^{2g} (homology.hpp), made on first use.
+  const Homology &homology() const;
+
   // The systole, certified (systole.hpp), computed on first use.
   const Systole &systole();
   // A rational k with 1 <= k <= cosh^2(sys / 4), for large_circumdisk: a
@@ -94,6 +98,7 @@ class PolygonSurface {
   Complex base_;  // interior: word()'s witness point
   mutable std::vector<std::array<std::complex<double>, 2>> rounded_;  // (a, b) by element id, as far as asked
   std::optional<Systole> systole_;
+  mutable std::optional<Homology> homology_;
   std::optional<Number> threshold_;
 };
 

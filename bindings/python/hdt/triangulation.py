@@ -276,9 +276,10 @@ class Triangulation:
         genus, or, given a :class:`hdt.Surface`, of that surface holding
         dummy points built for it (libhdt 0.8.0 on). On a surface,
         insertion, removal, queries, faces, stars, the Voronoi diagram,
-        refinement, epsilon-nets, quality, saving, pickling and
-        :meth:`to_svg` work as on M_g; homology, :meth:`plot` and the
-        viewer raise :class:`hdt.NotSupported` for now. The triangulation keeps its own
+        refinement, epsilon-nets, quality, homology (in a basis of the
+        surface's own H_1), saving, pickling and :meth:`to_svg` work as on
+        M_g; :meth:`plot` and the viewer, which draw F_g, raise
+        :class:`hdt.NotSupported` for now. The triangulation keeps its own
         copy of the polygon: the surface may be closed afterwards."""
         handle = ctypes.c_void_p()
         if isinstance(genus, Surface):

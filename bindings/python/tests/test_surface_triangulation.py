@@ -99,7 +99,8 @@ def test_calls_not_supported_yet_raise_and_change_nothing(surface, tmp_path):
     with hdt.Triangulation(surface) as t:
         t.insert_many(disk_points(100, 9))
         before = as_lists(t.faces().vertices)
-        for call in (lambda: t.translation_homology(0), lambda: hdt.picture.Scene(t)):
+        assert t.translation_homology(0) == (0,) * 4
+        for call in (lambda: hdt.picture.Scene(t), lambda: t.to_html()):
             with pytest.raises(hdt.NotSupported, match="polygon"):
                 call()
         assert as_lists(t.faces().vertices) == before
