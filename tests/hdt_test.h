@@ -50,6 +50,14 @@ static inline hdt_triangulation *new_triangulation(int g) {
   return t;
 }
 
+/* The surface of a polygon text, or the test fails. */
+static inline hdt_surface *surface_from_text(const char *text) {
+  hdt_surface *s = NULL;
+  const hdt_status st = hdt_surface_from_polygon(&s, text, strlen(text));
+  expect(st == HDT_OK && s, "hdt_surface_from_polygon: %s (%s)", hdt_status_string(st), hdt_last_error_message());
+  return s;
+}
+
 /* n points uniform in the disk of radius r about 0 (malloc'd, 2n doubles). */
 static inline double *uniform_disk_points(size_t n, uint64_t seed, double r) {
   double *xy = (double *)malloc((2 * n + 1) * sizeof *xy);

@@ -18,13 +18,6 @@ typedef struct polygon_t {
   size_t cycles;
 } polygon_t;
 
-static hdt_surface *surface_from_text(const char *text) {
-  hdt_surface *s = NULL;
-  const hdt_status st = hdt_surface_from_polygon(&s, text, strlen(text));
-  expect(st == HDT_OK && s, "hdt_surface_from_polygon: %s (%s)", hdt_status_string(st), hdt_last_error_message());
-  return s;
-}
-
 static hdt_surface *random_surface(int sides, uint64_t seed) {
   hdt_surface *s = NULL;
   const hdt_status st = hdt_surface_random_symmetric(&s, sides, seed);

@@ -41,6 +41,17 @@ static uint64_t next_u64(splitmix64 *r) {
 /* Uniform in [0, 1), 53 random bits. */
 static double next_uniform(splitmix64 *r) { return (double)(next_u64(r) >> 11) * 0x1.0p-53; }
 
+/* A candidate uniform for hyperbolic area in the disk about 0 of
+   hyperbolic radius R (cosh R given): cosh r uniform in [1, cosh R], the
+   angle uniform; its Poincare radius and angle into *rho and *theta. */
+static void draw_candidate(splitmix64 *rng, double cosh_R, double *x, double *y, double *rho, double *theta) {
+  const double pi = acos(-1.0);
+  const double ch = 1.0 + next_uniform(rng) * (cosh_R - 1.0);
+  *rho = sqrt((ch - 1.0) / (ch + 1.0));
+  *theta = 2.0 * pi * next_uniform(rng);
+  *x = *rho * cos(*theta), *y = *rho * sin(*theta);
+}
+
 int random_points(int genus, uint64_t seed, size_t n, double *xy, size_t *tried) {
   const double pi = acos(-1.0);
   const double cot = 1.0 / tan(pi / (4.0 * genus));
@@ -51,10 +62,8 @@ int random_points(int genus, uint64_t seed, size_t n, double *xy, size_t *tried)
   splitmix64 rng = {seed};
   size_t kept = 0, drawn = 0;
   while (kept < n) {
-    const double ch = 1.0 + next_uniform(&rng) * (cosh_R - 1.0);
-    const double rho = sqrt((ch - 1.0) / (ch + 1.0));
-    const double theta = 2.0 * pi * next_uniform(&rng);
-    const double x = rho * cos(theta), y = rho * sin(theta);
+    double x, y, rho, theta;
+    draw_candidate(&rng, cosh_R, &x, &y, &rho, &theta);
     ++drawn;
     const double side_angle = step * floor(theta / step + 0.5);
     if (1.0 + rho * rho - 2.0 * c * rho * cos(theta - side_angle) < -1e-9) continue; /* clearly outside */
@@ -75,7 +84,6 @@ int random_points(int genus, uint64_t seed, size_t n, double *xy, size_t *tried)
    a convex hyperbolic disk, so it holds the polygon; its hyperbolic radius R
    has cosh R = (1 + rho^2) / (1 - rho^2), rho that vertex's radius. */
 int random_surface_points(const hdt_surface *s, uint64_t seed, size_t n, double *xy, size_t *tried) {
-  const double pi = acos(-1.0);
   double rho2 = 0;
   for (int k = 0; k < hdt_surface_side_count(s); ++k) {
     double x, y;
@@ -86,10 +94,8 @@ int random_surface_points(const hdt_surface *s, uint64_t seed, size_t n, double 
   splitmix64 rng = {seed};
   size_t kept = 0, drawn = 0;
   while (kept < n) {
-    const double ch = 1.0 + next_uniform(&rng) * (cosh_R - 1.0);
-    const double rho = sqrt((ch - 1.0) / (ch + 1.0));
-    const double theta = 2.0 * pi * next_uniform(&rng);
-    const double x = rho * cos(theta), y = rho * sin(theta);
+    double x, y, rho, theta;
+    draw_candidate(&rng, cosh_R, &x, &y, &rho, &theta);
     ++drawn;
     size_t length = 0;
     if (!cli_check(hdt_surface_representative(s, x, y, NULL, NULL, NULL, 0, &length), "hdt_surface_representative"))

@@ -110,6 +110,37 @@ Snapshot BasicTriangulation<Geometry>::snapshot() const {
 }
 
 template <class Geometry>
+void BasicTriangulation<Geometry>::take(Snapshot &s, std::size_t live, std::size_t dummies) {
+  vertices_ = std::move(s.vertices);
+  dummy_ = std::move(s.dummy);
+  faces_ = std::move(s.faces);
+  live_vertices_ = live;
+  dummies_ = dummies;
+  last_face_ = s.last_face;
+  last_vertex_ = s.last_vertex;
+  rng_ = s.rng;
+}
+
+template <class Geometry>
+bool BasicTriangulation<Geometry>::certify(BasicTriangulation &t, Snapshot &s) {
+  const std::size_t ids = t.table().size();
+  try {
+    t.validate();
+  } catch (const std::logic_error &e) {
+    throw SnapshotError(SnapshotError::kStructure, 0, e.what());
+  }
+  // validate() may give new translation ids to products it meets; the
+  // result's table must be exactly the saved one (saving it again gives the
+  // same bytes), so then it is built once more. Otherwise validate() changed
+  // only caches that hold for the same ids.
+  if (t.table().size() == ids) return true;
+  s.vertices = std::move(t.vertices_);
+  s.dummy = std::move(t.dummy_);
+  s.faces = std::move(t.faces_);
+  return false;
+}
+
+template <class Geometry>
 BasicTriangulation<Geometry> BasicTriangulation<Geometry>::rebuild(Snapshot &s) {
   const int g = s.genus;
   if (g < 2) throw E(E::kGenus, 0, "genus " + std::to_string(g) + " is not >= 2");
@@ -154,14 +185,7 @@ BasicTriangulation<Geometry> BasicTriangulation<Geometry>::rebuild(Snapshot &s) 
 
   // Moved, not copied: at 10^6 vertices a copy was 120 MB written to fresh
   // pages. restore() gives them back when it must rebuild.
-  t.vertices_ = std::move(s.vertices);
-  t.dummy_ = std::move(s.dummy);
-  t.faces_ = std::move(s.faces);
-  t.live_vertices_ = live;
-  t.dummies_ = dummies;
-  t.last_face_ = s.last_face;
-  t.last_vertex_ = s.last_vertex;
-  t.rng_ = s.rng;
+  t.take(s, live, dummies);
   // The home images of the vertices far from F_g, as their insertion made
   // them: validate() and every later call read them.
   for (const Vertex &u : t.vertices_)
@@ -196,14 +220,7 @@ BasicTriangulation<Geometry> BasicTriangulation<Geometry>::rebuild(std::unique_p
   }
   if (T.size() != ids) throw E(E::kCounts, 0, "the words do not list every pairing");
   BasicTriangulation t(std::move(geometry), Empty{});
-  t.vertices_ = std::move(s.vertices);
-  t.dummy_ = std::move(s.dummy);
-  t.faces_ = std::move(s.faces);
-  t.live_vertices_ = live;
-  t.dummies_ = dummies;
-  t.last_face_ = s.last_face;
-  t.last_vertex_ = s.last_vertex;
-  t.rng_ = s.rng;
+  t.take(s, live, dummies);
   return t;
 }
 
@@ -211,36 +228,14 @@ template <class Geometry>
 BasicTriangulation<Geometry> BasicTriangulation<Geometry>::restore(
     const std::function<std::unique_ptr<Geometry>()> &make, Snapshot &&s) {
   BasicTriangulation t = rebuild(make(), s);
-  const std::size_t ids = t.table().size();
-  try {
-    t.validate();
-  } catch (const std::logic_error &e) {
-    throw SnapshotError(SnapshotError::kStructure, 0, e.what());
-  }
-  if (t.table().size() == ids) return t;  // as for M_g: the saved table exactly
-  s.vertices = std::move(t.vertices_);
-  s.dummy = std::move(t.dummy_);
-  s.faces = std::move(t.faces_);
+  if (certify(t, s)) return t;
   return rebuild(make(), s);
 }
 
 template <class Geometry>
 BasicTriangulation<Geometry> BasicTriangulation<Geometry>::restore(Snapshot &&s) {
   BasicTriangulation t = rebuild(s);
-  const std::size_t ids = t.table().size();
-  try {
-    t.validate();
-  } catch (const std::logic_error &e) {
-    throw SnapshotError(SnapshotError::kStructure, 0, e.what());
-  }
-  // validate() may give new translation ids to products it meets; the
-  // result's table must be exactly the saved one (saving it again gives the
-  // same bytes), so then it is built once more. Otherwise validate() changed
-  // only caches that hold for the same ids.
-  if (t.table().size() == ids) return t;
-  s.vertices = std::move(t.vertices_);
-  s.dummy = std::move(t.dummy_);
-  s.faces = std::move(t.faces_);
+  if (certify(t, s)) return t;
   return rebuild(s);
 }
 

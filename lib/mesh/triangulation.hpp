@@ -182,6 +182,11 @@ class BasicTriangulation {
   // vertices, flags and faces out of s.
   static BasicTriangulation rebuild(Snapshot &s);
   static BasicTriangulation rebuild(std::unique_ptr<Geometry> geometry, Snapshot &s);
+  // rebuild()'s last step: the snapshot's records moved in.
+  void take(Snapshot &s, std::size_t live, std::size_t dummies);
+  // restore()'s certificate: validate(), true when it gave no new ids, else
+  // the records moved back into s for a rebuild.
+  static bool certify(BasicTriangulation &t, Snapshot &s);
 
   // Replaces the faces `old` by `created` (given in one common frame),
   // linking them to each other and to the outer faces of `boundary`. The ids
