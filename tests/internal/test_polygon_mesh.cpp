@@ -285,6 +285,13 @@ START_TEST(random_rational_octagon) {
 }
 END_TEST
 
+// A polygon with two vertex cycles (five vertices each): CGAL's decagon.
+START_TEST(random_decagon) {
+  const CompactOctagon O = compact_random_octagon(0.9, 5);
+  check_insertion(O.polygon, "random decagon, two cycles", 150, 40, O.reach, 9);
+}
+END_TEST
+
 // Points anywhere in the disk, most outside P: reduced to their homes,
 // inserted, each then located in a face copy that holds it (no corner on
 // the wrong side of an edge) and found as a vertex by nearest_vertex.
@@ -326,6 +333,7 @@ int main() {
   return run_suite("polygon_mesh", 300, [](TCase *tc) {
     tcase_add_test(tc, bolza_octagon);
     tcase_add_test(tc, commutator_bolza);
+    tcase_add_test(tc, random_decagon);
     tcase_add_test(tc, random_rational_octagon);
     tcase_add_test(tc, points_outside_the_polygon);
     tcase_add_test(tc, dummy_points_on_polygons);

@@ -75,11 +75,12 @@ struct CompactOctagon {
   double reach;
   std::uint64_t seed;
 };
-inline CompactOctagon compact_random_octagon(double max_reach = 0.9) {
+// half: 4 for an octagon, 5 for a decagon (two vertex cycles).
+inline CompactOctagon compact_random_octagon(double max_reach = 0.9, int half = 4) {
   for (std::uint64_t seed = 1; seed < 200; ++seed) {
-    FundamentalPolygon P = random_octagon(seed);
+    FundamentalPolygon P = random_symmetric_polygon(half, seed);
     double reach = 0;
-    for (int k = 0; k < 8; ++k) reach = std::max(reach, std::abs(P.vertex_double(k)));
+    for (int k = 0; k < 2 * half; ++k) reach = std::max(reach, std::abs(P.vertex_double(k)));
     if (reach <= max_reach) return {std::move(P), reach, seed};
   }
   throw std::logic_error("compact_random_octagon: none among 200 seeds");
