@@ -864,28 +864,20 @@ HDT_API hdt_status hdt_surface_svg(const hdt_surface *s, double size, char *text
    midpoint of a certified enclosure: a few units in the last place).
    Vertex points are reported as the points inserted (the representative in
    the polygon of each, rounded, for a point given outside it).
-   These calls work on such a handle as on an M_g one: hdt_destroy,
-   hdt_genus, hdt_insert, hdt_insert_many (with progress and cancellation),
-   hdt_remove_vertex, hdt_remove_dummies, hdt_vertex_count,
-   hdt_dummy_count, hdt_vertex_id_bound, hdt_face_count, hdt_vertex_point,
-   hdt_vertex_is_dummy, hdt_vertices, hdt_faces, hdt_translation_word,
-   hdt_translation_matrix, hdt_locate, hdt_nearest_vertex, hdt_validate,
-   hdt_set_progress, hdt_save (format version 2: the polygon stored
-   exactly; hdt_load reads it back), hdt_svg (the surface drawn in its
-   polygon, cut at its sides; HDT_SVG_NEIGHBOURS: the tiles across each
-   side, HDT_SVG_SIDE_LABELS: side k labelled g_k, its pairing), the
-   adjacency and the dual (hdt_face_neighbours,
-   hdt_vertex_star, hdt_vertex_stars, hdt_edge_count, hdt_edges,
-   hdt_face_points, hdt_voronoi_vertices, hdt_voronoi_edges,
-   hdt_voronoi_cell, hdt_voronoi_cells: the same constructions, from the
-   elements' certified matrices, their accuracy measured on M_g only), and
-   hdt_refine, hdt_epsilon_net and hdt_quality with the same bounds and
-   guarantees, and hdt_translation_homology (in a basis of H_1 = Z^{2g}
-   of the surface's own: the quotient of Z^{n/2}, one generator per pair of
-   sides, by the vertex cycles' relations, put in Smith normal form; a
-   homomorphism as on M_g, but not M_g's coordinates on the Bolza octagon). On a
-   surface over a number field, every call holds the process-wide field
-   lock (see above). */
+   Every call that takes a triangulation works on such a handle as on an
+   M_g one, with the same statuses and guarantees; where they differ:
+   hdt_save writes format version 2 (the polygon's text stored exactly, the
+   translations as words in its pairings; hdt_load reads it back); hdt_svg
+   draws the surface in its polygon, cut at its sides (HDT_SVG_NEIGHBOURS:
+   the tiles across each side; HDT_SVG_SIDE_LABELS: side k labelled g_k,
+   its pairing); the dual's constructions (hdt_face_points, hdt_voronoi_*,
+   hdt_edges' lengths, hdt_quality) come from the elements' certified
+   matrices, their accuracy measured on M_g only; hdt_translation_homology
+   gives classes in a basis of the surface's own H_1 = Z^{2g} (Z^{n/2}, one
+   generator per pair of sides, modulo the vertex cycles' relations, in
+   Smith normal form): a homomorphism as on M_g, but not M_g's coordinates
+   on the Bolza octagon. On a surface over a number field, every call holds
+   the process-wide field lock (see above). */
 
 /* A triangulation of s holding only its dummy points. s is only read: the
    triangulation keeps its own copy of the polygon, and s may be destroyed

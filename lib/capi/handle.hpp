@@ -2,8 +2,7 @@
 // by hdt_create (a genus), hdt_load (a restored triangulation) or
 // hdt_create_on_surface (a surface given by a polygon), shared by the files
 // of lib/capi that take one. It holds one of the two kinds of mesh: M_g's
-// (every call) or a polygon surface's (the calls hdt.h lists for it; the
-// others answer HDT_ENOTSUP).
+// or a polygon surface's, and every call runs on either (visit).
 #pragma once
 
 #include <cstdint>
@@ -36,7 +35,7 @@ struct hdt_triangulation {
   // The long call running on this handle, which runs the caller's progress
   // function (hdt_insert_many, hdt_refine, hdt_epsilon_net; nullptr when
   // none): a call on the handle from that function is re-entry and is
-  // refused (hdt::capi::of), as the core is in the middle of its work.
+  // refused (hdt::capi::check_usable), as the core is in the middle of its work.
   const char *busy = nullptr;
   // hdt_destroy from inside that call: the call frees the handle as it ends.
   bool destroy_pending = false;
@@ -52,23 +51,10 @@ inline void check_usable(const hdt_triangulation *t) {
   if (t->busy) throw ApiError(HDT_EINVAL, std::string("the triangulation is busy in ") + t->busy);
 }
 
-// The M_g triangulation behind a handle, for the calls that only M_g's
-// meshes support so far: HDT_ENOTSUP on a polygon surface's. Const for a
-// const handle (queries fill only the core's documented caches).
-[[noreturn]] void not_on_polygons();
-inline mesh::Triangulation &of(hdt_triangulation *t) {
-  check_usable(t);
-  if (auto *mg = std::get_if<mesh::Triangulation>(&t->tri)) return *mg;
-  not_on_polygons();
-}
-inline const mesh::Triangulation &of(const hdt_triangulation *t) {
-  return of(const_cast<hdt_triangulation *>(t));
-}
-
 // f(triangulation) on either kind of mesh, under the field lock where the
-// surface needs it; the calls that both kinds support.
-// The lock only where needed: queries called once per vertex (stars,
-// cells) pay nothing for it on M_g.
+// surface needs it (only there: queries called once per vertex, stars and
+// cells, pay nothing for it on M_g). Const for a const handle (queries
+// fill only the core's documented caches).
 template <class F>
 decltype(auto) visit(hdt_triangulation *t, F &&f) {
   check_usable(t);
@@ -117,11 +103,7 @@ class LongCall {
     if (t_->destroy_pending) delete t_;  // the lock is still held
   }
 
-  // The M_g mesh (HDT_ENOTSUP on a polygon surface's), or f on either.
-  mesh::Triangulation &tri() const {
-    if (auto *mg = std::get_if<mesh::Triangulation>(&t_->tri)) return *mg;
-    not_on_polygons();
-  }
+  // f on the mesh, either kind.
   template <class F>
   decltype(auto) visit(F &&f) const {
     return std::visit(std::forward<F>(f), t_->tri);

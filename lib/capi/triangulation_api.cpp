@@ -17,18 +17,8 @@ using hdt::capi::guarded;
 using hdt::mesh::Triangulation;
 
 using hdt::capi::count;
-using hdt::capi::of;
 using hdt::capi::visit;
 using hdt::mesh::PolygonTriangulation;
-
-namespace hdt::capi {
-
-void not_on_polygons() {
-  throw ApiError(HDT_ENOTSUP,
-                 "not yet supported on a triangulation of a surface given by a polygon (hdt.h lists the calls that are)");
-}
-
-}  // namespace hdt::capi
 
 namespace {
 
